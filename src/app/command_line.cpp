@@ -1,0 +1,80 @@
+#include "app/command_line.hpp"
+
+#include "base/errors.hpp"
+
+namespace kiln
+{
+std::string usage()
+{
+  return "Kiln: coupled thermo-mechanics with contact.\n"
+         "\n"
+         "usage:\n"
+         "  kiln INPUT.xml                       run the input (alone or under mpirun)\n"
+         "  kiln --check INPUT.xml               validate the input and the mesh, solve nothing\n"
+         "  kiln --write-mesh OUT.exo INPUT.xml  write the input's mesh as Exodus II\n"
+         "  kiln --print-parameters              print every valid parameter with its default,\n"
+         "                                       unit and documentation\n"
+         "  kiln --version                       print the version\n"
+         "  kiln --help                          print this text\n"
+         "options:\n"
+         "  --mesh FILE.exo   use this Exodus II file as the mesh (Mesh/Type = \"Exodus\",\n"
+         "                    Mesh/Exodus/\"File\" = FILE.exo)\n"
+         "\n"
+         "Exit status: 0 on success, 1 for an error in the input, the mesh or the command line.\n"
+         "Documentation: doc/user-guide.md\n";
+}
+
+CommandLine parse_command_line(const std::vector<std::string> &args)
+{
+  const std::string hint = "; run kiln --help";
+  CommandLine cl;
+  bool mode_set = false;
+  const auto set_mode = [&](const CommandLine::Mode m, const std::string &flag) {
+    KILN_CHECK_INPUT(!mode_set, "command line", flag << " cannot be combined with another mode"
+                                                      << hint);
+    cl.mode = m;
+    mode_set = true;
+  };
+  for (std::size_t i = 0; i < args.size(); ++i)
+  {
+    const std::string &a = args[i];
+    const auto value = [&](const std::string &what) {
+      KILN_CHECK_INPUT(i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0, "command line",
+                       a << " needs " << what << hint);
+      return args[++i];
+    };
+    if (a == "--help" || a == "-h")
+      set_mode(CommandLine::Mode::help, a);
+    else if (a == "--version")
+      set_mode(CommandLine::Mode::version, a);
+    else if (a == "--print-parameters")
+      set_mode(CommandLine::Mode::print_parameters, a);
+    else if (a == "--check")
+      set_mode(CommandLine::Mode::check, a);
+    else if (a == "--write-mesh")
+    {
+      set_mode(CommandLine::Mode::write_mesh, a);
+      cl.mesh_output = value("an output file name (OUT.exo)");
+    }
+    else if (a == "--mesh")
+      cl.mesh_file = value("an Exodus file name");
+    else if (a.rfind("-", 0) == 0)
+      KILN_CHECK_INPUT(false, "command line", "unknown option \"" << a << "\"" << hint);
+    else
+    {
+      KILN_CHECK_INPUT(cl.input.empty(), "command line",
+                       "more than one input file (\"" << cl.input << "\", \"" << a << "\")"
+                                                      << hint);
+      cl.input = a;
+    }
+  }
+  const bool needs_input = cl.mode == CommandLine::Mode::run ||
+                           cl.mode == CommandLine::Mode::check ||
+                           cl.mode == CommandLine::Mode::write_mesh;
+  KILN_CHECK_INPUT(!needs_input || !cl.input.empty(), "command line",
+                   "no input file given; usage: kiln [options] INPUT.xml" << hint);
+  KILN_CHECK_INPUT(needs_input || cl.input.empty(), "command line",
+                   "an input file is not used with this option" << hint);
+  return cl;
+}
+} // namespace kiln

@@ -1,0 +1,74 @@
+// kiln: the command-line driver. See kiln --help.
+#include "app/command_line.hpp"
+#include "app/simulation.hpp"
+#include "base/errors.hpp"
+#include "base/log.hpp"
+#include "io/input_reader.hpp"
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_GlobalMPISession.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <kiln/version.hpp>
+#include <mpi.h>
+
+#include <iostream>
+
+namespace
+{
+int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
+{
+  using Mode = kiln::CommandLine::Mode;
+  auto out = kiln::rank0_stream(*comm);
+  switch (cl.mode)
+  {
+  case Mode::help:
+    *out << kiln::usage();
+    return 0;
+  case Mode::version:
+    *out << "kiln " << kiln::version_string << "\n";
+    return 0;
+  case Mode::print_parameters:
+    kiln::Simulation::valid_parameters().print(
+      *out, Teuchos::ParameterList::PrintOptions().showDoc(true).showTypes(true).indent(2));
+    return 0;
+  default:
+    break;
+  }
+  kiln::Simulation simulation(kiln::read_input(cl.input, *comm), cl.input, comm, cl.mesh_file);
+  if (cl.mode == Mode::check)
+  {
+    simulation.setup();
+    *out << cl.input << ": input and mesh are valid\n";
+  }
+  else if (cl.mode == Mode::write_mesh)
+    simulation.write_mesh(cl.mesh_output);
+  else
+    simulation.run();
+  Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
+  return 0;
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Teuchos::GlobalMPISession session(&argc, &argv, nullptr);
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  try
+  {
+    return run(kiln::parse_command_line({argv + 1, argv + argc}), comm);
+  }
+  catch (const kiln::InputError &e)
+  {
+    // Input errors are raised alike on every rank: report once, exit 1 everywhere.
+    if (comm->getRank() == 0)
+      std::cerr << "kiln: error: " << e.what() << "\n";
+    return 1;
+  }
+  catch (const std::exception &e)
+  {
+    // Anything else may have happened on one rank only: abort so no rank hangs.
+    std::cerr << "kiln: internal error on rank " << comm->getRank() << ": " << e.what() << "\n";
+    MPI_Abort(MPI_COMM_WORLD, 2);
+  }
+  return 2;
+}

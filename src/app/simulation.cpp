@@ -1,0 +1,204 @@
+#include "app/simulation.hpp"
+
+#include "base/errors.hpp"
+#include "base/log.hpp"
+#include "base/parameters.hpp"
+#include "io/hdf5_xdmf_writer.hpp"
+#include "mesh/exodus_io.hpp"
+#include "mesh/gap_splitter.hpp"
+#include "mesh/mesh_factory.hpp"
+#include "mesh/metis_partitioner.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <kiln/version.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+Teuchos::ParameterList output_parameters()
+{
+  Teuchos::ParameterList p("Output");
+  p.set("File Base", "",
+        "path of the results without extension: FILE.h5 and FILE.xmf are written; the "
+        "default \"\" means results/<input file name without .xml>");
+  p.set("Times", Teuchos::Array<double>(1, 0.0),
+        "output times [s]; the state at each is written (until the solver exists, the "
+        "initial state only)");
+  return p;
+}
+} // namespace internal
+
+Teuchos::ParameterList Simulation::valid_parameters()
+{
+  Teuchos::ParameterList p("Kiln");
+  p.set("Problem Name", "", "a title printed in the log [-]");
+  p.sublist("Mesh", false, "the mesh; see MeshFactory").setParameters(MeshFactory::valid_parameters());
+  p.sublist("Output", false, "results in HDF5 + XDMF; see doc/output-format.md")
+    .setParameters(internal::output_parameters());
+  return p;
+}
+
+Simulation::Simulation(const Teuchos::ParameterList &input, const std::string &input_path,
+                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+                       const std::string &mesh_file)
+    : params_(validated(input, valid_parameters(), input_path, "Kiln")), input_path_(input_path),
+      mesh_file_(mesh_file), comm_(comm), out_(rank0_stream(*comm))
+{
+  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
+  for (int i = 0; i < times.size(); ++i)
+    KILN_CHECK_INPUT(times[i] >= 0.0 && (i == 0 || times[i] > times[i - 1]),
+                     parameter_path(input_path_, "Kiln/Output", "Times"),
+                     "output times must be >= 0 and increasing; entry " << i + 1 << " is "
+                                                                        << times[i]);
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::setup()
+{
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 1 mesh"));
+    const MeshFactory factory(params_.sublist("Mesh"), input_path_ + ": Kiln/Mesh", mesh_file_);
+    mesh_ = factory.build();
+    if (factory.gap_side_set() != 0)
+      split_gap(mesh_, factory.gap_side_set(),
+                parameter_path(input_path_, "Kiln/Mesh", "Gap Side Set"));
+  }
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
+    cell_rank_ = partition_cells(mesh_, *comm_, input_path_ + ": Kiln/Mesh");
+    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_);
+  }
+  print_header();
+}
+
+void Simulation::run()
+{
+  setup();
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 output"));
+  output(0.0, 0, 0.0);
+  *out_ << "wrote " << output_base() << ".h5 and " << output_base() << ".xmf (t = 0)\n";
+}
+
+std::string Simulation::output_base() const
+{
+  const std::string base = params_.sublist("Output").get<std::string>("File Base");
+  if (!base.empty())
+    return base;
+  return "results/" + std::filesystem::path(input_path_).stem().string();
+}
+
+void Simulation::print_header() const
+{
+  auto &out = *out_;
+  const std::string title = params_.get<std::string>("Problem Name");
+  out << "Kiln " << version_string << ": " << input_path_ << (title.empty() ? "" : " (" + title + ")")
+      << " on " << comm_->getSize() << " MPI rank" << (comm_->getSize() > 1 ? "s" : "") << "\n";
+
+  std::map<int, std::pair<int, std::vector<char>>> blocks; // id -> (cells, node flags)
+  for (int c = 0; c < mesh_.n_cells(); ++c)
+  {
+    auto &[cells, nodes] = blocks[mesh_.block_id[c]];
+    nodes.resize(mesh_.n_nodes(), 0);
+    ++cells;
+    for (const int n : mesh_.connectivity[c])
+      nodes[n] = 1;
+  }
+  out << "mesh: " << mesh_.n_cells() << " cells, " << mesh_.n_nodes() << " nodes\n";
+  for (const auto &[id, b] : blocks)
+    out << "  block " << id << ": " << b.first << " cells, "
+        << std::count(b.second.begin(), b.second.end(), 1) << " nodes\n";
+  if (mesh_.gap_side_set != 0)
+  {
+    double area = 0.0;
+    for (const auto &p : mesh_.gap_pairs)
+      area += p.area;
+    out << "  gap at side set " << mesh_.gap_side_set << ": " << mesh_.gap_pairs.size()
+        << " node pairs, area " << area << " m^2\n";
+  }
+
+  const int n_ranks = comm_->getSize();
+  std::vector<int> cells(n_ranks, 0), nodes(n_ranks, 0);
+  for (const int r : cell_rank_)
+    ++cells[r];
+  for (const int r : dofs_->node_owner())
+    ++nodes[r];
+  const auto balance = [](const std::vector<int> &v) {
+    const double mean = double(std::accumulate(v.begin(), v.end(), 0)) / v.size();
+    std::ostringstream s;
+    s << "min " << *std::min_element(v.begin(), v.end()) << ", max "
+      << *std::max_element(v.begin(), v.end()) << ", max/mean " << std::fixed
+      << std::setprecision(2) << *std::max_element(v.begin(), v.end()) / mean;
+    return s.str();
+  };
+  out << "partition (METIS k-way): cells per rank " << balance(cells) << "; owned nodes per rank "
+      << balance(nodes) << "\n";
+  out << "unknowns: " << dofs_->n_global_dofs() << " (4 per node + " << mesh_.gap_pairs.size()
+      << " contact)\n";
+}
+
+void Simulation::output(const double time, const int cycle, const double dt) const
+{
+  const std::string base = output_base();
+  if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
+  {
+    std::error_code ignored; // a failure shows when the writer opens the file
+    std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
+  }
+  comm_->barrier();
+  const MPI_Comm mpi_comm =
+    *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  Hdf5XdmfWriter writer(mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(),
+                        cell_rank_);
+  writer.begin_step(time, cycle, dt);
+  // The gap opening of the initial geometry: n . (x_b - x_a), NaN off the gap.
+  std::vector<double> opening_of_node(mesh_.n_nodes(), std::numeric_limits<double>::quiet_NaN());
+  for (const auto &p : mesh_.gap_pairs)
+  {
+    double g = 0.0;
+    for (int d = 0; d < 3; ++d)
+      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] - mesh_.coordinates[p.node_a][d]);
+    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
+  }
+  std::vector<double> opening;
+  for (const int n : dofs_->owned_nodes())
+    opening.push_back(opening_of_node[n]);
+  writer.write_node_field("gap_opening", 1, opening);
+  writer.end_step();
+}
+
+void Simulation::write_mesh(const std::string &path) const
+{
+  const MeshFactory factory(params_.sublist("Mesh"), input_path_ + ": Kiln/Mesh", mesh_file_);
+  const Mesh mesh = factory.build();
+  std::string error;
+  if (comm_->getRank() == 0)
+  {
+    try
+    {
+      write_exodus_mesh(mesh, path);
+    }
+    catch (const InputError &e)
+    {
+      error = e.what();
+    }
+  }
+  check_collectively(*comm_, error.empty(), "", error);
+  *out_ << "wrote " << path << ": " << mesh.n_cells() << " cells, " << mesh.n_nodes()
+        << " nodes, " << mesh.block_ids().size() << " blocks, " << mesh.side_sets.size()
+        << " side sets (before the gap split)\n";
+}
+} // namespace kiln

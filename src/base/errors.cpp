@@ -1,0 +1,44 @@
+#include "base/errors.hpp"
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_CommHelpers.hpp>
+
+#include <vector>
+
+namespace kiln
+{
+namespace internal
+{
+void throw_input_error(const std::string &where, const std::string &message)
+{
+  throw InputError(where.empty() ? message : where + ": " + message);
+}
+
+void throw_internal_error(const char *file, const int line, const char *condition,
+                          const std::string &message)
+{
+  std::ostringstream s;
+  s << "internal error at " << file << ":" << line << ": (" << condition << ") " << message;
+  throw InternalError(s.str());
+}
+} // namespace internal
+
+void check_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
+                        const std::string &where, const std::string &message)
+{
+  const int rank = comm.getRank();
+  const int my_failed_rank = local_ok ? comm.getSize() : rank;
+  int first_failed = comm.getSize();
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, my_failed_rank, Teuchos::outArg(first_failed));
+  if (first_failed == comm.getSize())
+    return;
+  // Send the failing rank's message to everyone so all ranks throw the same text.
+  int length = rank == first_failed ? static_cast<int>(message.size()) : 0;
+  Teuchos::broadcast(comm, first_failed, Teuchos::outArg(length));
+  std::vector<char> text(message.begin(), message.end());
+  text.resize(length);
+  if (length > 0)
+    Teuchos::broadcast(comm, first_failed, length, text.data());
+  internal::throw_input_error(where, std::string(text.begin(), text.end()));
+}
+} // namespace kiln

@@ -1,0 +1,75 @@
+#pragma once
+/// Errors in two tiers (deal.II Assert/AssertThrow, MFEM MFEM_ASSERT/MFEM_VERIFY):
+/// - KILN_ASSERT: programmer errors, checked in debug builds only;
+/// - KILN_CHECK_INPUT: user and input errors, always on, throws kiln::InputError.
+/// An InputError is raised identically on every rank (inputs and meshes are
+/// replicated), so main() prints it once on rank 0 and every rank exits with 1.
+/// A failure found on some ranks only goes through check_collectively().
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace Teuchos
+{
+template <typename Ordinal> class Comm;
+}
+
+namespace kiln
+{
+/// An error in the user's input (file, parameter, mesh): the message says what,
+/// where, what was expected and what to do.
+class InputError : public std::runtime_error
+{
+public:
+  explicit InputError(const std::string &message) : std::runtime_error(message) {}
+};
+
+/// A programmer error found by KILN_ASSERT.
+class InternalError : public std::logic_error
+{
+public:
+  explicit InternalError(const std::string &message) : std::logic_error(message) {}
+};
+
+namespace internal
+{
+[[noreturn]] void throw_input_error(const std::string &where, const std::string &message);
+[[noreturn]] void throw_internal_error(const char *file, int line, const char *condition,
+                                       const std::string &message);
+} // namespace internal
+
+/// Throws the same InputError on every rank if `local_ok` is false on any rank.
+/// `message` is taken from the lowest rank where the check failed.
+void check_collectively(const Teuchos::Comm<int> &comm, bool local_ok, const std::string &where,
+                        const std::string &message);
+} // namespace kiln
+
+#define KILN_CHECK_INPUT(cond, where, msg)                                                         \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::ostringstream kiln_msg_;                                                                \
+      kiln_msg_ << msg;                                                                            \
+      ::kiln::internal::throw_input_error((where), kiln_msg_.str());                               \
+    }                                                                                              \
+  } while (false)
+
+#ifdef KILN_DEBUG
+#define KILN_ASSERT(cond, msg)                                                                     \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::ostringstream kiln_msg_;                                                                \
+      kiln_msg_ << msg;                                                                            \
+      ::kiln::internal::throw_internal_error(__FILE__, __LINE__, #cond, kiln_msg_.str());          \
+    }                                                                                              \
+  } while (false)
+#else
+#define KILN_ASSERT(cond, msg)                                                                     \
+  do                                                                                               \
+  {                                                                                                \
+  } while (false)
+#endif

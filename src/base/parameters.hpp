@@ -1,0 +1,48 @@
+#pragma once
+/// Parameter helpers. Every configurable class declares
+///   static Teuchos::ParameterList valid_parameters();
+/// next to its constructor, each entry with a default, a doc string that states
+/// the unit, and a validator where the value has a range or a set of choices.
+/// The constructor reads a list that kiln::validated() has checked.
+
+#include <Teuchos_ParameterEntryValidator.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// Checks `user` against `valid` recursively and returns a copy with defaults set.
+/// Unknown names (with the closest valid name), wrong types and values rejected
+/// by a validator throw InputError naming `where` (the input file) and the
+/// parameter path, e.g. `in.xml: Kiln/Mesh/Box/"Cells"`.
+/// `path` is the path of `user` in the input ("Kiln/Mesh").
+Teuchos::ParameterList validated(const Teuchos::ParameterList &user,
+                                 const Teuchos::ParameterList &valid, const std::string &where,
+                                 const std::string &path);
+
+/// `where: path/"name"`, the way every message names a parameter.
+std::string parameter_path(const std::string &where, const std::string &path,
+                           const std::string &name);
+
+/// The candidate closest to `name` (edit distance, case-insensitive), or "" if
+/// none is reasonably close.
+std::string closest_name(const std::string &name, const std::vector<std::string> &candidates);
+
+/// Number validators: value > 0, value >= 0, lo <= value <= hi.
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_double_validator();
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> nonnegative_double_validator();
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> double_range_validator(double lo, double hi);
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_int_validator();
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> nonnegative_int_validator();
+/// For arrays: every entry > 0 and exactly `size` entries (size 0: any size >= 1).
+Teuchos::RCP<const Teuchos::ParameterEntryValidator>
+positive_double_array_validator(int size);
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_int_array_validator(int size);
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> double_array_validator(int size);
+/// A string from a fixed set; the message lists the choices.
+Teuchos::RCP<const Teuchos::ParameterEntryValidator>
+choice_validator(const std::vector<std::string> &choices);
+} // namespace kiln

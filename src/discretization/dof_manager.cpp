@@ -1,0 +1,81 @@
+#include "discretization/dof_manager.hpp"
+
+#include "mesh/metis_partitioner.hpp"
+
+#include <Teuchos_OrdinalTraits.hpp>
+
+#include <algorithm>
+
+namespace kiln
+{
+namespace internal
+{
+Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
+                                 const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
+{
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0,
+                              comm));
+}
+} // namespace internal
+
+DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
+                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
+    : n_nodes_(mesh.n_nodes())
+{
+  const int rank = comm->getRank();
+  node_owner_ = node_owners(mesh, cell_rank);
+
+  std::vector<char> touched(mesh.n_nodes(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (cell_rank[c] == rank)
+    {
+      owned_cells_.push_back(c);
+      for (const int n : mesh.connectivity[c])
+        touched[n] = 1;
+    }
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+  {
+    if (node_owner_[n] == rank)
+      owned_nodes_.push_back(n);
+    if (touched[n])
+      overlap_nodes_.push_back(n);
+  }
+  std::vector<int> overlap_pairs;
+  for (int k = 0; k < static_cast<int>(mesh.gap_pairs.size()); ++k)
+  {
+    const GapPair &p = mesh.gap_pairs[k];
+    if (node_owner_[p.node_a] == rank)
+      owned_pairs_.push_back(k);
+    if (touched[p.node_a] || touched[p.node_b])
+      overlap_pairs.push_back(k);
+  }
+
+  const auto node_gids = [](const std::vector<int> &nodes) {
+    return std::vector<GO>(nodes.begin(), nodes.end());
+  };
+  const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs) {
+    std::vector<GO> gids;
+    gids.reserve(nodes.size() * n_node_fields + pairs.size());
+    for (const int n : nodes)
+      for (int f = 0; f < n_node_fields; ++f)
+        gids.push_back(dof(n, static_cast<Field>(f)));
+    for (const int k : pairs)
+      gids.push_back(contact_dof(k));
+    return gids;
+  };
+  owned_node_map_ = internal::make_map(node_gids(owned_nodes_), comm);
+  overlap_node_map_ = internal::make_map(node_gids(overlap_nodes_), comm);
+  owned_dof_map_ = internal::make_map(dof_gids(owned_nodes_, owned_pairs_), comm);
+  overlap_dof_map_ = internal::make_map(dof_gids(overlap_nodes_, overlap_pairs), comm);
+  dof_importer_ = Teuchos::rcp(new Tpetra::Import<>(owned_dof_map_, overlap_dof_map_));
+  dof_exporter_ = Teuchos::rcp(new Tpetra::Export<>(overlap_dof_map_, owned_dof_map_));
+}
+
+GO DofManager::n_global_dofs() const
+{
+  return static_cast<GO>(owned_dof_map_->getGlobalNumElements());
+}
+
+std::size_t DofManager::n_owned_dofs() const { return owned_dof_map_->getNodeNumElements(); }
+} // namespace kiln

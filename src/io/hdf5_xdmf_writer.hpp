@@ -1,0 +1,56 @@
+#pragma once
+/// Results in one HDF5 file per run, written collectively with MPI-IO, and an
+/// XDMF file beside it for ParaView. The layout is in doc/output-format.md:
+///   /mesh/coordinates   (nodes x 3) double
+///   /mesh/connectivity  (cells x 8) int64, Exodus HEX8 order, 0-based
+///   /mesh/block_id      (cells) int32
+///   /mesh/cell_rank     (cells) int32, the owning rank
+///   /steps/NNNNNN/      attributes time, cycle, dt; node fields (nodes) or
+///                       (nodes x c), cell fields (cells) or (cells x c)
+/// Rows are in global-id order whatever the number of ranks: each rank writes
+/// the rows it owns. After each step the file is flushed and the XDMF file is
+/// rewritten, so a run that fails later leaves readable results behind.
+
+#include "mesh/mesh.hpp"
+
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+class Hdf5XdmfWriter
+{
+public:
+  /// Creates `base_path`.h5 and `base_path`.xmf (collective on `comm`) and
+  /// writes /mesh. `owned_nodes` and `owned_cells` are this rank's rows, in
+  /// increasing order; every node and cell is owned by exactly one rank.
+  /// `cell_rank` is the owner of every cell (replicated).
+  Hdf5XdmfWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
+                 const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
+                 const std::vector<int> &cell_rank);
+  ~Hdf5XdmfWriter();
+  Hdf5XdmfWriter(const Hdf5XdmfWriter &) = delete;
+  Hdf5XdmfWriter &operator=(const Hdf5XdmfWriter &) = delete;
+
+  /// Starts group /steps/NNNNNN (NNNNNN = number of steps written before).
+  void begin_step(double time, int cycle, double dt);
+  /// `values` holds n_components values per owned node, node after node.
+  void write_node_field(const std::string &name, int n_components,
+                        const std::vector<double> &values);
+  /// `values` holds n_components values per owned cell, cell after cell.
+  void write_cell_field(const std::string &name, int n_components,
+                        const std::vector<double> &values);
+  /// Closes the step group, flushes the file and rewrites the XDMF file.
+  void end_step();
+
+  std::string h5_path() const;
+  std::string xdmf_path() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+} // namespace kiln

@@ -1,0 +1,115 @@
+#include "mesh/box_mesh_generator.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "mesh/hex_geometry.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
+
+namespace kiln
+{
+Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
+{
+  Teuchos::ParameterList p("Box");
+  p.set("Size", Teuchos::Array<double>(Teuchos::tuple(0.04, 0.04, 0.04)),
+        "edge lengths Lx, Ly, Lz of the block in its own frame [m]",
+        positive_double_array_validator(3));
+  p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(4, 4, 4)),
+        "cells along x, y, z; the x count must be even so that x = 0 is a cell face [-]",
+        positive_int_array_validator(3));
+  p.set("Phi", 0.0, "rotation about the y axis, applied first [degrees]",
+        double_range_validator(-360.0, 360.0));
+  p.set("Theta", 0.0, "rotation about the x axis, applied second [degrees]",
+        double_range_validator(-360.0, 360.0));
+  p.set("Translation", Teuchos::Array<double>(Teuchos::tuple(0.0, 0.0, 0.0)),
+        "translation applied after the rotation [m]", double_array_validator(3));
+  return p;
+}
+
+BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::string &where)
+{
+  const auto &size = p.get<Teuchos::Array<double>>("Size");
+  const auto &cells = p.get<Teuchos::Array<int>>("Cells");
+  const auto &shift = p.get<Teuchos::Array<double>>("Translation");
+  for (int d = 0; d < 3; ++d)
+  {
+    size_[d] = size[d];
+    cells_[d] = cells[d];
+    translation_[d] = shift[d];
+  }
+  phi_ = p.get<double>("Phi");
+  theta_ = p.get<double>("Theta");
+  KILN_CHECK_INPUT(cells_[0] % 2 == 0, where + "/\"Cells\"",
+                   "the x count is " << cells_[0]
+                                     << " but must be even, so that the plane x = 0 between "
+                                        "the two blocks is a cell face; use "
+                                     << cells_[0] + 1 << " or " << cells_[0] - 1);
+}
+
+Mesh BoxMeshGenerator::generate() const
+{
+  const int nx = cells_[0], ny = cells_[1], nz = cells_[2];
+  const auto node = [&](const int i, const int j, const int k) {
+    return i + (nx + 1) * (j + (ny + 1) * k);
+  };
+  const auto A = rotation_matrix(phi_, theta_);
+
+  Mesh mesh;
+  mesh.coordinates.resize(static_cast<std::size_t>(nx + 1) * (ny + 1) * (nz + 1));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+      {
+        const Point x{size_[0] * (double(i) / nx - 0.5), size_[1] * (double(j) / ny - 0.5),
+                      size_[2] * (double(k) / nz - 0.5)};
+        Point &y = mesh.coordinates[node(i, j, k)];
+        for (int d = 0; d < 3; ++d)
+          y[d] = A[d][0] * x[0] + A[d][1] * x[1] + A[d][2] * x[2] + translation_[d];
+      }
+
+  // Side sets 1..6 and 10, filled while the cells are made.
+  mesh.side_sets.resize(7);
+  for (int s = 0; s < 6; ++s)
+    mesh.side_sets[s].id = s + 1;
+  mesh.side_sets[6].id = 10;
+  SideSet &gap = mesh.side_sets[6];
+  const auto add_side = [](SideSet &set, const int cell, const int face) {
+    set.cells.push_back(cell);
+    set.faces.push_back(face);
+  };
+  // Local faces (Exodus order): 0 y-, 1 x+, 2 y+, 3 x-, 4 z-, 5 z+.
+  std::vector<std::pair<int, int>> gap_sides_b; // block 2's sides, listed after block 1's
+  for (int block = 1; block <= 2; ++block)
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        for (int i = (block == 1 ? 0 : nx / 2); i < (block == 1 ? nx / 2 : nx); ++i)
+        {
+          const int cell = mesh.n_cells();
+          mesh.connectivity.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
+                                       node(i, j + 1, k), node(i, j, k + 1),
+                                       node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                                       node(i, j + 1, k + 1)});
+          mesh.block_id.push_back(block);
+          if (i == 0)
+            add_side(mesh.side_sets[0], cell, 3);
+          if (i == nx - 1)
+            add_side(mesh.side_sets[1], cell, 1);
+          if (j == 0)
+            add_side(mesh.side_sets[2], cell, 0);
+          if (j == ny - 1)
+            add_side(mesh.side_sets[3], cell, 2);
+          if (k == 0)
+            add_side(mesh.side_sets[4], cell, 4);
+          if (k == nz - 1)
+            add_side(mesh.side_sets[5], cell, 5);
+          if (i == nx / 2 - 1)
+            add_side(gap, cell, 1);
+          if (i == nx / 2)
+            gap_sides_b.emplace_back(cell, 3);
+        }
+  for (const auto &[cell, face] : gap_sides_b)
+    add_side(gap, cell, face);
+  return mesh;
+}
+} // namespace kiln

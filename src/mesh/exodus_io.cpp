@@ -1,0 +1,308 @@
+#include "mesh/exodus_io.hpp"
+
+#include "base/errors.hpp"
+
+#include <exodusII.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+namespace kiln
+{
+namespace internal
+{
+namespace // file-local: these names must not clash with other files' kiln::internal helpers
+{
+/// Owns an open Exodus file id; closes it when the scope ends (also on a throw).
+class ExodusFile
+{
+public:
+  explicit ExodusFile(const int id) : id_(id) {}
+  ~ExodusFile()
+  {
+    if (id_ >= 0)
+      ex_close(id_);
+  }
+  ExodusFile(const ExodusFile &) = delete;
+  ExodusFile &operator=(const ExodusFile &) = delete;
+  int id() const { return id_; }
+  /// Closes now; returns the Exodus return code (< 0: the file may not be complete).
+  int close()
+  {
+    const int status = ex_close(id_);
+    id_ = -1;
+    return status;
+  }
+
+private:
+  int id_;
+};
+
+/// Throws an InputError naming the file and the failed operation when an
+/// Exodus call returned an error code (< 0; warnings, > 0, are accepted).
+void check_exodus(const int status, const std::string &path, const std::string &what)
+{
+  KILN_CHECK_INPUT(status >= 0, path,
+                   "Exodus II error " << status << " while " << what
+                                      << "; the file may be damaged or not an Exodus II mesh: "
+                                         "re-export it from the mesh generator");
+}
+
+std::string to_upper(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](const unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return s;
+}
+
+bool is_hex8(const std::string &element_type)
+{
+  const std::string type = to_upper(element_type);
+  return type == "HEX8" || type == "HEX";
+}
+
+/// Reads the element blocks (in file order) into mesh.connectivity and mesh.block_id.
+void read_blocks(const int exo, const std::string &path, const int n_blocks, const int n_nodes,
+                 Mesh &mesh)
+{
+  std::vector<int> ids(n_blocks);
+  if (n_blocks > 0)
+    check_exodus(ex_get_elem_blk_ids(exo, ids.data()), path, "reading the element block ids");
+  for (const int id : ids)
+  {
+    char type[MAX_STR_LENGTH + 1] = {};
+    int n_elems = 0, n_per_elem = 0, n_attr = 0;
+    check_exodus(ex_get_elem_block(exo, id, type, &n_elems, &n_per_elem, &n_attr), path,
+                 "reading the parameters of element block " + std::to_string(id));
+    KILN_CHECK_INPUT(is_hex8(type) && n_per_elem == n_hex_nodes, path,
+                     "element block " << id << " has element type \"" << type << "\" with "
+                                      << n_per_elem
+                                      << " nodes per element; Kiln supports HEX8 only: remesh "
+                                         "the block with 8-node hexahedra");
+    if (n_elems == 0)
+      continue;
+    std::vector<int> conn(static_cast<std::size_t>(n_elems) * n_hex_nodes);
+    check_exodus(ex_get_elem_conn(exo, id, conn.data()), path,
+                 "reading the connectivity of element block " + std::to_string(id));
+    for (int e = 0; e < n_elems; ++e)
+    {
+      std::array<int, 8> cell{};
+      for (int k = 0; k < n_hex_nodes; ++k)
+      {
+        const int node = conn[static_cast<std::size_t>(e) * n_hex_nodes + k];
+        KILN_CHECK_INPUT(node >= 1 && node <= n_nodes, path,
+                         "element " << e + 1 << " of element block " << id << " refers to node "
+                                    << node << ", outside 1.." << n_nodes
+                                    << "; the file is damaged: re-export it");
+        cell[k] = node - 1;
+      }
+      mesh.connectivity.push_back(cell);
+      mesh.block_id.push_back(id);
+    }
+  }
+}
+
+/// Reads the side set names, or returns empty names when the file has none.
+std::vector<std::string> read_side_set_names(const int exo, const std::string &path,
+                                             const int n_side_sets)
+{
+  // Ask for the longest name the file holds, not the default 32 characters.
+  const int name_length =
+    std::max(static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 1);
+  check_exodus(ex_set_max_name_length(exo, name_length), path, "setting the name length");
+  std::vector<std::vector<char>> buffers(n_side_sets, std::vector<char>(name_length + 1, '\0'));
+  std::vector<char *> pointers;
+  for (auto &b : buffers)
+    pointers.push_back(b.data());
+  check_exodus(ex_get_names(exo, EX_SIDE_SET, pointers.data()), path, "reading side set names");
+  std::vector<std::string> names;
+  for (const auto &b : buffers)
+    names.emplace_back(b.data());
+  return names;
+}
+
+/// Reads every side set (sorted by id) with 0-based cells and faces.
+void read_side_sets(const int exo, const std::string &path, const int n_side_sets, Mesh &mesh)
+{
+  if (n_side_sets == 0)
+    return;
+  std::vector<int> ids(n_side_sets);
+  check_exodus(ex_get_side_set_ids(exo, ids.data()), path, "reading the side set ids");
+  const std::vector<std::string> names = read_side_set_names(exo, path, n_side_sets);
+  const int n_cells = mesh.n_cells();
+  for (int s = 0; s < n_side_sets; ++s)
+  {
+    SideSet set;
+    set.id = ids[s];
+    set.name = names[s];
+    int n_sides = 0, n_dist = 0;
+    check_exodus(ex_get_side_set_param(exo, set.id, &n_sides, &n_dist), path,
+                 "reading the parameters of side set " + std::to_string(set.id));
+    std::vector<int> elems(n_sides), sides(n_sides);
+    if (n_sides > 0)
+      check_exodus(ex_get_side_set(exo, set.id, elems.data(), sides.data()), path,
+                   "reading side set " + std::to_string(set.id));
+    for (int i = 0; i < n_sides; ++i)
+    {
+      KILN_CHECK_INPUT(elems[i] >= 1 && elems[i] <= n_cells, path,
+                       "side set " << set.id << ", entry " << i + 1 << ": element " << elems[i]
+                                   << " is outside 1.." << n_cells
+                                   << "; the file is damaged: re-export it");
+      KILN_CHECK_INPUT(sides[i] >= 1 && sides[i] <= n_hex_faces, path,
+                       "side set " << set.id << ", entry " << i + 1 << " (element " << elems[i]
+                                   << "): side number " << sides[i]
+                                   << " is outside 1..6, the sides of a HEX8; the side set "
+                                      "may hold edges or nodes: redefine it on element faces");
+      set.cells.push_back(elems[i] - 1);
+      set.faces.push_back(sides[i] - 1);
+    }
+    mesh.side_sets.push_back(std::move(set));
+  }
+  std::stable_sort(mesh.side_sets.begin(), mesh.side_sets.end(),
+                   [](const SideSet &a, const SideSet &b) { return a.id < b.id; });
+}
+
+/// Writes the side sets, with cells renumbered to their position in the written file.
+void write_side_sets(const int exo, const std::string &path, const Mesh &mesh,
+                     const std::vector<int> &file_number)
+{
+  for (const auto &set : mesh.side_sets)
+  {
+    KILN_ASSERT(set.faces.size() == set.cells.size(), "side set " << set.id);
+    std::vector<int> elems, sides;
+    for (int i = 0; i < set.n_sides(); ++i)
+    {
+      KILN_ASSERT(set.cells[i] >= 0 && set.cells[i] < mesh.n_cells(), "side set " << set.id);
+      KILN_ASSERT(set.faces[i] >= 0 && set.faces[i] < n_hex_faces, "side set " << set.id);
+      elems.push_back(file_number[set.cells[i]]);
+      sides.push_back(set.faces[i] + 1);
+    }
+    const std::string what = "writing side set " + std::to_string(set.id);
+    check_exodus(ex_put_side_set_param(exo, set.id, set.n_sides(), 0), path, what);
+    check_exodus(ex_put_side_set(exo, set.id, elems.data(), sides.data()), path, what);
+  }
+  if (mesh.side_sets.empty())
+    return;
+  std::vector<std::vector<char>> buffers;
+  for (const auto &set : mesh.side_sets)
+  {
+    buffers.emplace_back(set.name.begin(), set.name.end());
+    buffers.back().push_back('\0');
+  }
+  std::vector<char *> pointers;
+  for (auto &b : buffers)
+    pointers.push_back(b.data());
+  check_exodus(ex_put_names(exo, EX_SIDE_SET, pointers.data()), path, "writing side set names");
+}
+} // namespace
+} // namespace internal
+
+Mesh read_exodus_mesh(const std::string &path, const double scale)
+{
+  using internal::check_exodus;
+  KILN_CHECK_INPUT(std::isfinite(scale) && scale > 0.0, path,
+                   "the coordinate scale factor " << scale << " must be > 0");
+  KILN_CHECK_INPUT(std::ifstream(path).good(), "",
+                   "cannot open Exodus file \"" << path
+                                                << "\" (missing or not readable): check the path");
+  int comp_ws = sizeof(double), io_ws = 0;
+  float version = 0.0F;
+  const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
+  KILN_CHECK_INPUT(id >= 0, "",
+                   "cannot open Exodus file \"" << path
+                                                << "\": it is not an Exodus II (netCDF) file; "
+                                                   "check the path and export the mesh as Exodus");
+  internal::ExodusFile file(id);
+
+  char title[MAX_LINE_LENGTH + 1] = {};
+  int n_dim = 0, n_nodes = 0, n_elems = 0, n_blocks = 0, n_node_sets = 0, n_side_sets = 0;
+  check_exodus(
+    ex_get_init(id, title, &n_dim, &n_nodes, &n_elems, &n_blocks, &n_node_sets, &n_side_sets),
+    path, "reading the file header");
+  KILN_CHECK_INPUT(n_dim == 3, path,
+                   "the mesh is " << n_dim << "-dimensional; Kiln needs a 3D mesh of HEX8 "
+                                  << "elements: mesh the geometry as a volume");
+
+  Mesh mesh;
+  std::vector<double> x(n_nodes), y(n_nodes), z(n_nodes);
+  if (n_nodes > 0)
+    check_exodus(ex_get_coord(id, x.data(), y.data(), z.data()), path, "reading the coordinates");
+  mesh.coordinates.resize(n_nodes);
+  for (int i = 0; i < n_nodes; ++i)
+    mesh.coordinates[i] = {scale * x[i], scale * y[i], scale * z[i]};
+
+  internal::read_blocks(id, path, n_blocks, n_nodes, mesh);
+  KILN_CHECK_INPUT(mesh.n_cells() == n_elems, path,
+                   "the header announces " << n_elems << " elements but the blocks hold "
+                                           << mesh.n_cells()
+                                           << "; the file is damaged: re-export it");
+  internal::read_side_sets(id, path, n_side_sets, mesh);
+  return mesh;
+}
+
+void write_exodus_mesh(const Mesh &mesh, const std::string &path)
+{
+  using internal::check_exodus;
+  KILN_ASSERT(static_cast<int>(mesh.block_id.size()) == mesh.n_cells(), "block_id size");
+  int comp_ws = sizeof(double), io_ws = sizeof(double);
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &comp_ws, &io_ws);
+  KILN_CHECK_INPUT(id >= 0, "",
+                   "cannot create Exodus file \"" << path
+                                                  << "\": check that its folder exists and is "
+                                                     "writable");
+  internal::ExodusFile file(id);
+  // Names longer than the default 32 characters are kept only if the length is set before
+  // ex_put_init defines the file.
+  std::size_t name_length = MAX_NAME_LENGTH;
+  for (const auto &set : mesh.side_sets)
+    name_length = std::max(name_length, set.name.size());
+  check_exodus(ex_set_max_name_length(id, static_cast<int>(name_length)), path,
+               "setting the name length");
+
+  // Cells grouped by block (increasing id), in increasing cell order within a block.
+  std::map<int, std::vector<int>> cells_of_block;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    cells_of_block[mesh.block_id[c]].push_back(c);
+  std::vector<int> file_number(mesh.n_cells()); // 1-based Exodus element number per cell
+  int next = 1;
+  for (const auto &block : cells_of_block)
+    for (const int c : block.second)
+      file_number[c] = next++;
+
+  check_exodus(ex_put_init(id, "Kiln mesh", 3, mesh.n_nodes(), mesh.n_cells(),
+                           static_cast<int64_t>(cells_of_block.size()), 0,
+                           static_cast<int64_t>(mesh.side_sets.size())),
+               path, "writing the file header");
+  std::vector<double> x, y, z;
+  for (const auto &p : mesh.coordinates)
+  {
+    x.push_back(p[0]);
+    y.push_back(p[1]);
+    z.push_back(p[2]);
+  }
+  check_exodus(ex_put_coord(id, x.data(), y.data(), z.data()), path, "writing the coordinates");
+  char coord_x[] = "x", coord_y[] = "y", coord_z[] = "z";
+  char *coord_names[] = {coord_x, coord_y, coord_z};
+  check_exodus(ex_put_coord_names(id, coord_names), path, "writing the coordinate names");
+
+  for (const auto &block : cells_of_block)
+  {
+    const std::string what = "writing element block " + std::to_string(block.first);
+    const int64_t n_elems = static_cast<int64_t>(block.second.size());
+    check_exodus(ex_put_elem_block(id, block.first, "HEX8", n_elems, n_hex_nodes, 0), path, what);
+    std::vector<int> conn;
+    for (const int c : block.second)
+      for (const int node : mesh.connectivity[c])
+      {
+        KILN_ASSERT(node >= 0 && node < mesh.n_nodes(), "cell " << c << " node " << node);
+        conn.push_back(node + 1);
+      }
+    check_exodus(ex_put_elem_conn(id, block.first, conn.data()), path, what);
+  }
+  internal::write_side_sets(id, path, mesh, file_number);
+  check_exodus(file.close(), path, "closing the file");
+}
+} // namespace kiln

@@ -1,0 +1,189 @@
+#include "mesh/gap_splitter.hpp"
+
+#include "base/errors.hpp"
+#include "mesh/hex_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace kiln
+{
+namespace internal
+{
+using FaceKey = std::array<int, 4>;
+
+FaceKey face_key(const Mesh &mesh, const int cell, const int face)
+{
+  FaceKey key;
+  for (int i = 0; i < 4; ++i)
+    key[i] = mesh.connectivity[cell][hex_face_nodes[face][i]];
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+/// Each face of the mesh with the (cell, local face) pairs that share it.
+std::map<FaceKey, std::vector<std::pair<int, int>>> face_cells(const Mesh &mesh)
+{
+  std::map<FaceKey, std::vector<std::pair<int, int>>> faces;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int f = 0; f < n_hex_faces; ++f)
+      faces[face_key(mesh, c, f)].emplace_back(c, f);
+  return faces;
+}
+
+/// Connected parts of the cells through faces not in `cut`, as a part index per
+/// cell, the parts ranked by (lowest block id, lowest cell id).
+std::vector<int> cell_parts(const Mesh &mesh,
+                            const std::map<FaceKey, std::vector<std::pair<int, int>>> &faces,
+                            const std::set<FaceKey> &cut)
+{
+  std::vector<std::vector<int>> neighbours(mesh.n_cells());
+  for (const auto &[key, cells] : faces)
+    if (cells.size() == 2 && cut.count(key) == 0)
+    {
+      neighbours[cells[0].first].push_back(cells[1].first);
+      neighbours[cells[1].first].push_back(cells[0].first);
+    }
+  std::vector<int> part(mesh.n_cells(), -1);
+  std::vector<std::pair<int, int>> part_rank; // (lowest block id, first cell) per part
+  for (int seed = 0; seed < mesh.n_cells(); ++seed)
+  {
+    if (part[seed] >= 0)
+      continue;
+    const int p = static_cast<int>(part_rank.size());
+    int lowest_block = mesh.block_id[seed];
+    std::vector<int> stack{seed};
+    part[seed] = p;
+    while (!stack.empty())
+    {
+      const int c = stack.back();
+      stack.pop_back();
+      lowest_block = std::min(lowest_block, mesh.block_id[c]);
+      for (const int n : neighbours[c])
+        if (part[n] < 0)
+        {
+          part[n] = p;
+          stack.push_back(n);
+        }
+    }
+    part_rank.emplace_back(lowest_block, seed);
+  }
+  std::vector<int> order(part_rank.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](const int a, const int b) { return part_rank[a] < part_rank[b]; });
+  std::vector<int> rank_of(order.size());
+  for (std::size_t r = 0; r < order.size(); ++r)
+    rank_of[order[r]] = static_cast<int>(r);
+  for (int &p : part)
+    p = rank_of[p];
+  return part;
+}
+} // namespace internal
+
+void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
+{
+  const SideSet *side_set = mesh.find_side_set(side_set_id);
+  if (side_set == nullptr)
+  {
+    std::string present;
+    for (const auto &s : mesh.side_sets)
+      present += (present.empty() ? "" : ", ") + std::to_string(s.id);
+    KILN_CHECK_INPUT(false, where,
+                     "side set " << side_set_id << " is not in the mesh (side sets present: "
+                                 << (present.empty() ? "none" : present)
+                                 << "); set it to the id of the side set that cuts the mesh, "
+                                    "or to 0 for no gap");
+  }
+
+  const auto faces = internal::face_cells(mesh);
+  std::set<internal::FaceKey> cut;
+  for (int s = 0; s < side_set->n_sides(); ++s)
+  {
+    const auto key = internal::face_key(mesh, side_set->cells[s], side_set->faces[s]);
+    if (faces.at(key).size() == 2)
+      cut.insert(key);
+  }
+  KILN_CHECK_INPUT(!cut.empty(), where,
+                   "side set " << side_set_id
+                               << " has no interior face, so it cannot split the mesh into a "
+                                  "gap; name a side set between two parts of the mesh");
+
+  const std::vector<int> part = internal::cell_parts(mesh, faces, cut);
+  for (const auto &key : cut)
+  {
+    const auto &cells = faces.at(key);
+    KILN_CHECK_INPUT(part[cells[0].first] != part[cells[1].first], where,
+                     "side set " << side_set_id << " does not cut the mesh: cells "
+                                 << cells[0].first + 1 << " and " << cells[1].first + 1
+                                 << " on its two sides stay connected around its edge; the "
+                                    "gap side set must separate the mesh into parts");
+  }
+
+  // The parts around each node of the cut faces.
+  std::map<int, std::set<int>> node_parts;
+  for (const auto &key : cut)
+    for (const int n : key)
+      node_parts[n];
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (const int n : mesh.connectivity[c])
+      if (auto it = node_parts.find(n); it != node_parts.end())
+        it->second.insert(part[c]);
+
+  // Twins: node_a stays with the lowest part; every other part gets its own twin.
+  const int n_original = mesh.n_nodes();
+  mesh.parent_node.resize(n_original);
+  std::iota(mesh.parent_node.begin(), mesh.parent_node.end(), 0);
+  std::map<std::pair<int, int>, int> twin; // (node, part) -> twin node
+  std::map<int, int> pair_of_twin;
+  for (const auto &[n, parts] : node_parts)
+    for (auto p = std::next(parts.begin()); p != parts.end(); ++p)
+    {
+      const int t = mesh.n_nodes();
+      mesh.coordinates.push_back(mesh.coordinates[n]);
+      mesh.parent_node.push_back(n);
+      twin[{n, *p}] = t;
+      pair_of_twin[t] = static_cast<int>(mesh.gap_pairs.size());
+      mesh.gap_pairs.push_back(GapPair{n, t, 0.0, {0.0, 0.0, 0.0}});
+    }
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int &n : mesh.connectivity[c])
+      if (auto it = twin.find({n, part[c]}); it != twin.end())
+        n = it->second;
+
+  // Area and normal of each pair, from its cut faces seen from side a.
+  std::vector<Point> area_vector(mesh.gap_pairs.size(), Point{0.0, 0.0, 0.0});
+  for (const auto &key : cut)
+  {
+    auto side_a = faces.at(key)[0], side_b = faces.at(key)[1];
+    if (part[side_a.first] > part[side_b.first])
+      std::swap(side_a, side_b);
+    const auto areas = quad_nodal_areas(face_nodes(mesh, side_a.first, side_a.second));
+    for (int i = 0; i < 4; ++i)
+    {
+      const int n = mesh.connectivity[side_a.first][hex_face_nodes[side_a.second][i]];
+      const auto t = twin.find({n, part[side_b.first]});
+      KILN_CHECK_INPUT(t != twin.end(), where,
+                       "more than two parts of the mesh meet at node "
+                         << mesh.parent_node[n] + 1 << " of side set " << side_set_id
+                         << "; Kiln splits a gap between two parts at each node");
+      const int k = pair_of_twin.at(t->second);
+      mesh.gap_pairs[k].area += areas.area[i];
+      for (int d = 0; d < 3; ++d)
+        area_vector[k][d] += areas.area_vector[i][d];
+    }
+  }
+  for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
+  {
+    const Point &a = area_vector[k];
+    const double length = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    KILN_ASSERT(length > 0.0, "gap pair " << k << " has no area");
+    for (int d = 0; d < 3; ++d)
+      mesh.gap_pairs[k].normal[d] = a[d] / length;
+  }
+  mesh.gap_side_set = side_set_id;
+}
+} // namespace kiln

@@ -1,0 +1,39 @@
+#pragma once
+/// Geometry of trilinear hexahedra (Exodus HEX8 order) and bilinear quad faces.
+#include "mesh/mesh.hpp"
+
+#include <array>
+
+namespace kiln
+{
+using HexNodes = std::array<Point, 8>;
+using QuadNodes = std::array<Point, 4>;
+
+/// The nodes of a cell.
+HexNodes cell_nodes(const Mesh &mesh, int cell);
+/// The nodes of local face `face` of a cell, ordered for an outward normal.
+QuadNodes face_nodes(const Mesh &mesh, int cell, int face);
+
+/// Reference coordinates of HEX8 node i, each -1 or +1.
+Point hex_reference_node(int i);
+/// det(dx/dxi) at reference point `xi`.
+double hex_jacobian_determinant(const HexNodes &x, const Point &xi);
+/// The 2x2x2 Gauss points in the reference cube [-1,1]^3 (weights are 1).
+const std::array<Point, 8> &hex_gauss_points();
+/// Volume by 2x2x2 Gauss quadrature (exact for trilinear maps).
+double hex_volume(const HexNodes &x);
+
+/// For each face node i: integral over the face of N_i n dA (the node's share of
+/// the area vector), and of N_i dA (its share of the area), by 2x2 Gauss
+/// quadrature. n follows the right-hand rule of the node order.
+struct QuadNodalAreas
+{
+  std::array<Point, 4> area_vector;
+  std::array<double, 4> area;
+};
+QuadNodalAreas quad_nodal_areas(const QuadNodes &x);
+
+/// Rotation matrix A = Rx(theta) Ry(phi), angles in degrees, right-handed
+/// (see doc/mesh.md and the contact-box spec).
+std::array<std::array<double, 3>, 3> rotation_matrix(double phi_degrees, double theta_degrees);
+} // namespace kiln

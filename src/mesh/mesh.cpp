@@ -1,0 +1,22 @@
+#include "mesh/mesh.hpp"
+
+#include <algorithm>
+
+namespace kiln
+{
+const SideSet *Mesh::find_side_set(const int id) const
+{
+  for (const auto &s : side_sets)
+    if (s.id == id)
+      return &s;
+  return nullptr;
+}
+
+std::vector<int> Mesh::block_ids() const
+{
+  std::vector<int> ids(block_id);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+} // namespace kiln

@@ -1,0 +1,66 @@
+#pragma once
+/// The mesh as Kiln holds it: replicated on every rank (small and mid-size
+/// meshes; a distributed mesh is future work), trilinear hexahedra only.
+/// Node and cell numbers are global ids; they do not depend on the number of
+/// ranks. Twin nodes made by the gap split are appended after the original
+/// nodes, so an input mesh keeps its numbering.
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+using Point = std::array<double, 3>;
+
+/// Exodus II HEX8 numbering. Nodes 0-3 are the bottom face counterclockwise
+/// (seen from above), 4-7 the top face. Local faces in Exodus side order
+/// (side k+1 is face k), nodes ordered so that the right-hand rule gives the
+/// outward normal.
+inline constexpr int n_hex_nodes = 8;
+inline constexpr int n_hex_faces = 6;
+inline constexpr int hex_face_nodes[n_hex_faces][4] = {
+  {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+
+/// A side set: cell faces, as Exodus stores it (face = local face 0..5).
+struct SideSet
+{
+  int id = 0;
+  std::string name;
+  std::vector<int> cells;
+  std::vector<int> faces;
+  int n_sides() const { return static_cast<int>(cells.size()); }
+};
+
+/// A node pair across a split gap: node_a on side a, its twin node_b on side b.
+/// `normal` is the area-weighted unit normal of side a's faces at node_a
+/// (pointing from a to b); `area` is the node's share of the gap area,
+/// integral of its shape function over the adjacent gap faces of side a.
+struct GapPair
+{
+  int node_a = -1;
+  int node_b = -1;
+  double area = 0.0;
+  Point normal{0.0, 0.0, 0.0};
+};
+
+struct Mesh
+{
+  std::vector<Point> coordinates;               ///< per node [m]
+  std::vector<std::array<int, 8>> connectivity; ///< per cell, 0-based node ids
+  std::vector<int> block_id;                    ///< per cell, the element block id
+  std::vector<SideSet> side_sets;               ///< in increasing id order
+
+  // Filled by split_gap():
+  int gap_side_set = 0;           ///< id of the side set the mesh was split at (0: none)
+  std::vector<GapPair> gap_pairs; ///< in increasing node_a order
+  std::vector<int> parent_node;   ///< per node: the original node it copies (itself if not a twin)
+
+  int n_nodes() const { return static_cast<int>(coordinates.size()); }
+  int n_cells() const { return static_cast<int>(connectivity.size()); }
+  /// The side set with this id, or nullptr.
+  const SideSet *find_side_set(int id) const;
+  /// The distinct block ids, sorted.
+  std::vector<int> block_ids() const;
+};
+} // namespace kiln

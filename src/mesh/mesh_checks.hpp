@@ -1,0 +1,13 @@
+#pragma once
+#include "mesh/mesh.hpp"
+
+#include <string>
+
+namespace kiln
+{
+/// Checks a mesh before use; throws InputError naming `where` and the entity:
+/// node ids out of range, side-set faces out of range, and a cell whose
+/// Jacobian determinant is not positive at a 2x2x2 Gauss point (inverted or
+/// degenerate cell, or a node order other than Exodus HEX8).
+void check_mesh(const Mesh &mesh, const std::string &where);
+} // namespace kiln

@@ -1,0 +1,67 @@
+#include "mesh/mesh_factory.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "mesh/box_mesh_generator.hpp"
+#include "mesh/exodus_io.hpp"
+#include "mesh/mesh_checks.hpp"
+
+namespace kiln
+{
+Teuchos::ParameterList MeshFactory::valid_parameters()
+{
+  Teuchos::ParameterList p("Mesh");
+  p.set("Type", "Box", "\"Box\": the generated block (sublist Box); \"Exodus\": an Exodus II "
+                       "file (sublist Exodus)",
+        choice_validator({"Box", "Exodus"}));
+  p.set("Gap Side Set", 10,
+        "id of the interior side set at which the mesh is split into a gap of zero width; "
+        "0 for no gap [-]",
+        nonnegative_int_validator());
+  p.sublist("Box", false, "the generated block; see BoxMeshGenerator")
+    .setParameters(BoxMeshGenerator::valid_parameters());
+  Teuchos::ParameterList &exodus = p.sublist("Exodus", false, "an Exodus II mesh (Cubit)");
+  exodus.set("File", "",
+             "path of the Exodus II file, relative to the working directory; required when "
+             "Type = \"Exodus\" unless given by kiln --mesh FILE");
+  exodus.set("Coordinate Scale", 1.0,
+             "factor applied to the file's coordinates to get metres (0.01 for a mesh in cm) "
+             "[m per file unit]",
+             positive_double_validator());
+  return p;
+}
+
+MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string &where,
+                         const std::string &mesh_file)
+    : params_(params), where_(where)
+{
+  type_ = mesh_file.empty() ? params.get<std::string>("Type") : "Exodus";
+  exodus_file_ = mesh_file.empty() ? params.sublist("Exodus").get<std::string>("File") : mesh_file;
+  scale_ = params.sublist("Exodus").get<double>("Coordinate Scale");
+  gap_side_set_ = params.get<int>("Gap Side Set");
+  KILN_CHECK_INPUT(type_ != "Exodus" || !exodus_file_.empty(),
+                   where_ + "/Exodus/\"File\"",
+                   "missing: Type = \"Exodus\" needs the path of the mesh file; set "
+                   "Mesh/Exodus/\"File\" or run kiln --mesh FILE");
+}
+
+Mesh MeshFactory::build() const
+{
+  Mesh mesh;
+  if (type_ == "Box")
+    mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate();
+  else
+    mesh = read_exodus_mesh(exodus_file_, scale_);
+  check_mesh(mesh, type_ == "Box" ? where_ + "/Box" : exodus_file_);
+  return mesh;
+}
+
+std::string MeshFactory::description() const
+{
+  if (type_ == "Exodus")
+    return "Exodus file " + exodus_file_;
+  const auto &cells = params_.sublist("Box").get<Teuchos::Array<int>>("Cells");
+  return "generated box " + std::to_string(cells[0]) + " x " + std::to_string(cells[1]) + " x " +
+         std::to_string(cells[2]);
+}
+} // namespace kiln

@@ -1,0 +1,36 @@
+#pragma once
+/// The "Mesh" block of the input: which mesh, and where to split it into a gap.
+#include "mesh/mesh.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+
+namespace kiln
+{
+class MeshFactory
+{
+public:
+  static Teuchos::ParameterList valid_parameters();
+  /// `params` is the validated "Mesh" block; `where` names it in messages
+  /// ("in.xml: Kiln/Mesh"). `mesh_file`, if not empty, overrides the input's
+  /// mesh with an Exodus file (kiln --mesh FILE).
+  MeshFactory(const Teuchos::ParameterList &params, const std::string &where,
+              const std::string &mesh_file = "");
+
+  /// The mesh as generated or read, checked, not yet split.
+  Mesh build() const;
+  /// The side set to split at (0: none).
+  int gap_side_set() const { return gap_side_set_; }
+  /// A one-line description ("box 4 x 4 x 4" or the Exodus file name).
+  std::string description() const;
+
+private:
+  Teuchos::ParameterList params_;
+  std::string where_;
+  std::string type_;
+  std::string exodus_file_;
+  double scale_;
+  int gap_side_set_;
+};
+} // namespace kiln

@@ -1,0 +1,93 @@
+#include "mesh/metis_partitioner.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <metis.h>
+
+#include <algorithm>
+#include <climits>
+
+namespace kiln
+{
+namespace internal
+{
+std::vector<int> metis_kway(const Mesh &mesh, const int n_parts)
+{
+  // The dual graph of the unsplit mesh: a twin node counts as its parent.
+  std::vector<idx_t> eptr(mesh.n_cells() + 1), eind;
+  eind.reserve(static_cast<std::size_t>(mesh.n_cells()) * n_hex_nodes);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+  {
+    for (const int n : mesh.connectivity[c])
+      eind.push_back(mesh.parent_node.empty() ? n : mesh.parent_node[n]);
+    eptr[c + 1] = static_cast<idx_t>(eind.size());
+  }
+  idx_t ne = mesh.n_cells(), nn = mesh.n_nodes(), ncommon = 4, numflag = 0;
+  idx_t *xadj = nullptr, *adjncy = nullptr;
+  int status = METIS_MeshToDual(&ne, &nn, eptr.data(), eind.data(), &ncommon, &numflag, &xadj,
+                                &adjncy);
+  KILN_CHECK_INPUT(status == METIS_OK, "", "METIS_MeshToDual failed with status " << status);
+
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED] = 1;
+  options[METIS_OPTION_CONTIG] = 0;
+  idx_t ncon = 1, nparts = n_parts, objval = 0;
+  std::vector<idx_t> part(mesh.n_cells());
+  status = METIS_PartGraphKway(&ne, &ncon, xadj, adjncy, nullptr, nullptr, nullptr, &nparts,
+                               nullptr, nullptr, options, &objval, part.data());
+  METIS_Free(xadj);
+  METIS_Free(adjncy);
+  KILN_CHECK_INPUT(status == METIS_OK, "", "METIS_PartGraphKway failed with status " << status);
+  return std::vector<int>(part.begin(), part.end());
+}
+} // namespace internal
+
+std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &comm,
+                                 const std::string &where)
+{
+  const int n_ranks = comm.getSize();
+  KILN_CHECK_INPUT(mesh.n_cells() >= n_ranks, where,
+                   "the mesh has " << mesh.n_cells() << " cells, fewer than the " << n_ranks
+                                   << " MPI ranks; run on at most " << mesh.n_cells()
+                                   << " ranks or refine the mesh");
+  std::vector<int> cell_rank(mesh.n_cells(), 0);
+  if (n_ranks == 1)
+    return cell_rank;
+  // METIS runs on rank 0 only; its result (or its failure) is broadcast.
+  std::string error;
+  if (comm.getRank() == 0)
+  {
+    try
+    {
+      cell_rank = internal::metis_kway(mesh, n_ranks);
+    }
+    catch (const InputError &e)
+    {
+      error = e.what();
+    }
+  }
+  check_collectively(comm, error.empty(), where, error);
+  Teuchos::broadcast(comm, 0, mesh.n_cells(), cell_rank.data());
+
+  std::vector<int> cells_per_rank(n_ranks, 0);
+  for (const int r : cell_rank)
+    ++cells_per_rank[r];
+  const auto empty = std::find(cells_per_rank.begin(), cells_per_rank.end(), 0);
+  KILN_CHECK_INPUT(empty == cells_per_rank.end(), where,
+                   "METIS left rank " << empty - cells_per_rank.begin()
+                                      << " without cells (" << mesh.n_cells() << " cells on "
+                                      << n_ranks << " ranks); run on fewer ranks");
+  return cell_rank;
+}
+
+std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank)
+{
+  std::vector<int> owner(mesh.n_nodes(), INT_MAX);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (const int n : mesh.connectivity[c])
+      owner[n] = std::min(owner[n], cell_rank[c]);
+  return owner;
+}
+} // namespace kiln

@@ -1,0 +1,20 @@
+#pragma once
+/// METIS k-way partition of the cells, computed on rank 0 and broadcast.
+#include "mesh/mesh.hpp"
+
+#include <Teuchos_Comm.hpp>
+
+#include <vector>
+
+namespace kiln
+{
+/// The owning rank of every cell, the same on every rank and for every run
+/// (METIS with a fixed seed on the dual graph: cells sharing a face, across a
+/// split gap too, so the gap's two sides tend to share a rank). Throws
+/// InputError if the mesh has fewer cells than ranks or if a rank gets no cell.
+std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &comm,
+                                 const std::string &where);
+
+/// The owner of each node: the lowest rank among the cells around it.
+std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank);
+} // namespace kiln

@@ -1,0 +1,297 @@
+// Tests src/mesh/exodus_io.cpp: reading the contact-box Cubit meshes, a write/read round trip,
+// and the InputError messages for bad files.
+// KILN_TEST_NP: 1
+#include "mesh/exodus_io.hpp"
+
+#include "base/errors.hpp"
+
+#include <exodusII.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+using kiln::Mesh;
+using testing::HasSubstr;
+
+const std::string mesh_dir = std::string(KILN_SHARED_DIR) + "/meshes/";
+constexpr double cm = 0.01; // the Cubit meshes are in cm
+constexpr double half_side = 2 * cm;
+
+/// A file name in the working directory, unique per process and per tag; removed at scope end.
+class TempFile
+{
+public:
+  explicit TempFile(const std::string &tag)
+    : path_("kiln-exodus-io-test-" + tag + "-" + std::to_string(::getpid()) + ".exo")
+  {
+  }
+  ~TempFile() { std::remove(path_.c_str()); }
+  TempFile(const TempFile &) = delete;
+  TempFile &operator=(const TempFile &) = delete;
+  const std::string &path() const { return path_; }
+
+private:
+  std::string path_;
+};
+
+double distance(const kiln::Point &a, const kiln::Point &b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1])
+                   + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/// Checks what both reference meshes share: sizes, blocks, side sets, cube extent, edge lengths.
+void expect_contact_box_mesh(const Mesh &mesh)
+{
+  ASSERT_EQ(mesh.n_nodes(), 125);
+  ASSERT_EQ(mesh.n_cells(), 64);
+  ASSERT_EQ(mesh.block_ids(), (std::vector<int>{1, 2}));
+  EXPECT_EQ(std::count(mesh.block_id.begin(), mesh.block_id.end(), 1), 32);
+  EXPECT_EQ(std::count(mesh.block_id.begin(), mesh.block_id.end(), 2), 32);
+
+  std::vector<int> ids;
+  for (const auto &set : mesh.side_sets)
+    ids.push_back(set.id);
+  ASSERT_EQ(ids, (std::vector<int>{1, 2, 3, 4, 5, 6, 10}));
+  for (const auto &set : mesh.side_sets)
+  {
+    EXPECT_EQ(set.name, "") << "the Cubit files carry no side set names";
+    ASSERT_EQ(set.faces.size(), set.cells.size());
+    // The cut plane is listed from both sides: 16 faces of block 1 and 16 of block 2.
+    EXPECT_EQ(set.n_sides(), set.id == 10 ? 32 : 16) << "side set " << set.id;
+    for (int i = 0; i < set.n_sides(); ++i)
+    {
+      EXPECT_TRUE(set.cells[i] >= 0 && set.cells[i] < mesh.n_cells());
+      EXPECT_TRUE(set.faces[i] >= 0 && set.faces[i] < kiln::n_hex_faces);
+    }
+  }
+  const kiln::SideSet &gap = *mesh.find_side_set(10);
+  EXPECT_EQ(std::count_if(gap.cells.begin(), gap.cells.end(),
+                          [&](const int c) { return mesh.block_id[c] == 1; }),
+            16);
+
+  const double radius = half_side * std::sqrt(3.0);
+  for (const auto &p : mesh.coordinates)
+    EXPECT_LE(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), radius * (1 + 1e-14));
+
+  // The 12 edges of a HEX8 (bottom, top, vertical): all 1 cm long.
+  const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                            {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (const auto &e : edges)
+      EXPECT_NEAR(distance(mesh.coordinates[mesh.connectivity[c][e[0]]],
+                           mesh.coordinates[mesh.connectivity[c][e[1]]]),
+                  cm, 1e-14)
+        << "cell " << c << " edge " << e[0] << "-" << e[1];
+}
+
+TEST(ExodusIo, ReadsRotatedCube)
+{
+  const Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm);
+  expect_contact_box_mesh(mesh);
+}
+
+TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
+{
+  const Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "aligned-cube.exo", cm);
+  expect_contact_box_mesh(mesh);
+
+  // Side set id -> the axis its face nodes share and the value there
+  // (1 left, 2 right, 3 front, 4 back, 5 bottom, 6 top; 10 the cut plane x = 0).
+  struct Plane
+  {
+    int id;
+    int axis;
+    double value;
+  };
+  const Plane planes[] = {{1, 0, -half_side}, {2, 0, half_side}, {3, 1, -half_side},
+                          {4, 1, half_side},  {5, 2, -half_side}, {6, 2, half_side},
+                          {10, 0, 0.0}};
+  for (const Plane &plane : planes)
+  {
+    const kiln::SideSet &set = *mesh.find_side_set(plane.id);
+    for (int i = 0; i < set.n_sides(); ++i)
+    {
+      const auto &cell = mesh.connectivity[set.cells[i]];
+      const int *face = kiln::hex_face_nodes[set.faces[i]];
+      for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(mesh.coordinates[cell[face[k]]][plane.axis], plane.value, 1e-15)
+          << "side set " << plane.id << " entry " << i;
+      if (plane.id == 10)
+        continue;
+      // The face table's right-hand rule gives the outward normal: +-axis direction.
+      const kiln::Point &p0 = mesh.coordinates[cell[face[0]]];
+      const kiln::Point &p1 = mesh.coordinates[cell[face[1]]];
+      const kiln::Point &p3 = mesh.coordinates[cell[face[3]]];
+      const double a[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+      const double b[3] = {p3[0] - p0[0], p3[1] - p0[1], p3[2] - p0[2]};
+      const double normal[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                                a[0] * b[1] - a[1] * b[0]};
+      EXPECT_GT(normal[plane.axis] * plane.value, 0.0)
+        << "side set " << plane.id << " entry " << i << ": normal not outward";
+    }
+  }
+  // Block 1 is the x < 0 half.
+  for (int c = 0; c < mesh.n_cells(); ++c)
+  {
+    double x_sum = 0.0;
+    for (const int node : mesh.connectivity[c])
+      x_sum += mesh.coordinates[node][0];
+    EXPECT_EQ(x_sum < 0.0, mesh.block_id[c] == 1) << "cell " << c;
+  }
+}
+
+TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
+{
+  Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm);
+  mesh.side_sets.front().name = "left";
+  mesh.side_sets.back().name = "gap, a name longer than thirty-two characters";
+  const TempFile file("round-trip");
+  kiln::write_exodus_mesh(mesh, file.path());
+  const Mesh back = kiln::read_exodus_mesh(file.path(), 1.0);
+
+  ASSERT_EQ(back.n_nodes(), mesh.n_nodes());
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(back.coordinates[i][d], mesh.coordinates[i][d],
+                  1e-15 * std::abs(mesh.coordinates[i][d]))
+        << "node " << i;
+  EXPECT_EQ(back.connectivity, mesh.connectivity);
+  EXPECT_EQ(back.block_id, mesh.block_id);
+  ASSERT_EQ(back.side_sets.size(), mesh.side_sets.size());
+  for (std::size_t s = 0; s < mesh.side_sets.size(); ++s)
+  {
+    EXPECT_EQ(back.side_sets[s].id, mesh.side_sets[s].id);
+    EXPECT_EQ(back.side_sets[s].name, mesh.side_sets[s].name);
+    EXPECT_EQ(back.side_sets[s].cells, mesh.side_sets[s].cells);
+    EXPECT_EQ(back.side_sets[s].faces, mesh.side_sets[s].faces);
+  }
+}
+
+/// Writes a one-element Exodus file with the C API (to make files Kiln must reject).
+/// side_set_side < 0: no side set.
+void write_one_element_file(const std::string &path, const int n_dim, const char *type,
+                            const int block_id, const int side_set_side)
+{
+  int comp_ws = 8, io_ws = 8;
+  const int exo = ex_create(path.c_str(), EX_CLOBBER, &comp_ws, &io_ws);
+  ASSERT_GE(exo, 0);
+  const std::string element_type = type;
+  const int n_nodes = element_type == "TETRA4" ? 4 : element_type == "QUAD4" ? 4 : 8;
+  const int n_side_sets = side_set_side < 0 ? 0 : 1;
+  ASSERT_GE(ex_put_init(exo, "test", n_dim, n_nodes, 1, 1, 0, n_side_sets), 0);
+  const std::vector<double> x = {0, 1, 1, 0, 0, 1, 1, 0}, y = {0, 0, 1, 1, 0, 0, 1, 1},
+                            z = {0, 0, 0, 0, 1, 1, 1, 1};
+  ASSERT_GE(ex_put_coord(exo, x.data(), y.data(), n_dim == 3 ? z.data() : nullptr), 0);
+  ASSERT_GE(ex_put_elem_block(exo, block_id, type, 1, n_nodes, 0), 0);
+  const std::vector<int> conn = {1, 2, 3, 4, 5, 6, 7, 8};
+  ASSERT_GE(ex_put_elem_conn(exo, block_id, conn.data()), 0);
+  if (n_side_sets == 1)
+  {
+    const int elem = 1;
+    ASSERT_GE(ex_put_side_set_param(exo, 4, 1, 0), 0);
+    ASSERT_GE(ex_put_side_set(exo, 4, &elem, &side_set_side), 0);
+  }
+  ASSERT_GE(ex_close(exo), 0);
+}
+
+std::string read_error(const std::string &path)
+{
+  try
+  {
+    kiln::read_exodus_mesh(path, 1.0);
+  }
+  catch (const kiln::InputError &e)
+  {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError for " << path;
+  return "";
+}
+
+TEST(ExodusIo, MissingFileNamesThePath)
+{
+  const std::string path = "no-such-folder/no-such-mesh.exo";
+  EXPECT_THROW(kiln::read_exodus_mesh(path, 1.0), kiln::InputError);
+  const std::string message = read_error(path);
+  EXPECT_THAT(message, HasSubstr("cannot open Exodus file"));
+  EXPECT_THAT(message, HasSubstr(path));
+}
+
+TEST(ExodusIo, FileThatIsNotExodusNamesThePath)
+{
+  const TempFile file("not-exodus");
+  std::ofstream(file.path()) << "this is not a netCDF file\n";
+  const std::string message = read_error(file.path());
+  EXPECT_THAT(message, HasSubstr(file.path()));
+  EXPECT_THAT(message, HasSubstr("not an Exodus II"));
+}
+
+TEST(ExodusIo, TetrahedronBlockIsRejected)
+{
+  const TempFile file("tetra");
+  write_one_element_file(file.path(), 3, "TETRA4", 3, -1);
+  const std::string message = read_error(file.path());
+  EXPECT_THAT(message, HasSubstr(file.path()));
+  EXPECT_THAT(message, HasSubstr("element block 3"));
+  EXPECT_THAT(message, HasSubstr("\"TETRA4\""));
+  EXPECT_THAT(message, HasSubstr("HEX8"));
+}
+
+TEST(ExodusIo, TwoDimensionalMeshIsRejected)
+{
+  const TempFile file("2d");
+  write_one_element_file(file.path(), 2, "QUAD4", 1, -1);
+  const std::string message = read_error(file.path());
+  EXPECT_THAT(message, HasSubstr(file.path()));
+  EXPECT_THAT(message, HasSubstr("2-dimensional"));
+}
+
+TEST(ExodusIo, SideNumberOutsideHexSidesIsRejected)
+{
+  const TempFile file("bad-side");
+  write_one_element_file(file.path(), 3, "HEX8", 1, 7);
+  const std::string message = read_error(file.path());
+  EXPECT_THAT(message, HasSubstr(file.path()));
+  EXPECT_THAT(message, HasSubstr("side set 4"));
+  EXPECT_THAT(message, HasSubstr("side number 7 is outside 1..6"));
+
+  // The same file with a valid side is read: side 6 is local face 5.
+  write_one_element_file(file.path(), 3, "hex", 1, 6);
+  const Mesh mesh = kiln::read_exodus_mesh(file.path(), 2.0);
+  ASSERT_EQ(mesh.side_sets.size(), 1U);
+  EXPECT_EQ(mesh.side_sets[0].cells, std::vector<int>{0});
+  EXPECT_EQ(mesh.side_sets[0].faces, std::vector<int>{5});
+  EXPECT_EQ(mesh.coordinates[6], (kiln::Point{2.0, 2.0, 2.0}));
+}
+
+TEST(ExodusIo, NonPositiveScaleIsRejected)
+{
+  EXPECT_THROW(kiln::read_exodus_mesh(mesh_dir + "aligned-cube.exo", 0.0), kiln::InputError);
+}
+
+TEST(ExodusIo, WritingIntoMissingFolderNamesThePath)
+{
+  const Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "aligned-cube.exo", cm);
+  const std::string path = "no-such-folder-" + std::to_string(::getpid()) + "/out.exo";
+  try
+  {
+    kiln::write_exodus_mesh(mesh, path);
+    ADD_FAILURE() << "no InputError";
+  }
+  catch (const kiln::InputError &e)
+  {
+    EXPECT_THAT(e.what(), HasSubstr(path));
+    EXPECT_THAT(e.what(), HasSubstr("cannot create Exodus file"));
+  }
+}
+} // namespace
