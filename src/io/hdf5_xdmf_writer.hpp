@@ -10,6 +10,11 @@
 /// Rows are in global-id order whatever the number of ranks: each rank writes
 /// the rows it owns. After each step the file is flushed and the XDMF file is
 /// rewritten, so a run that fails later leaves readable results behind.
+/// Before the first step the XDMF file shows the mesh alone (one grid, no time).
+/// Every member function is collective on the communicator, which must outlive the
+/// writer; errors are thrown on all ranks alike (kiln::InputError when the files
+/// cannot be created or written, kiln::InternalError for a misuse such as a field
+/// with the wrong number of values), and the destructor closes everything.
 
 #include "mesh/mesh.hpp"
 
@@ -37,7 +42,9 @@ public:
 
   /// Starts group /steps/NNNNNN (NNNNNN = number of steps written before).
   void begin_step(double time, int cycle, double dt);
-  /// `values` holds n_components values per owned node, node after node.
+  /// `values` holds n_components values per owned node, node after node. The name
+  /// (letters, digits, '_', '-', '.') must be new in this step. In the XDMF file a
+  /// field is a Scalar (1 component), Vector (3) or Matrix (others, e.g. Voigt tensors).
   void write_node_field(const std::string &name, int n_components,
                         const std::vector<double> &values);
   /// `values` holds n_components values per owned cell, cell after cell.

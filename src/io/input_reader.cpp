@@ -89,7 +89,11 @@ Teuchos::ParameterList parse_input(const std::string &xml, const std::string &wh
   }
   catch (const std::exception &e)
   {
-    throw InputError(where + ": not a well-formed XML file: " + e.what());
+    // Teuchos prefixes the parser's message with its own source location.
+    std::string message = e.what();
+    const auto line = message.find("XML parse error");
+    throw InputError(where + ": not a well-formed XML file: " +
+                     (line == std::string::npos ? message : message.substr(line)));
   }
   KILN_CHECK_INPUT(root.getTag() == "ParameterList", where,
                    "the root element is <" << root.getTag()

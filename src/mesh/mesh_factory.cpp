@@ -6,6 +6,8 @@
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_checks.hpp"
 
+#include <filesystem>
+
 namespace kiln
 {
 Teuchos::ParameterList MeshFactory::valid_parameters()
@@ -47,6 +49,11 @@ MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string
 
 Mesh MeshFactory::build() const
 {
+  KILN_CHECK_INPUT(type_ != "Exodus" || std::filesystem::exists(exodus_file_),
+                   where_ + "/Exodus/\"File\"",
+                   "the mesh file \"" << exodus_file_ << "\" does not exist (relative paths start "
+                                      "from the working directory "
+                                   << std::filesystem::current_path().string() << ")");
   Mesh mesh;
   if (type_ == "Box")
     mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate();

@@ -1,0 +1,10 @@
+# kiln --write-mesh, then kiln --check on the written file (cmake -P script).
+execute_process(COMMAND ${KILN} --write-mesh ${OUT} ${INPUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "wrote ${OUT}: 64 cells, 125 nodes, 2 blocks, 7 side sets")
+  message(FATAL_ERROR "kiln --write-mesh failed (${rc}):\n${out}")
+endif()
+execute_process(COMMAND ${KILN} --check --mesh ${OUT} ${INPUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "mesh: 64 cells, 150 nodes.*gap at side set 10: 25 node pairs")
+  message(FATAL_ERROR "kiln --check on the written mesh failed (${rc}):\n${out}")
+endif()
+message("round trip: 64 cells, 150 nodes, 25 node pairs")

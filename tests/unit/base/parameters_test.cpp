@@ -1,0 +1,115 @@
+// Tests base/parameters: validation against a valid list (names with the closest
+// suggestion, types, validators, nested paths, defaults) and closest_name.
+// KILN_TEST_NP: 1
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+using testing::HasSubstr;
+
+namespace
+{
+Teuchos::ParameterList valid_list()
+{
+  Teuchos::ParameterList p("Top");
+  p.set("Conductivity", 1.0, "k [W/(m K)]", kiln::positive_double_validator());
+  p.set("Steps", 3, "count [-]", kiln::positive_int_validator());
+  p.set("Method", "BDF2", "time integrator", kiln::choice_validator({"BDF2", "Backward Euler"}));
+  p.sublist("Inner").set("Angle", 0.0, "[degrees]", kiln::double_range_validator(-360, 360));
+  p.sublist("Inner").set("Sizes", Teuchos::Array<double>(3, 1.0), "[m]",
+                         kiln::positive_double_array_validator(3));
+  return p;
+}
+
+std::string error_of(const Teuchos::ParameterList &user)
+{
+  try
+  {
+    kiln::validated(user, valid_list(), "in.xml", "Top");
+  }
+  catch (const kiln::InputError &e)
+  {
+    return e.what();
+  }
+  return "";
+}
+} // namespace
+
+TEST(Parameters, DefaultsAreSetAndValuesKept)
+{
+  Teuchos::ParameterList user;
+  user.set("Steps", 7);
+  const auto p = kiln::validated(user, valid_list(), "in.xml", "Top");
+  EXPECT_EQ(p.get<int>("Steps"), 7);
+  EXPECT_EQ(p.get<double>("Conductivity"), 1.0);
+  EXPECT_EQ(p.get<std::string>("Method"), "BDF2");
+  EXPECT_EQ(p.sublist("Inner").get<double>("Angle"), 0.0);
+}
+
+TEST(Parameters, MisspelledNameSuggestsClosest)
+{
+  Teuchos::ParameterList user;
+  user.set("Conductivty", 2.0);
+  const std::string e = error_of(user);
+  EXPECT_THAT(e, HasSubstr("in.xml: Top/\"Conductivty\": unknown parameter."));
+  EXPECT_THAT(e, HasSubstr("Did you mean \"Conductivity\"?"));
+  EXPECT_THAT(e, HasSubstr("Valid names in Top: \"Conductivity\", \"Steps\""));
+}
+
+TEST(Parameters, FarNameGetsNoSuggestion)
+{
+  Teuchos::ParameterList user;
+  user.set("Xyzzy", 2.0);
+  const std::string e = error_of(user);
+  EXPECT_THAT(e, HasSubstr("unknown parameter"));
+  EXPECT_THAT(e, testing::Not(HasSubstr("Did you mean")));
+}
+
+TEST(Parameters, NestedPathAndValidator)
+{
+  Teuchos::ParameterList user;
+  user.sublist("Inner").set("Angle", 400.0);
+  EXPECT_THAT(error_of(user), HasSubstr("in.xml: Top/Inner/\"Angle\" = 400: must be in [-360, 360]"));
+  Teuchos::ParameterList sizes;
+  sizes.sublist("Inner").set("Sizes", Teuchos::Array<double>(2, 1.0));
+  EXPECT_THAT(error_of(sizes), HasSubstr("must have exactly 3 entries, each > 0"));
+}
+
+TEST(Parameters, WrongTypeAndNonPositive)
+{
+  Teuchos::ParameterList user;
+  user.set("Conductivity", 2);
+  EXPECT_THAT(error_of(user),
+              HasSubstr("Top/\"Conductivity\": expected type \"double\", got type \"int\""));
+  Teuchos::ParameterList negative;
+  negative.set("Conductivity", -1.0);
+  EXPECT_THAT(error_of(negative), HasSubstr("Top/\"Conductivity\" = -1: must be > 0"));
+  Teuchos::ParameterList zero_steps;
+  zero_steps.set("Steps", 0);
+  EXPECT_THAT(error_of(zero_steps), HasSubstr("\"Steps\" = 0: must be > 0"));
+}
+
+TEST(Parameters, ChoiceListsOptions)
+{
+  Teuchos::ParameterList user;
+  user.set("Method", "RK4");
+  EXPECT_THAT(error_of(user), HasSubstr("must be one of \"BDF2\", \"Backward Euler\""));
+}
+
+TEST(Parameters, SublistWhereParameterExpected)
+{
+  Teuchos::ParameterList user;
+  user.sublist("Steps");
+  EXPECT_THAT(error_of(user), HasSubstr("Top/\"Steps\": expected a parameter of type int"));
+}
+
+TEST(Parameters, ClosestName)
+{
+  const std::vector<std::string> names{"Cells", "Size", "Phi", "Theta"};
+  EXPECT_EQ(kiln::closest_name("cels", names), "Cells");
+  EXPECT_EQ(kiln::closest_name("Thetta", names), "Theta");
+  EXPECT_EQ(kiln::closest_name("Temperature", names), "");
+}
