@@ -13,6 +13,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   libexodusii-dev libnetcdf-dev
   libgtest-dev
+  clang-format
 )
 
 missing=()

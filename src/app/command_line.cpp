@@ -29,16 +29,18 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
   const std::string hint = "; run kiln --help";
   CommandLine cl;
   bool mode_set = false;
-  const auto set_mode = [&](const CommandLine::Mode m, const std::string &flag) {
-    KILN_CHECK_INPUT(!mode_set, "command line", flag << " cannot be combined with another mode"
-                                                      << hint);
+  const auto set_mode = [&](const CommandLine::Mode m, const std::string &flag)
+  {
+    KILN_CHECK_INPUT(!mode_set, "command line",
+                     flag << " cannot be combined with another mode" << hint);
     cl.mode = m;
     mode_set = true;
   };
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string &a = args[i];
-    const auto value = [&](const std::string &what) {
+    const auto value = [&](const std::string &what)
+    {
       KILN_CHECK_INPUT(i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0, "command line",
                        a << " needs " << what << hint);
       return args[++i];

@@ -17,8 +17,8 @@ struct CommandLine
     write_mesh
   };
   Mode mode = Mode::run;
-  std::string input;      ///< the XML input file
-  std::string mesh_file;  ///< --mesh FILE: an Exodus file that replaces the input's mesh
+  std::string input;       ///< the XML input file
+  std::string mesh_file;   ///< --mesh FILE: an Exodus file that replaces the input's mesh
   std::string mesh_output; ///< --write-mesh OUT.exo
 };
 

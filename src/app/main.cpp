@@ -29,7 +29,7 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
     return 0;
   case Mode::print_parameters:
     kiln::Simulation::valid_parameters().print(
-      *out, Teuchos::ParameterList::PrintOptions().showDoc(true).showTypes(true).indent(2));
+        *out, Teuchos::ParameterList::PrintOptions().showDoc(true).showTypes(true).indent(2));
     return 0;
   default:
     break;

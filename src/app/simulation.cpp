@@ -45,9 +45,10 @@ Teuchos::ParameterList Simulation::valid_parameters()
 {
   Teuchos::ParameterList p("Kiln");
   p.set("Problem Name", "", "a title printed in the log [-]");
-  p.sublist("Mesh", false, "the mesh; see MeshFactory").setParameters(MeshFactory::valid_parameters());
+  p.sublist("Mesh", false, "the mesh; see MeshFactory")
+      .setParameters(MeshFactory::valid_parameters());
   p.sublist("Output", false, "results in HDF5 + XDMF; see doc/output-format.md")
-    .setParameters(internal::output_parameters());
+      .setParameters(internal::output_parameters());
   return p;
 }
 
@@ -105,8 +106,9 @@ void Simulation::print_header() const
 {
   auto &out = *out_;
   const std::string title = params_.get<std::string>("Problem Name");
-  out << "Kiln " << version_string << ": " << input_path_ << (title.empty() ? "" : " (" + title + ")")
-      << " on " << comm_->getSize() << " MPI rank" << (comm_->getSize() > 1 ? "s" : "") << "\n";
+  out << "Kiln " << version_string << ": " << input_path_
+      << (title.empty() ? "" : " (" + title + ")") << " on " << comm_->getSize() << " MPI rank"
+      << (comm_->getSize() > 1 ? "s" : "") << "\n";
 
   std::map<int, std::pair<int, std::vector<char>>> blocks; // id -> (cells, node flags)
   for (int c = 0; c < mesh_.n_cells(); ++c)
@@ -136,7 +138,8 @@ void Simulation::print_header() const
     ++cells[r];
   for (const int r : dofs_->node_owner())
     ++nodes[r];
-  const auto balance = [](const std::vector<int> &v) {
+  const auto balance = [](const std::vector<int> &v)
+  {
     const double mean = double(std::accumulate(v.begin(), v.end(), 0)) / v.size();
     std::ostringstream s;
     s << "min " << *std::min_element(v.begin(), v.end()) << ", max "
@@ -160,7 +163,7 @@ void Simulation::output(const double time, const int cycle, const double dt) con
   }
   comm_->barrier();
   const MPI_Comm mpi_comm =
-    *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
   Hdf5XdmfWriter writer(mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(),
                         cell_rank_);
   writer.begin_step(time, cycle, dt);
@@ -197,8 +200,8 @@ void Simulation::write_mesh(const std::string &path) const
     }
   }
   check_collectively(*comm_, error.empty(), "", error);
-  *out_ << "wrote " << path << ": " << mesh.n_cells() << " cells, " << mesh.n_nodes()
-        << " nodes, " << mesh.block_ids().size() << " blocks, " << mesh.side_sets.size()
+  *out_ << "wrote " << path << ": " << mesh.n_cells() << " cells, " << mesh.n_nodes() << " nodes, "
+        << mesh.block_ids().size() << " blocks, " << mesh.side_sets.size()
         << " side sets (before the gap split)\n";
 }
 } // namespace kiln

@@ -120,10 +120,9 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
     {
       KILN_CHECK_INPUT(entry.isList(), at,
                        "expected a sublist (<ParameterList name=\"" << name
-                                                                   << "\">), got a parameter");
+                                                                    << "\">), got a parameter");
       check_list(Teuchos::getValue<Teuchos::ParameterList>(entry),
-                 Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), where,
-                 path + "/" + name);
+                 Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), where, path + "/" + name);
       continue;
     }
     KILN_CHECK_INPUT(!entry.isList(), at,
@@ -133,8 +132,8 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
     KILN_CHECK_INPUT(entry.getAny(false).type() == valid_entry->getAny(false).type(), at,
                      "expected type \"" << expected_type << "\", got type \""
                                         << entry.getAny(false).typeName() << "\" (value "
-                                        << value_text(entry) << "); write type=\""
-                                        << expected_type << "\"");
+                                        << value_text(entry) << "); write type=\"" << expected_type
+                                        << "\"");
     if (const auto validator = valid_entry->validator(); !validator.is_null())
     {
       try
@@ -191,42 +190,43 @@ using Validator = Teuchos::RCP<const Teuchos::ParameterEntryValidator>;
 
 Validator positive_double_validator()
 {
-  return Teuchos::rcp(new PredicateValidator("kilnPositiveDouble", "must be > 0", [](const auto &e) {
-    return holds<double>(e) && Teuchos::getValue<double>(e) > 0.0;
-  }));
+  return Teuchos::rcp(new PredicateValidator(
+      "kilnPositiveDouble", "must be > 0",
+      [](const auto &e) { return holds<double>(e) && Teuchos::getValue<double>(e) > 0.0; }));
 }
 
 Validator nonnegative_double_validator()
 {
-  return Teuchos::rcp(new PredicateValidator("kilnNonnegativeDouble", "must be >= 0",
-                                             [](const auto &e) {
-                                               return holds<double>(e) &&
-                                                      Teuchos::getValue<double>(e) >= 0.0;
-                                             }));
+  return Teuchos::rcp(new PredicateValidator(
+      "kilnNonnegativeDouble", "must be >= 0",
+      [](const auto &e) { return holds<double>(e) && Teuchos::getValue<double>(e) >= 0.0; }));
 }
 
 Validator double_range_validator(const double lo, const double hi)
 {
   std::ostringstream req;
   req << "must be in [" << lo << ", " << hi << "]";
-  return Teuchos::rcp(new PredicateValidator("kilnDoubleRange", req.str(), [lo, hi](const auto &e) {
-    return holds<double>(e) && Teuchos::getValue<double>(e) >= lo &&
-           Teuchos::getValue<double>(e) <= hi;
-  }));
+  return Teuchos::rcp(new PredicateValidator("kilnDoubleRange", req.str(),
+                                             [lo, hi](const auto &e)
+                                             {
+                                               return holds<double>(e) &&
+                                                      Teuchos::getValue<double>(e) >= lo &&
+                                                      Teuchos::getValue<double>(e) <= hi;
+                                             }));
 }
 
 Validator positive_int_validator()
 {
-  return Teuchos::rcp(new PredicateValidator("kilnPositiveInt", "must be > 0", [](const auto &e) {
-    return holds<int>(e) && Teuchos::getValue<int>(e) > 0;
-  }));
+  return Teuchos::rcp(new PredicateValidator(
+      "kilnPositiveInt", "must be > 0",
+      [](const auto &e) { return holds<int>(e) && Teuchos::getValue<int>(e) > 0; }));
 }
 
 Validator nonnegative_int_validator()
 {
-  return Teuchos::rcp(new PredicateValidator("kilnNonnegativeInt", "must be >= 0", [](const auto &e) {
-    return holds<int>(e) && Teuchos::getValue<int>(e) >= 0;
-  }));
+  return Teuchos::rcp(new PredicateValidator(
+      "kilnNonnegativeInt", "must be >= 0",
+      [](const auto &e) { return holds<int>(e) && Teuchos::getValue<int>(e) >= 0; }));
 }
 
 namespace internal
@@ -235,16 +235,19 @@ template <typename T>
 Validator array_validator(const int size, const bool positive, const std::string &xml_name)
 {
   std::ostringstream req;
-  req << "must have " << (size > 0 ? "exactly " + std::to_string(size) : "at least 1")
-      << " entries" << (positive ? ", each > 0" : "");
-  return Teuchos::rcp(new PredicateValidator(xml_name, req.str(), [size, positive](const auto &e) {
-    if (!holds<Teuchos::Array<T>>(e))
-      return false;
-    const auto &a = Teuchos::getValue<Teuchos::Array<T>>(e);
-    if ((size > 0 && a.size() != size) || a.size() == 0)
-      return false;
-    return !positive || std::all_of(a.begin(), a.end(), [](const T v) { return v > T(0); });
-  }));
+  req << "must have " << (size > 0 ? "exactly " + std::to_string(size) : "at least 1") << " entries"
+      << (positive ? ", each > 0" : "");
+  return Teuchos::rcp(new PredicateValidator(
+      xml_name, req.str(),
+      [size, positive](const auto &e)
+      {
+        if (!holds<Teuchos::Array<T>>(e))
+          return false;
+        const auto &a = Teuchos::getValue<Teuchos::Array<T>>(e);
+        if ((size > 0 && a.size() != size) || a.size() == 0)
+          return false;
+        return !positive || std::all_of(a.begin(), a.end(), [](const T v) { return v > T(0); });
+      }));
 }
 } // namespace internal
 
@@ -266,11 +269,13 @@ Validator choice_validator(const std::vector<std::string> &choices)
   const std::string req = "must be one of " + internal::joined(choices);
   auto strings = Teuchos::rcp(new Teuchos::Array<std::string>(choices.begin(), choices.end()));
   return Teuchos::rcp(new PredicateValidator(
-    "kilnChoice", req,
-    [choices](const auto &e) {
-      return holds<std::string>(e) && std::find(choices.begin(), choices.end(),
-                                                Teuchos::getValue<std::string>(e)) != choices.end();
-    },
-    strings));
+      "kilnChoice", req,
+      [choices](const auto &e)
+      {
+        return holds<std::string>(e) &&
+               std::find(choices.begin(), choices.end(), Teuchos::getValue<std::string>(e)) !=
+                   choices.end();
+      },
+      strings));
 }
 } // namespace kiln

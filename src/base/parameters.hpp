@@ -38,8 +38,7 @@ Teuchos::RCP<const Teuchos::ParameterEntryValidator> double_range_validator(doub
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_int_validator();
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> nonnegative_int_validator();
 /// For arrays: every entry > 0 and exactly `size` entries (size 0: any size >= 1).
-Teuchos::RCP<const Teuchos::ParameterEntryValidator>
-positive_double_array_validator(int size);
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_double_array_validator(int size);
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> positive_int_array_validator(int size);
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> double_array_validator(int size);
 /// A string from a fixed set; the message lists the choices.

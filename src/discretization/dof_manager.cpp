@@ -14,8 +14,8 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
                                  const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0,
-                              comm));
+  return Teuchos::rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
 }
 } // namespace internal
 
@@ -51,10 +51,10 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
       overlap_pairs.push_back(k);
   }
 
-  const auto node_gids = [](const std::vector<int> &nodes) {
-    return std::vector<GO>(nodes.begin(), nodes.end());
-  };
-  const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs) {
+  const auto node_gids = [](const std::vector<int> &nodes)
+  { return std::vector<GO>(nodes.begin(), nodes.end()); };
+  const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs)
+  {
     std::vector<GO> gids;
     gids.reserve(nodes.size() * n_node_fields + pairs.size());
     for (const int n : nodes)
@@ -77,5 +77,8 @@ GO DofManager::n_global_dofs() const
   return static_cast<GO>(owned_dof_map_->getGlobalNumElements());
 }
 
-std::size_t DofManager::n_owned_dofs() const { return owned_dof_map_->getNodeNumElements(); }
+std::size_t DofManager::n_owned_dofs() const
+{
+  return owned_dof_map_->getNodeNumElements();
+}
 } // namespace kiln

@@ -49,10 +49,7 @@ public:
   {
     return static_cast<GO>(n_node_fields) * node + static_cast<int>(f);
   }
-  GO contact_dof(const int pair) const
-  {
-    return static_cast<GO>(n_node_fields) * n_nodes_ + pair;
-  }
+  GO contact_dof(const int pair) const { return static_cast<GO>(n_node_fields) * n_nodes_ + pair; }
 
   Teuchos::RCP<const Map> owned_node_map() const { return owned_node_map_; }
   Teuchos::RCP<const Map> overlap_node_map() const { return overlap_node_map_; }

@@ -226,8 +226,8 @@ void Hdf5XdmfWriter::Impl::create_file()
   const Teuchos::MpiComm<int> teuchos_comm(comm);
   check_collectively(teuchos_comm, file.valid(), h5_path,
                      "cannot create the results file; check that the folder \"" +
-                       internal::directory_of(h5_path) +
-                       "\" exists and is writable, or choose another output path");
+                         internal::directory_of(h5_path) +
+                         "\" exists and is writable, or choose another output path");
 }
 
 /// Writes a dataset of (rows) or (rows x n_components) values, rows = nodes or cells, from
@@ -259,8 +259,8 @@ void Hdf5XdmfWriter::Impl::write_rows(const hid_t location, const std::string &n
   {
     const hsize_t start[2] = {runs[r].first, 0};
     const hsize_t count[2] = {runs[r].count, n_cols};
-    H5Sselect_hyperslab(file_space.get(), r == 0 ? H5S_SELECT_SET : H5S_SELECT_OR, start,
-                        nullptr, count, nullptr);
+    H5Sselect_hyperslab(file_space.get(), r == 0 ? H5S_SELECT_SET : H5S_SELECT_OR, start, nullptr,
+                        count, nullptr);
   }
   // Memory: the owned values in a row, or a 1-value space with nothing selected.
   const hsize_t n_values = n_owned * n_cols;
@@ -302,12 +302,11 @@ void Hdf5XdmfWriter::Impl::write_mesh(const Mesh &mesh, const std::vector<int> &
   }
   write_rows(group.get(), "connectivity", H5T_STD_I64LE, H5T_NATIVE_INT64, connectivity.data(),
              false, n_hex_nodes);
-  write_rows(group.get(), "block_id", H5T_STD_I32LE, H5T_NATIVE_INT32, block_id.data(), false,
-             1);
+  write_rows(group.get(), "block_id", H5T_STD_I32LE, H5T_NATIVE_INT32, block_id.data(), false, 1);
   write_rows(group.get(), "cell_rank", H5T_STD_I32LE, H5T_NATIVE_INT32, owner.data(), false, 1);
 
-  const H5Handle steps_group(
-    H5Gcreate2(file.get(), "steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  const H5Handle steps_group(H5Gcreate2(file.get(), "steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                             H5Gclose);
   check_io(steps_group.valid(), "creating group /steps");
 }
 
@@ -315,19 +314,20 @@ void Hdf5XdmfWriter::Impl::write_step_attributes(const internal::StepRecord &ste
 {
   const H5Handle scalar(H5Screate(H5S_SCALAR), H5Sclose);
   bool ok = true;
-  const auto write_attribute = [&](const char *name, const hid_t file_type, const hid_t mem_type,
-                                   const void *value) {
+  const auto write_attribute =
+      [&](const char *name, const hid_t file_type, const hid_t mem_type, const void *value)
+  {
     const H5Handle attribute(
-      H5Acreate2(step_group.get(), name, file_type, scalar.get(), H5P_DEFAULT, H5P_DEFAULT),
-      H5Aclose);
+        H5Acreate2(step_group.get(), name, file_type, scalar.get(), H5P_DEFAULT, H5P_DEFAULT),
+        H5Aclose);
     ok = ok && attribute.valid() && H5Awrite(attribute.get(), mem_type, value) >= 0;
   };
   const std::int32_t cycle = step.cycle;
   write_attribute("time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &step.time);
   write_attribute("dt", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &step.dt);
   write_attribute("cycle", H5T_STD_I32LE, H5T_NATIVE_INT32, &cycle);
-  check_io(ok, "writing the attributes of step " + internal::step_group_name(
-                                                     static_cast<int>(steps.size()) - 1));
+  check_io(ok, "writing the attributes of step " +
+                   internal::step_group_name(static_cast<int>(steps.size()) - 1));
 }
 
 void Hdf5XdmfWriter::Impl::write_field(const std::string &name, const internal::Center center,
@@ -337,7 +337,7 @@ void Hdf5XdmfWriter::Impl::write_field(const std::string &name, const internal::
   if (!in_step)
     internal::throw_internal_error(__FILE__, __LINE__, "in_step",
                                    std::string("write_") + kind + "_field(\"" + name +
-                                     "\") called outside begin_step()/end_step()");
+                                       "\") called outside begin_step()/end_step()");
   KILN_CHECK_INPUT(internal::is_valid_field_name(name), h5_path,
                    "field name \"" << name
                                    << "\" is not valid: use letters, digits, '_', '-' and '.'");
@@ -352,8 +352,8 @@ void Hdf5XdmfWriter::Impl::write_field(const std::string &name, const internal::
   message << kind << " field \"" << name << "\" has " << values.size()
           << " values on some rank, expected " << n_components << " per owned " << kind;
   internal::check_internal_collectively(
-    comm, values.size() == n_owned * static_cast<std::size_t>(n_components),
-    "values.size() == n_owned * n_components", message.str());
+      comm, values.size() == n_owned * static_cast<std::size_t>(n_components),
+      "values.size() == n_owned * n_components", message.str());
 
   write_rows(step_group.get(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(),
              center == internal::Center::node, n_components);
@@ -392,8 +392,7 @@ void write_grid(std::ostream &out, const std::string &indent, const std::string 
   out << in1 << "</Geometry>\n";
   for (const char *name : {"block_id", "cell_rank"})
   {
-    out << in1 << "<Attribute Name=\"" << name
-        << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+    out << in1 << "<Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
     write_data_item(out, in2, h5_name, std::string("/mesh/") + name, cells, "Int", 4);
     out << in1 << "</Attribute>\n";
   }
@@ -462,11 +461,11 @@ void Hdf5XdmfWriter::Impl::write_xdmf() const
                      "disk is not full");
 }
 
-Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path,
-                               const Mesh &mesh, const std::vector<int> &owned_nodes,
+Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
+                               const std::vector<int> &owned_nodes,
                                const std::vector<int> &owned_cells,
                                const std::vector<int> &cell_rank)
-  : impl_(std::make_unique<Impl>())
+    : impl_(std::make_unique<Impl>())
 {
   Impl &m = *impl_;
   m.comm = comm;
@@ -478,7 +477,8 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
   m.n_cells = mesh.n_cells();
 
   // The ownership must be a partition of the rows; a mistake here is the caller's.
-  const auto is_sorted_in_range = [](const std::vector<int> &rows, const int n) {
+  const auto is_sorted_in_range = [](const std::vector<int> &rows, const int n)
+  {
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (rows[i] < 0 || rows[i] >= n || (i > 0 && rows[i] <= rows[i - 1]))
         return false;
@@ -488,14 +488,14 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
                          static_cast<long long>(owned_cells.size())};
   MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_LONG_LONG, MPI_SUM, comm);
   internal::check_internal_collectively(
-    comm,
-    is_sorted_in_range(owned_nodes, m.n_nodes) && is_sorted_in_range(owned_cells, m.n_cells) &&
-      counts[0] == m.n_nodes && counts[1] == m.n_cells &&
-      cell_rank.size() == static_cast<std::size_t>(m.n_cells) &&
-      mesh.block_id.size() == static_cast<std::size_t>(m.n_cells),
-    "owned rows form a partition",
-    "owned_nodes/owned_cells must be increasing, in range and own every row once; "
-    "cell_rank and block_id need one entry per cell");
+      comm,
+      is_sorted_in_range(owned_nodes, m.n_nodes) && is_sorted_in_range(owned_cells, m.n_cells) &&
+          counts[0] == m.n_nodes && counts[1] == m.n_cells &&
+          cell_rank.size() == static_cast<std::size_t>(m.n_cells) &&
+          mesh.block_id.size() == static_cast<std::size_t>(m.n_cells),
+      "owned rows form a partition",
+      "owned_nodes/owned_cells must be increasing, in range and own every row once; "
+      "cell_rank and block_id need one entry per cell");
 
   m.node_runs = internal::contiguous_runs(owned_nodes);
   m.cell_runs = internal::contiguous_runs(owned_cells);
@@ -518,7 +518,7 @@ void Hdf5XdmfWriter::begin_step(const double time, const int cycle, const double
                                    "begin_step() called twice without end_step()");
   const std::string name = "steps/" + internal::step_group_name(static_cast<int>(m.steps.size()));
   m.step_group = internal::H5Handle(
-    H5Gcreate2(m.file.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      H5Gcreate2(m.file.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   m.check_io(m.step_group.valid(), "creating group /" + name);
   m.steps.push_back({time, cycle, dt, {}});
   m.in_step = true;
@@ -549,7 +549,13 @@ void Hdf5XdmfWriter::end_step()
   m.write_xdmf();
 }
 
-std::string Hdf5XdmfWriter::h5_path() const { return impl_->h5_path; }
+std::string Hdf5XdmfWriter::h5_path() const
+{
+  return impl_->h5_path;
+}
 
-std::string Hdf5XdmfWriter::xdmf_path() const { return impl_->xmf_path; }
+std::string Hdf5XdmfWriter::xdmf_path() const
+{
+  return impl_->xmf_path;
+}
 } // namespace kiln

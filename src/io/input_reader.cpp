@@ -72,9 +72,9 @@ void check_numbers(const Teuchos::XMLObject &node, const std::string &path,
                                 << "; write the number alone, in SI units, without a unit");
   }
   const std::string child_path =
-    node.getTag() == "ParameterList" && !path.empty() && node.hasAttribute("name")
-      ? path + "/" + node.getAttribute("name")
-      : (path.empty() && node.hasAttribute("name") ? node.getAttribute("name") : path);
+      node.getTag() == "ParameterList" && !path.empty() && node.hasAttribute("name")
+          ? path + "/" + node.getAttribute("name")
+          : (path.empty() && node.hasAttribute("name") ? node.getAttribute("name") : path);
   for (int i = 0; i < node.numChildren(); ++i)
     check_numbers(node.getChild(i), child_path, where);
 }

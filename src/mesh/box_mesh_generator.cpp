@@ -50,9 +50,8 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
 Mesh BoxMeshGenerator::generate() const
 {
   const int nx = cells_[0], ny = cells_[1], nz = cells_[2];
-  const auto node = [&](const int i, const int j, const int k) {
-    return i + (nx + 1) * (j + (ny + 1) * k);
-  };
+  const auto node = [&](const int i, const int j, const int k)
+  { return i + (nx + 1) * (j + (ny + 1) * k); };
   const auto A = rotation_matrix(phi_, theta_);
 
   Mesh mesh;
@@ -74,7 +73,8 @@ Mesh BoxMeshGenerator::generate() const
     mesh.side_sets[s].id = s + 1;
   mesh.side_sets[6].id = 10;
   SideSet &gap = mesh.side_sets[6];
-  const auto add_side = [](SideSet &set, const int cell, const int face) {
+  const auto add_side = [](SideSet &set, const int cell, const int face)
+  {
     set.cells.push_back(cell);
     set.faces.push_back(face);
   };
@@ -87,9 +87,8 @@ Mesh BoxMeshGenerator::generate() const
         {
           const int cell = mesh.n_cells();
           mesh.connectivity.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                                       node(i, j + 1, k), node(i, j, k + 1),
-                                       node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
-                                       node(i, j + 1, k + 1)});
+                                       node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
+                                       node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
           mesh.block_id.push_back(block);
           if (i == 0)
             add_side(mesh.side_sets[0], cell, 3);

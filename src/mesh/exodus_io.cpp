@@ -111,7 +111,7 @@ std::vector<std::string> read_side_set_names(const int exo, const std::string &p
 {
   // Ask for the longest name the file holds, not the default 32 characters.
   const int name_length =
-    std::max(static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 1);
+      std::max(static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 1);
   check_exodus(ex_set_max_name_length(exo, name_length), path, "setting the name length");
   std::vector<std::vector<char>> buffers(n_side_sets, std::vector<char>(name_length + 1, '\0'));
   std::vector<char *> pointers;
@@ -220,8 +220,8 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   char title[MAX_LINE_LENGTH + 1] = {};
   int n_dim = 0, n_nodes = 0, n_elems = 0, n_blocks = 0, n_node_sets = 0, n_side_sets = 0;
   check_exodus(
-    ex_get_init(id, title, &n_dim, &n_nodes, &n_elems, &n_blocks, &n_node_sets, &n_side_sets),
-    path, "reading the file header");
+      ex_get_init(id, title, &n_dim, &n_nodes, &n_elems, &n_blocks, &n_node_sets, &n_side_sets),
+      path, "reading the file header");
   KILN_CHECK_INPUT(n_dim == 3, path,
                    "the mesh is " << n_dim << "-dimensional; Kiln needs a 3D mesh of HEX8 "
                                   << "elements: mesh the geometry as a volume");

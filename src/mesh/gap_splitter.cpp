@@ -168,8 +168,8 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
       const auto t = twin.find({n, part[side_b.first]});
       KILN_CHECK_INPUT(t != twin.end(), where,
                        "more than two parts of the mesh meet at node "
-                         << mesh.parent_node[n] + 1 << " of side set " << side_set_id
-                         << "; Kiln splits a gap between two parts at each node");
+                           << mesh.parent_node[n] + 1 << " of side set " << side_set_id
+                           << "; Kiln splits a gap between two parts at each node");
       const int k = pair_of_twin.at(t->second);
       mesh.gap_pairs[k].area += areas.area[i];
       for (int d = 0; d < 3; ++d)

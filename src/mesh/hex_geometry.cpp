@@ -10,7 +10,10 @@ Point cross(const Point &a, const Point &b)
 {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double norm(const Point &a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+double norm(const Point &a)
+{
+  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
 } // namespace internal
 
 HexNodes cell_nodes(const Mesh &mesh, const int cell)
@@ -56,7 +59,8 @@ double hex_jacobian_determinant(const HexNodes &x, const Point &xi)
 
 const std::array<Point, 8> &hex_gauss_points()
 {
-  static const std::array<Point, 8> points = [] {
+  static const std::array<Point, 8> points = []
+  {
     const double g = 1.0 / std::sqrt(3.0);
     std::array<Point, 8> p;
     for (int i = 0; i < 8; ++i)

@@ -19,8 +19,8 @@ using Point = std::array<double, 3>;
 /// outward normal.
 inline constexpr int n_hex_nodes = 8;
 inline constexpr int n_hex_faces = 6;
-inline constexpr int hex_face_nodes[n_hex_faces][4] = {
-  {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+inline constexpr int hex_face_nodes[n_hex_faces][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                                       {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
 
 /// A side set: cell faces, as Exodus stores it (face = local face 0..5).
 struct SideSet

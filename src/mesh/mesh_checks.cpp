@@ -3,6 +3,8 @@
 #include "base/errors.hpp"
 #include "mesh/hex_geometry.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace kiln
@@ -28,18 +30,25 @@ void check_mesh(const Mesh &mesh, const std::string &where)
   for (const auto &s : mesh.side_sets)
     for (int k = 0; k < s.n_sides(); ++k)
       KILN_CHECK_INPUT(s.cells[k] >= 0 && s.cells[k] < mesh.n_cells() && s.faces[k] >= 0 &&
-                         s.faces[k] < n_hex_faces,
+                           s.faces[k] < n_hex_faces,
                        where,
                        "side set " << s.id << " entry " << k + 1 << " (cell " << s.cells[k] + 1
-                                   << ", side " << s.faces[k] + 1
-                                   << ") is not a face of the mesh");
+                                   << ", side " << s.faces[k] + 1 << ") is not a face of the mesh");
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     const HexNodes x = cell_nodes(mesh, c);
+    // A flat cell's determinant is round-off of either sign: count as non-positive anything
+    // below 1e-12 (d/2)^3, d the largest distance from node 0 (det ~ (h/2)^3 for a cube of side h).
+    double d2 = 0.0;
+    for (int i = 1; i < n_hex_nodes; ++i)
+      d2 = std::max(d2, (x[i][0] - x[0][0]) * (x[i][0] - x[0][0]) +
+                            (x[i][1] - x[0][1]) * (x[i][1] - x[0][1]) +
+                            (x[i][2] - x[0][2]) * (x[i][2] - x[0][2]));
+    const double half = 0.5 * std::sqrt(d2), det_tolerance = 1e-12 * half * half * half;
     for (const Point &xi : hex_gauss_points())
     {
       const double det = hex_jacobian_determinant(x, xi);
-      KILN_CHECK_INPUT(det > 0.0, where,
+      KILN_CHECK_INPUT(det > det_tolerance, where,
                        "cell " << c + 1 << " (block " << mesh.block_id[c]
                                << ") has a non-positive Jacobian determinant " << det
                                << " at a quadrature point: it is inverted or degenerate, or "

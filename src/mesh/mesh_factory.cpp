@@ -13,15 +13,16 @@ namespace kiln
 Teuchos::ParameterList MeshFactory::valid_parameters()
 {
   Teuchos::ParameterList p("Mesh");
-  p.set("Type", "Box", "\"Box\": the generated block (sublist Box); \"Exodus\": an Exodus II "
-                       "file (sublist Exodus)",
+  p.set("Type", "Box",
+        "\"Box\": the generated block (sublist Box); \"Exodus\": an Exodus II "
+        "file (sublist Exodus)",
         choice_validator({"Box", "Exodus"}));
   p.set("Gap Side Set", 10,
         "id of the interior side set at which the mesh is split into a gap of zero width; "
         "0 for no gap [-]",
         nonnegative_int_validator());
   p.sublist("Box", false, "the generated block; see BoxMeshGenerator")
-    .setParameters(BoxMeshGenerator::valid_parameters());
+      .setParameters(BoxMeshGenerator::valid_parameters());
   Teuchos::ParameterList &exodus = p.sublist("Exodus", false, "an Exodus II mesh (Cubit)");
   exodus.set("File", "",
              "path of the Exodus II file, relative to the working directory; required when "
@@ -41,8 +42,7 @@ MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string
   exodus_file_ = mesh_file.empty() ? params.sublist("Exodus").get<std::string>("File") : mesh_file;
   scale_ = params.sublist("Exodus").get<double>("Coordinate Scale");
   gap_side_set_ = params.get<int>("Gap Side Set");
-  KILN_CHECK_INPUT(type_ != "Exodus" || !exodus_file_.empty(),
-                   where_ + "/Exodus/\"File\"",
+  KILN_CHECK_INPUT(type_ != "Exodus" || !exodus_file_.empty(), where_ + "/Exodus/\"File\"",
                    "missing: Type = \"Exodus\" needs the path of the mesh file; set "
                    "Mesh/Exodus/\"File\" or run kiln --mesh FILE");
 }
@@ -51,9 +51,10 @@ Mesh MeshFactory::build() const
 {
   KILN_CHECK_INPUT(type_ != "Exodus" || std::filesystem::exists(exodus_file_),
                    where_ + "/Exodus/\"File\"",
-                   "the mesh file \"" << exodus_file_ << "\" does not exist (relative paths start "
-                                      "from the working directory "
-                                   << std::filesystem::current_path().string() << ")");
+                   "the mesh file \"" << exodus_file_
+                                      << "\" does not exist (relative paths start "
+                                         "from the working directory "
+                                      << std::filesystem::current_path().string() << ")");
   Mesh mesh;
   if (type_ == "Box")
     mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate();

@@ -25,8 +25,8 @@ std::vector<int> metis_kway(const Mesh &mesh, const int n_parts)
   }
   idx_t ne = mesh.n_cells(), nn = mesh.n_nodes(), ncommon = 4, numflag = 0;
   idx_t *xadj = nullptr, *adjncy = nullptr;
-  int status = METIS_MeshToDual(&ne, &nn, eptr.data(), eind.data(), &ncommon, &numflag, &xadj,
-                                &adjncy);
+  int status =
+      METIS_MeshToDual(&ne, &nn, eptr.data(), eind.data(), &ncommon, &numflag, &xadj, &adjncy);
   KILN_CHECK_INPUT(status == METIS_OK, "", "METIS_MeshToDual failed with status " << status);
 
   idx_t options[METIS_NOPTIONS];
@@ -76,9 +76,9 @@ std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &com
     ++cells_per_rank[r];
   const auto empty = std::find(cells_per_rank.begin(), cells_per_rank.end(), 0);
   KILN_CHECK_INPUT(empty == cells_per_rank.end(), where,
-                   "METIS left rank " << empty - cells_per_rank.begin()
-                                      << " without cells (" << mesh.n_cells() << " cells on "
-                                      << n_ranks << " ranks); run on fewer ranks");
+                   "METIS left rank " << empty - cells_per_rank.begin() << " without cells ("
+                                      << mesh.n_cells() << " cells on " << n_ranks
+                                      << " ranks); run on fewer ranks");
   return cell_rank;
 }
 

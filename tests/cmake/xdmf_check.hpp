@@ -168,7 +168,7 @@ struct XdmfChecker
       return fail("DataItem \"" + text + "\" states Dimensions \"" + xdmf_dims_string(dims) +
                   "\" but the dataset is " + xdmf_dims_string(actual));
     const std::string number_type =
-      item.hasAttribute("NumberType") ? item.getAttribute("NumberType") : "Float";
+        item.hasAttribute("NumberType") ? item.getAttribute("NumberType") : "Float";
     const bool float_type = number_type == "Float";
     const bool int_type = number_type == "Int" || number_type == "UInt";
     if ((float_type && type_class != H5T_FLOAT) || (int_type && type_class != H5T_INTEGER) ||
@@ -176,7 +176,7 @@ struct XdmfChecker
       return fail("DataItem \"" + text + "\": NumberType \"" + number_type +
                   "\" does not match the dataset's type");
     const std::string precision =
-      item.hasAttribute("Precision") ? item.getAttribute("Precision") : "4";
+        item.hasAttribute("Precision") ? item.getAttribute("Precision") : "4";
     if (precision != std::to_string(type_size))
       return fail("DataItem \"" + text + "\": Precision " + precision + " but the dataset has " +
                   std::to_string(type_size) + "-byte values");
@@ -197,7 +197,7 @@ struct XdmfChecker
   bool check_uniform_grid(const Teuchos::XMLObject &grid, const int step)
   {
     const std::string grid_name =
-      "Grid \"" + (grid.hasAttribute("Name") ? grid.getAttribute("Name") : std::string()) + "\"";
+        "Grid \"" + (grid.hasAttribute("Name") ? grid.getAttribute("Name") : std::string()) + "\"";
     hsize_t n_cells = 0;
     hsize_t n_nodes = 0;
     bool has_topology = false;
@@ -226,7 +226,7 @@ struct XdmfChecker
         if (!check_only_data_item(child, dims, path))
           return false;
         const std::string type =
-          child.hasAttribute("GeometryType") ? child.getAttribute("GeometryType") : "XYZ";
+            child.hasAttribute("GeometryType") ? child.getAttribute("GeometryType") : "XYZ";
         if (type != "XYZ" || dims.size() != 2 || dims[1] != 3)
           return fail(grid_name + ": Geometry must be XYZ with n x 3 coordinates");
         n_nodes = dims[0];
@@ -241,8 +241,8 @@ struct XdmfChecker
       if (child.getTag() != "Attribute")
         continue;
       const std::string name =
-        grid_name + " Attribute \"" +
-        (child.hasAttribute("Name") ? child.getAttribute("Name") : std::string()) + "\"";
+          grid_name + " Attribute \"" +
+          (child.hasAttribute("Name") ? child.getAttribute("Name") : std::string()) + "\"";
       if (!check_only_data_item(child, dims, path))
         return false;
       paths.push_back(path);
@@ -251,10 +251,9 @@ struct XdmfChecker
         return fail(name + ": Center must be Node or Cell");
       if (dims[0] != (center == "Node" ? n_nodes : n_cells))
         return fail(name + ": " + std::to_string(dims[0]) + " rows, but the grid has " +
-                    std::to_string(center == "Node" ? n_nodes : n_cells) + " " + center +
-                    "s");
+                    std::to_string(center == "Node" ? n_nodes : n_cells) + " " + center + "s");
       const std::string type =
-        child.hasAttribute("AttributeType") ? child.getAttribute("AttributeType") : "Scalar";
+          child.hasAttribute("AttributeType") ? child.getAttribute("AttributeType") : "Scalar";
       const hsize_t n_components = dims.size() > 1 ? dims[1] : 1;
       if ((type == "Scalar" && n_components != 1) || (type == "Vector" && n_components != 3) ||
           (type == "Tensor6" && n_components != 6) || (type == "Tensor" && n_components != 9))
@@ -283,8 +282,8 @@ struct XdmfChecker
         return fail(grid_name + " (member " + std::to_string(step) + ") refers to " + p);
     // The step's group is in the file the topology refers to.
     const int topology = grid.findFirstChild("Topology");
-    const auto &item = grid.getChild(topology).getChild(
-      grid.getChild(topology).findFirstChild("DataItem"));
+    const auto &item =
+        grid.getChild(topology).getChild(grid.getChild(topology).findFirstChild("DataItem"));
     std::string text;
     for (int i = 0; i < item.numContentLines(); ++i)
       text += item.getContentLine(i);
@@ -310,14 +309,14 @@ struct XdmfChecker
 
   bool check_grid(const Teuchos::XMLObject &grid)
   {
-    const std::string type = grid.hasAttribute("GridType") ? grid.getAttribute("GridType")
-                                                           : "Uniform";
+    const std::string type =
+        grid.hasAttribute("GridType") ? grid.getAttribute("GridType") : "Uniform";
     if (type == "Uniform")
       return check_uniform_grid(grid, -1);
     if (type != "Collection")
       return fail("GridType \"" + type + "\" is not checked");
     const bool temporal =
-      grid.hasAttribute("CollectionType") && grid.getAttribute("CollectionType") == "Temporal";
+        grid.hasAttribute("CollectionType") && grid.getAttribute("CollectionType") == "Temporal";
     int member = 0;
     for (int c = 0; c < grid.numChildren(); ++c)
     {
@@ -325,7 +324,7 @@ struct XdmfChecker
       if (child.getTag() != "Grid")
         continue;
       const std::string child_type =
-        child.hasAttribute("GridType") ? child.getAttribute("GridType") : "Uniform";
+          child.hasAttribute("GridType") ? child.getAttribute("GridType") : "Uniform";
       if (temporal && child_type != "Uniform")
         return fail("a Temporal collection may only hold Uniform grids here");
       if (!(temporal ? check_uniform_grid(child, member) : check_grid(child)))

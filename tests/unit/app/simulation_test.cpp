@@ -55,7 +55,8 @@ TEST(Simulation, WriteMeshRoundTrip)
 TEST(Simulation, ExampleInputsValidate)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  for (const char *name : {"contact-box-close.xml", "contact-box-open.xml", "contact-box-exodus.xml"})
+  for (const char *name :
+       {"contact-box-close.xml", "contact-box-open.xml", "contact-box-exodus.xml"})
   {
     const std::string deck = inputs + name;
     EXPECT_NO_THROW(kiln::Simulation(kiln::read_input(deck, *comm), deck, comm)) << deck;

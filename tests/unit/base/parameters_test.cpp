@@ -72,7 +72,8 @@ TEST(Parameters, NestedPathAndValidator)
 {
   Teuchos::ParameterList user;
   user.sublist("Inner").set("Angle", 400.0);
-  EXPECT_THAT(error_of(user), HasSubstr("in.xml: Top/Inner/\"Angle\" = 400: must be in [-360, 360]"));
+  EXPECT_THAT(error_of(user),
+              HasSubstr("in.xml: Top/Inner/\"Angle\" = 400: must be in [-360, 360]"));
   Teuchos::ParameterList sizes;
   sizes.sublist("Inner").set("Sizes", Teuchos::Array<double>(2, 1.0));
   EXPECT_THAT(error_of(sizes), HasSubstr("must have exactly 3 entries, each > 0"));

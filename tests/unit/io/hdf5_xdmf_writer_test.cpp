@@ -54,9 +54,8 @@ int size_of(const MPI_Comm comm)
 Mesh box_mesh()
 {
   Mesh mesh;
-  const auto node = [](const int i, const int j, const int k) {
-    return i + (nx + 1) * (j + (ny + 1) * k);
-  };
+  const auto node = [](const int i, const int j, const int k)
+  { return i + (nx + 1) * (j + (ny + 1) * k); };
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i)
@@ -102,9 +101,18 @@ Ownership make_ownership(const Mesh &mesh, const int rank,
 }
 
 // The field values, as functions of the step, the global id and the coordinates.
-double step_time(const int step) { return 0.5 + 1.25 * step; }
-double step_dt(const int step) { return 0.125 * (step + 1); }
-int step_cycle(const int step) { return 10 * step + 3; }
+double step_time(const int step)
+{
+  return 0.5 + 1.25 * step;
+}
+double step_dt(const int step)
+{
+  return 0.125 * (step + 1);
+}
+int step_cycle(const int step)
+{
+  return 10 * step + 3;
+}
 
 double temperature(const int step, const int node, const kiln::Point &x)
 {
@@ -127,7 +135,10 @@ double stress(const int step, const int cell, const int component)
   return 1e6 * cell + 10.0 * component - 0.5 * step;
 }
 
-bool same(const double a, const double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+bool same(const double a, const double b)
+{
+  return (std::isnan(a) && std::isnan(b)) || a == b;
+}
 
 std::string shared_test_folder(const MPI_Comm comm, const std::string &name)
 {
@@ -136,7 +147,7 @@ std::string shared_test_folder(const MPI_Comm comm, const std::string &name)
   {
     folder = (std::filesystem::temp_directory_path() /
               ("kiln_" + name + "_" + std::to_string(::getpid())))
-               .string();
+                 .string();
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
   }
@@ -204,8 +215,7 @@ std::vector<T> read_all(const hid_t file, const std::string &path, const hid_t m
     n *= d;
   std::vector<T> values(n);
   const hid_t dataset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  EXPECT_GE(H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0)
-    << path;
+  EXPECT_GE(H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0) << path;
   H5Dclose(dataset);
   return values;
 }
@@ -284,12 +294,12 @@ void check_h5_contents(const std::string &h5_path, const Mesh &mesh,
       EXPECT_PRED2(same, t[n], temperature(s, n, p)) << "step " << s << " node " << n;
       for (int d = 0; d < 3; ++d)
         EXPECT_PRED2(same, u[3 * n + d], displacement(s, n, p, d))
-          << "step " << s << " node " << n << " component " << d;
+            << "step " << s << " node " << n << " component " << d;
     }
     for (hsize_t c = 0; c < n_cells; ++c)
       for (int v = 0; v < 6; ++v)
         EXPECT_PRED2(same, sigma[6 * c + v], stress(s, c, v))
-          << "step " << s << " cell " << c << " component " << v;
+            << "step " << s << " cell " << c << " component " << v;
   }
   H5G_info_t steps_info{};
   EXPECT_GE(H5Gget_info_by_name(file, "/steps", &steps_info, H5P_DEFAULT), 0);
@@ -324,7 +334,7 @@ void write_and_check(const std::string &name, const std::function<int(int, int)>
 
   write_results(comm, base, mesh, o);
   EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0); // nothing left open
-  MPI_Barrier(comm); // the writer is closed on every rank
+  MPI_Barrier(comm);                                        // the writer is closed on every rank
   if (rank == 0)
   {
     check_h5_contents(base + ".h5", mesh, o.cell_rank);
@@ -354,7 +364,7 @@ TEST(Hdf5XdmfWriter, XdmfCheckerFindsAWrongDimension)
   const MPI_Comm comm = MPI_COMM_WORLD;
   const Mesh mesh = box_mesh();
   const Ownership o =
-    make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
+      make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
   const std::string folder = shared_test_folder(comm, "h5_bad_xdmf");
   write_results(comm, folder + "/out", mesh, o);
   MPI_Barrier(comm);
@@ -382,7 +392,7 @@ TEST(Hdf5XdmfWriter, MissingFolderIsAnInputErrorOnEveryRank)
   const MPI_Comm comm = MPI_COMM_WORLD;
   const Mesh mesh = box_mesh();
   const Ownership o =
-    make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
+      make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
   const std::string base = "/nonexistent_kiln_folder/sub/out";
   std::string message;
   try

@@ -30,13 +30,13 @@ std::string error_of(const std::string &xml)
 
 TEST(InputReader, ParsesNumbersAndArrays)
 {
-  const auto p = kiln::parse_input(
-    "<ParameterList name=\"Kiln\"><ParameterList name=\"A\">"
-    "<Parameter name=\"E\" type=\"double\" value=\" 6.9e10 \"/>"
-    "<Parameter name=\"N\" type=\"int\" value=\"4\"/>"
-    "<Parameter name=\"V\" type=\"Array(double)\" value=\"{1, -2.5e-3, 3}\"/>"
-    "</ParameterList></ParameterList>",
-    "t.xml");
+  const auto p =
+      kiln::parse_input("<ParameterList name=\"Kiln\"><ParameterList name=\"A\">"
+                        "<Parameter name=\"E\" type=\"double\" value=\" 6.9e10 \"/>"
+                        "<Parameter name=\"N\" type=\"int\" value=\"4\"/>"
+                        "<Parameter name=\"V\" type=\"Array(double)\" value=\"{1, -2.5e-3, 3}\"/>"
+                        "</ParameterList></ParameterList>",
+                        "t.xml");
   EXPECT_EQ(p.sublist("A").get<double>("E"), 6.9e10);
   EXPECT_EQ(p.sublist("A").get<int>("N"), 4);
   EXPECT_EQ(p.sublist("A").get<Teuchos::Array<double>>("V")[1], -2.5e-3);

@@ -31,7 +31,7 @@ class TempFile
 {
 public:
   explicit TempFile(const std::string &tag)
-    : path_("kiln-exodus-io-test-" + tag + "-" + std::to_string(::getpid()) + ".exo")
+      : path_("kiln-exodus-io-test-" + tag + "-" + std::to_string(::getpid()) + ".exo")
   {
   }
   ~TempFile() { std::remove(path_.c_str()); }
@@ -45,8 +45,8 @@ private:
 
 double distance(const kiln::Point &a, const kiln::Point &b)
 {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1])
-                   + (a[2] - b[2]) * (a[2] - b[2]));
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
 }
 
 /// Checks what both reference meshes share: sizes, blocks, side sets, cube extent, edge lengths.
@@ -91,7 +91,7 @@ void expect_contact_box_mesh(const Mesh &mesh)
       EXPECT_NEAR(distance(mesh.coordinates[mesh.connectivity[c][e[0]]],
                            mesh.coordinates[mesh.connectivity[c][e[1]]]),
                   cm, 1e-14)
-        << "cell " << c << " edge " << e[0] << "-" << e[1];
+          << "cell " << c << " edge " << e[0] << "-" << e[1];
 }
 
 TEST(ExodusIo, ReadsRotatedCube)
@@ -113,7 +113,7 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
     int axis;
     double value;
   };
-  const Plane planes[] = {{1, 0, -half_side}, {2, 0, half_side}, {3, 1, -half_side},
+  const Plane planes[] = {{1, 0, -half_side}, {2, 0, half_side},  {3, 1, -half_side},
                           {4, 1, half_side},  {5, 2, -half_side}, {6, 2, half_side},
                           {10, 0, 0.0}};
   for (const Plane &plane : planes)
@@ -125,7 +125,7 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
       const int *face = kiln::hex_face_nodes[set.faces[i]];
       for (int k = 0; k < 4; ++k)
         EXPECT_NEAR(mesh.coordinates[cell[face[k]]][plane.axis], plane.value, 1e-15)
-          << "side set " << plane.id << " entry " << i;
+            << "side set " << plane.id << " entry " << i;
       if (plane.id == 10)
         continue;
       // The face table's right-hand rule gives the outward normal: +-axis direction.
@@ -137,7 +137,7 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
       const double normal[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
                                 a[0] * b[1] - a[1] * b[0]};
       EXPECT_GT(normal[plane.axis] * plane.value, 0.0)
-        << "side set " << plane.id << " entry " << i << ": normal not outward";
+          << "side set " << plane.id << " entry " << i << ": normal not outward";
     }
   }
   // Block 1 is the x < 0 half.
@@ -164,7 +164,7 @@ TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
     for (int d = 0; d < 3; ++d)
       EXPECT_NEAR(back.coordinates[i][d], mesh.coordinates[i][d],
                   1e-15 * std::abs(mesh.coordinates[i][d]))
-        << "node " << i;
+          << "node " << i;
   EXPECT_EQ(back.connectivity, mesh.connectivity);
   EXPECT_EQ(back.block_id, mesh.block_id);
   ASSERT_EQ(back.side_sets.size(), mesh.side_sets.size());
