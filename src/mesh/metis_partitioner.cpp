@@ -71,14 +71,14 @@ std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &com
   check_collectively(comm, error.empty(), where, error);
   Teuchos::broadcast(comm, 0, mesh.n_cells(), cell_rank.data());
 
+  // METIS may leave a part empty on a tiny mesh (2 cells on 2 ranks): then
+  // split the cells in id order into contiguous, nearly equal parts.
   std::vector<int> cells_per_rank(n_ranks, 0);
   for (const int r : cell_rank)
     ++cells_per_rank[r];
-  const auto empty = std::find(cells_per_rank.begin(), cells_per_rank.end(), 0);
-  KILN_CHECK_INPUT(empty == cells_per_rank.end(), where,
-                   "METIS left rank " << empty - cells_per_rank.begin() << " without cells ("
-                                      << mesh.n_cells() << " cells on " << n_ranks
-                                      << " ranks); run on fewer ranks");
+  if (std::find(cells_per_rank.begin(), cells_per_rank.end(), 0) != cells_per_rank.end())
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      cell_rank[c] = static_cast<int>(static_cast<long long>(c) * n_ranks / mesh.n_cells());
   return cell_rank;
 }
 

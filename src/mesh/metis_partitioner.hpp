@@ -10,8 +10,10 @@ namespace kiln
 {
 /// The owning rank of every cell, the same on every rank and for every run
 /// (METIS with a fixed seed on the dual graph: cells sharing a face, across a
-/// split gap too, so the gap's two sides tend to share a rank). Throws
-/// InputError if the mesh has fewer cells than ranks or if a rank gets no cell.
+/// split gap too, so the gap's two sides tend to share a rank). If METIS
+/// leaves a rank empty (tiny meshes), the cells are split in id order into
+/// contiguous parts instead. Throws InputError if the mesh has fewer cells
+/// than ranks.
 std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &comm,
                                  const std::string &where);
 

@@ -1,0 +1,134 @@
+// Tests src/mesh/mesh_checks.cpp: a good mesh passes; inverted cells, unused nodes, node ids and
+// side-set entries out of range are InputErrors naming the entity.
+// KILN_TEST_NP: 1
+#include "mesh/mesh_checks.hpp"
+
+#include "base/errors.hpp"
+#include "mesh/box_mesh_generator.hpp"
+#include "mesh/gap_splitter.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+namespace
+{
+using kiln::Mesh;
+using testing::HasSubstr;
+
+/// 4 x 4 x 4 rotated box, 125 nodes, 64 cells (32 per block).
+Mesh box()
+{
+  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
+  p.set("Phi", 45.0);
+  p.set("Theta", -30.0);
+  return kiln::BoxMeshGenerator(p, "test/Box").generate();
+}
+
+std::string check_error(const Mesh &mesh)
+{
+  try
+  {
+    kiln::check_mesh(mesh, "mesh.exo");
+  }
+  catch (const kiln::InputError &e)
+  {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return "";
+}
+
+TEST(MeshChecks, GoodMeshesPass)
+{
+  Mesh mesh = box();
+  EXPECT_NO_THROW(kiln::check_mesh(mesh, "mesh.exo"));
+  kiln::split_gap(mesh, 10, "test");
+  EXPECT_NO_THROW(kiln::check_mesh(mesh, "mesh.exo"));
+}
+
+TEST(MeshChecks, MirroredCellIsRejected)
+{
+  // Cell 40 (0-based; block 2) with its bottom and top faces exchanged: a reflection, so the
+  // Jacobian determinant is negative everywhere.
+  Mesh mesh = box();
+  auto &cell = mesh.connectivity[40];
+  for (int i = 0; i < 4; ++i)
+    std::swap(cell[i], cell[i + 4]);
+  const std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("mesh.exo"));
+  EXPECT_THAT(message, HasSubstr("cell 41 (block 2)"));
+  EXPECT_THAT(message, HasSubstr("Jacobian"));
+}
+
+TEST(MeshChecks, CellWithTwoNodesSwappedIsRejected)
+{
+  // Nodes 0 and 1 exchanged: near the edge 0-1 the map is folded; for a unit cube det(J) is
+  // about -0.0305 at the two Gauss points nearest that edge (computed by hand with the HEX8
+  // shape functions), while the other six stay positive.
+  Mesh mesh = box();
+  std::swap(mesh.connectivity[5][0], mesh.connectivity[5][1]);
+  const std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("cell 6 (block 1)"));
+  EXPECT_THAT(message, HasSubstr("Jacobian"));
+}
+
+TEST(MeshChecks, FlatCellIsRejected)
+{
+  // The top face moved onto the bottom one: zero volume, det(J) = 0.
+  Mesh mesh = box();
+  auto &cell = mesh.connectivity[0];
+  for (int i = 0; i < 4; ++i)
+    mesh.coordinates[cell[i + 4]] = mesh.coordinates[cell[i]];
+  const std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("cell 1 (block 1)"));
+  EXPECT_THAT(message, HasSubstr("non-positive Jacobian"));
+}
+
+TEST(MeshChecks, UnusedNodeIsRejected)
+{
+  Mesh mesh = box();
+  mesh.coordinates.push_back({1.0, 1.0, 1.0});
+  const std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("mesh.exo"));
+  EXPECT_THAT(message, HasSubstr("node 126 belongs to no cell"));
+}
+
+TEST(MeshChecks, NodeIdOutOfRangeIsRejected)
+{
+  Mesh mesh = box();
+  mesh.connectivity[3][2] = 125; // one past the last node (0-based)
+  const std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("mesh.exo"));
+  EXPECT_THAT(message, HasSubstr("cell 4 (block 1) refers to node 126"));
+  EXPECT_THAT(message, HasSubstr("125 nodes"));
+
+  Mesh negative = box();
+  negative.connectivity[63][7] = -1;
+  EXPECT_THAT(check_error(negative), HasSubstr("cell 64 (block 2) refers to node 0"));
+}
+
+TEST(MeshChecks, SideSetEntryOutOfRangeIsRejected)
+{
+  Mesh mesh = box();
+  mesh.side_sets[2].cells[1] = 64;
+  std::string message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("side set 3 entry 2 (cell 65"));
+  EXPECT_THAT(message, HasSubstr("is not a face of the mesh"));
+
+  mesh = box();
+  mesh.side_sets[6].faces[0] = 6;
+  message = check_error(mesh);
+  EXPECT_THAT(message, HasSubstr("side set 10 entry 1"));
+  EXPECT_THAT(message, HasSubstr("side 7"));
+}
+
+TEST(MeshChecks, EmptyMeshIsRejected)
+{
+  EXPECT_THAT(check_error(Mesh{}), HasSubstr("no cells"));
+}
+} // namespace
