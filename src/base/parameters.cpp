@@ -93,6 +93,13 @@ std::string joined(const std::vector<std::string> &names)
   return s;
 }
 
+const std::string pass_through_marker = " [passed as is to ";
+
+bool is_pass_through(const Teuchos::ParameterEntry &valid_entry)
+{
+  return valid_entry.docString().find(pass_through_marker) != std::string::npos;
+}
+
 void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
                 const std::string &where, const std::string &path)
 {
@@ -121,6 +128,8 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
       KILN_CHECK_INPUT(entry.isList(), at,
                        "expected a sublist (<ParameterList name=\"" << name
                                                                     << "\">), got a parameter");
+      if (is_pass_through(*valid_entry))
+        continue;
       check_list(Teuchos::getValue<Teuchos::ParameterList>(entry),
                  Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), where, path + "/" + name);
       continue;
@@ -147,7 +156,32 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
     }
   }
 }
+/// Adds every entry of `valid` missing from `list` (recursively; in
+/// pass-through sublists too, so Kiln's defaults for NOX and Stratimikos
+/// apply unless the input overrides them).
+void set_defaults(Teuchos::ParameterList &list, const Teuchos::ParameterList &valid)
+{
+  for (auto it = valid.begin(); it != valid.end(); ++it)
+  {
+    const std::string &name = valid.name(it);
+    const Teuchos::ParameterEntry &entry = valid.entry(it);
+    if (entry.isList())
+      set_defaults(list.sublist(name, false, entry.docString()),
+                   Teuchos::getValue<Teuchos::ParameterList>(entry));
+    else if (!list.isParameter(name))
+      list.setEntry(name, entry);
+  }
+}
 } // namespace internal
+
+void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string &name,
+                              const std::string &package, const std::string &doc,
+                              const Teuchos::ParameterList &defaults)
+{
+  parent
+      .sublist(name, false, doc + internal::pass_through_marker + package + ", which validates it]")
+      .setParameters(defaults);
+}
 
 std::string parameter_path(const std::string &where, const std::string &path,
                            const std::string &name)
@@ -179,8 +213,7 @@ Teuchos::ParameterList validated(const Teuchos::ParameterList &user,
 {
   internal::check_list(user, valid, where, path);
   Teuchos::ParameterList result(user);
-  // Our own checks above are stricter and give better messages; this sets defaults.
-  result.validateParametersAndSetDefaults(valid);
+  internal::set_defaults(result, valid);
   return result;
 }
 

@@ -23,6 +23,13 @@ Teuchos::ParameterList validated(const Teuchos::ParameterList &user,
                                  const Teuchos::ParameterList &valid, const std::string &where,
                                  const std::string &path);
 
+/// Declares sublist `name` of `parent` whose content is handed as is to a
+/// Trilinos package (NOX, Stratimikos, MueLu), which validates it itself:
+/// kiln::validated() does not look inside. `defaults` are Kiln's defaults.
+void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string &name,
+                              const std::string &package, const std::string &doc,
+                              const Teuchos::ParameterList &defaults);
+
 /// `where: path/"name"`, the way every message names a parameter.
 std::string parameter_path(const std::string &where, const std::string &path,
                            const std::string &name);

@@ -114,3 +114,33 @@ TEST(Parameters, ClosestName)
   EXPECT_EQ(kiln::closest_name("Thetta", names), "Theta");
   EXPECT_EQ(kiln::closest_name("Temperature", names), "");
 }
+
+TEST(Parameters, PassThroughSublistIsNotCheckedButGetsDefaults)
+{
+  Teuchos::ParameterList valid = valid_list();
+  Teuchos::ParameterList package_defaults;
+  package_defaults.set("Solver Type", "GMRES");
+  package_defaults.sublist("Deep").set("Level", 2);
+  kiln::set_pass_through_sublist(valid, "Package", "SomePackage", "options of SomePackage",
+                                 package_defaults);
+
+  Teuchos::ParameterList user;
+  user.sublist("Package").set("Any Option The Package Knows", 3.5);
+  const auto p = kiln::validated(user, valid, "in.xml", "Top");
+  EXPECT_EQ(p.sublist("Package").get<double>("Any Option The Package Knows"), 3.5);
+  EXPECT_EQ(p.sublist("Package").get<std::string>("Solver Type"), "GMRES");
+  EXPECT_EQ(p.sublist("Package").sublist("Deep").get<int>("Level"), 2);
+
+  // Only its own content is free: the sublist's name is still checked.
+  Teuchos::ParameterList misspelled;
+  misspelled.sublist("Pakage");
+  try
+  {
+    kiln::validated(misspelled, valid, "in.xml", "Top");
+    FAIL() << "no error for a misspelled sublist";
+  }
+  catch (const kiln::InputError &e)
+  {
+    EXPECT_THAT(e.what(), HasSubstr("Did you mean \"Package\"?"));
+  }
+}
