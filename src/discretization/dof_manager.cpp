@@ -8,8 +8,6 @@
 
 namespace kiln
 {
-namespace internal
-{
 Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
                                  const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
@@ -17,11 +15,10 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
   return Teuchos::rcp(
       new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
 }
-} // namespace internal
 
 DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
-                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
-    : n_nodes_(mesh.n_nodes())
+                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const DofLayout layout)
+    : layout_(layout), n_nodes_(mesh.n_nodes())
 {
   const int rank = comm->getRank();
   node_owner_ = node_owners(mesh, cell_rank);
@@ -34,6 +31,16 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
       for (const int n : mesh.connectivity[c])
         touched[n] = 1;
     }
+  // Gap faces are assembled by the owner of their side-a cell: it needs the twins.
+  for (const GapFace &face : mesh.gap_faces)
+    if (cell_rank[face.cell_a] == rank)
+      for (const int n : face.node_b)
+        touched[n] = 1;
+  // The owner of a pair (the owner of its node_a) assembles it: it needs node_b.
+  if (layout_.contact)
+    for (const GapPair &p : mesh.gap_pairs)
+      if (node_owner_[p.node_a] == rank)
+        touched[p.node_b] = 1;
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {
     if (node_owner_[n] == rank)
@@ -42,7 +49,8 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
       overlap_nodes_.push_back(n);
   }
   std::vector<int> overlap_pairs;
-  for (int k = 0; k < static_cast<int>(mesh.gap_pairs.size()); ++k)
+  const int n_pairs = layout_.contact ? static_cast<int>(mesh.gap_pairs.size()) : 0;
+  for (int k = 0; k < n_pairs; ++k)
   {
     const GapPair &p = mesh.gap_pairs[k];
     if (node_owner_[p.node_a] == rank)
@@ -56,18 +64,18 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
   const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs)
   {
     std::vector<GO> gids;
-    gids.reserve(nodes.size() * n_node_fields + pairs.size());
+    gids.reserve(nodes.size() * layout_.n_node_fields + pairs.size());
     for (const int n : nodes)
-      for (int f = 0; f < n_node_fields; ++f)
+      for (int f = 0; f < layout_.n_node_fields; ++f)
         gids.push_back(dof(n, static_cast<Field>(f)));
     for (const int k : pairs)
       gids.push_back(contact_dof(k));
     return gids;
   };
-  owned_node_map_ = internal::make_map(node_gids(owned_nodes_), comm);
-  overlap_node_map_ = internal::make_map(node_gids(overlap_nodes_), comm);
-  owned_dof_map_ = internal::make_map(dof_gids(owned_nodes_, owned_pairs_), comm);
-  overlap_dof_map_ = internal::make_map(dof_gids(overlap_nodes_, overlap_pairs), comm);
+  owned_node_map_ = make_map(node_gids(owned_nodes_), comm);
+  overlap_node_map_ = make_map(node_gids(overlap_nodes_), comm);
+  owned_dof_map_ = make_map(dof_gids(owned_nodes_, owned_pairs_), comm);
+  overlap_dof_map_ = make_map(dof_gids(overlap_nodes_, overlap_pairs), comm);
   dof_importer_ = Teuchos::rcp(new Tpetra::Import<>(owned_dof_map_, overlap_dof_map_));
   dof_exporter_ = Teuchos::rcp(new Tpetra::Export<>(overlap_dof_map_, owned_dof_map_));
 }

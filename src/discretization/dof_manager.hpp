@@ -3,11 +3,14 @@
 ///
 /// Cells are owned as the partitioner says; a node is owned by the lowest rank
 /// among its cells; a gap pair (and its contact unknown) by the owner of its
-/// node_a. Unknowns, by global id:
-///   4 n + f          node n, field f (0 temperature, 1-3 displacement x, y, z)
-///   4 N + k          the contact unknown of gap pair k (N = number of nodes)
+/// node_a. With F unknowns per node (DofLayout: 1 for heat conduction alone,
+/// 4 with displacement), unknowns by global id:
+///   F n + f          node n, field f (0 temperature, 1-3 displacement x, y, z)
+///   F N + k          the contact unknown of gap pair k (N = number of nodes),
+///                    when the layout has contact
 /// Owned maps hold this rank's unknowns; overlap maps add those of every node
-/// (and pair) touched by its cells, for assembly and for gathering.
+/// (and pair) touched by its cells and by the gap faces whose side-a cell it
+/// owns, for assembly and for gathering.
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_Comm.hpp>
@@ -31,13 +34,25 @@ enum class Field : int
   uy = 2,
   uz = 3
 };
-inline constexpr int n_node_fields = 4;
+/// A Tpetra map holding `gids` on this rank (in this order).
+Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
+                                 const Teuchos::RCP<const Teuchos::Comm<int>> &comm);
+
+/// Which unknowns the system has.
+struct DofLayout
+{
+  int n_node_fields = 4; ///< 1: temperature; 4: temperature and displacement
+  bool contact = true;   ///< one contact unknown per gap pair
+};
 
 class DofManager
 {
 public:
   DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
-             const Teuchos::RCP<const Teuchos::Comm<int>> &comm);
+             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, DofLayout layout = {});
+
+  const DofLayout &layout() const { return layout_; }
+  int n_node_fields() const { return layout_.n_node_fields; }
 
   const std::vector<int> &owned_cells() const { return owned_cells_; }
   const std::vector<int> &owned_nodes() const { return owned_nodes_; }
@@ -47,9 +62,12 @@ public:
 
   GO dof(const int node, const Field f) const
   {
-    return static_cast<GO>(n_node_fields) * node + static_cast<int>(f);
+    return static_cast<GO>(layout_.n_node_fields) * node + static_cast<int>(f);
   }
-  GO contact_dof(const int pair) const { return static_cast<GO>(n_node_fields) * n_nodes_ + pair; }
+  GO contact_dof(const int pair) const
+  {
+    return static_cast<GO>(layout_.n_node_fields) * n_nodes_ + pair;
+  }
 
   Teuchos::RCP<const Map> owned_node_map() const { return owned_node_map_; }
   Teuchos::RCP<const Map> overlap_node_map() const { return overlap_node_map_; }
@@ -64,6 +82,7 @@ public:
   std::size_t n_owned_dofs() const;
 
 private:
+  DofLayout layout_;
   int n_nodes_;
   std::vector<int> owned_cells_;
   std::vector<int> owned_nodes_;

@@ -162,6 +162,7 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
     if (part[side_a.first] > part[side_b.first])
       std::swap(side_a, side_b);
     const auto areas = quad_nodal_areas(face_nodes(mesh, side_a.first, side_a.second));
+    GapFace gap_face{side_a.first, side_a.second, side_b.first, side_b.second, {-1, -1, -1, -1}};
     for (int i = 0; i < 4; ++i)
     {
       const int n = mesh.connectivity[side_a.first][hex_face_nodes[side_a.second][i]];
@@ -171,10 +172,12 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
                            << mesh.parent_node[n] + 1 << " of side set " << side_set_id
                            << "; Kiln splits a gap between two parts at each node");
       const int k = pair_of_twin.at(t->second);
+      gap_face.node_b[i] = t->second;
       mesh.gap_pairs[k].area += areas.area[i];
       for (int d = 0; d < 3; ++d)
         area_vector[k][d] += areas.area_vector[i][d];
     }
+    mesh.gap_faces.push_back(gap_face);
   }
   for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
   {

@@ -44,6 +44,17 @@ struct GapPair
   Point normal{0.0, 0.0, 0.0};
 };
 
+/// A cut face of the gap seen from side a, with the twins of its nodes:
+/// node_b[i] is the twin of the face's i-th node (hex_face_nodes order).
+struct GapFace
+{
+  int cell_a = -1;
+  int face_a = -1;
+  int cell_b = -1;
+  int face_b = -1;
+  std::array<int, 4> node_b{-1, -1, -1, -1};
+};
+
 struct Mesh
 {
   std::vector<Point> coordinates;               ///< per node [m]
@@ -54,6 +65,7 @@ struct Mesh
   // Filled by split_gap():
   int gap_side_set = 0;           ///< id of the side set the mesh was split at (0: none)
   std::vector<GapPair> gap_pairs; ///< in increasing node_a order
+  std::vector<GapFace> gap_faces; ///< the cut faces, seen from side a
   std::vector<int> parent_node;   ///< per node: the original node it copies (itself if not a twin)
 
   int n_nodes() const { return static_cast<int>(coordinates.size()); }

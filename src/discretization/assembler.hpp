@@ -1,0 +1,68 @@
+#pragma once
+/// Gathers and scatters between the owned system and element-local systems.
+///
+/// The sparsity graph is built once, on the overlap map: every unknown of a
+/// cell's nodes couples with every other, every unknown of a gap face's side-a
+/// nodes with those of its twins, and (with contact) each contact unknown with
+/// the unknowns of its pair's two nodes. A rank assembles its own cells and the
+/// gap faces whose side-a cell it owns into an overlap residual and matrix,
+/// then exports them (ADD) to the owned residual and Jacobian (DEVELOPERS.md:
+/// overlap-to-owned Export).
+#include "discretization/dof_manager.hpp"
+#include "discretization/local_system.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Tpetra_CrsGraph.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <vector>
+
+namespace kiln
+{
+class Assembler
+{
+public:
+  using Vector = Tpetra::Vector<>;
+  using Matrix = Tpetra::CrsMatrix<>;
+  using Graph = Tpetra::CrsGraph<>;
+
+  Assembler(const Mesh &mesh, const DofManager &dofs);
+
+  /// The owned Jacobian graph (fill-complete; domain and range: owned map).
+  Teuchos::RCP<const Graph> owned_graph() const { return owned_graph_; }
+
+  /// The overlap copy of an owned vector (Import); ghosts included.
+  void gather(const Vector &owned, Vector &overlap) const;
+  Teuchos::RCP<Vector> make_overlap_vector() const;
+
+  /// Starts an assembly: zeroes the overlap residual and/or matrix.
+  void begin(bool residual, bool jacobian);
+  /// Adds a local system whose local index k is the unknown with overlap
+  /// local id lids[k] (see cell_lids, gap_face_lids).
+  void add(const std::vector<LO> &lids, const LocalSystem &local);
+  /// Exports to the owned residual f and/or Jacobian J (J: built on
+  /// owned_graph(), fill-complete on entry and on exit).
+  void finish(Vector *f, Matrix *J);
+
+  /// Overlap local ids of a cell's unknowns (node-major, n_node_fields each).
+  std::vector<LO> cell_lids(int cell) const;
+  /// Overlap local ids of a gap face's 4 side-a nodes then its 4 twins.
+  std::vector<LO> gap_face_lids(int gap_face) const;
+  /// Overlap local id of an unknown.
+  LO lid(GO gid) const;
+
+private:
+  const Mesh &mesh_;
+  const DofManager &dofs_;
+  Teuchos::RCP<Graph> overlap_graph_;
+  Teuchos::RCP<Graph> owned_graph_;
+  Teuchos::RCP<Matrix> overlap_matrix_;
+  Teuchos::RCP<Graph> ghost_graph_;
+  Teuchos::RCP<Matrix> ghost_matrix_;
+  Teuchos::RCP<const Tpetra::Export<>> ghost_exporter_;
+  Teuchos::RCP<Vector> overlap_residual_;
+  bool assembling_residual_ = false;
+  bool assembling_jacobian_ = false;
+};
+} // namespace kiln

@@ -1,0 +1,43 @@
+#pragma once
+/// The local residual and Jacobian of one cell, face or gap-face pair:
+/// n_nodes local nodes with n_fields unknowns each; local index
+/// node * n_fields + field. Kernels add into it; the Assembler scatters it.
+#include <algorithm>
+#include <vector>
+
+namespace kiln
+{
+class LocalSystem
+{
+public:
+  LocalSystem(const int n_nodes, const int n_fields)
+      : n_nodes_(n_nodes), n_fields_(n_fields), residual_(n_nodes * n_fields, 0.0),
+        jacobian_(residual_.size() * residual_.size(), 0.0)
+  {
+  }
+  void clear()
+  {
+    std::fill(residual_.begin(), residual_.end(), 0.0);
+    std::fill(jacobian_.begin(), jacobian_.end(), 0.0);
+  }
+  int n_nodes() const { return n_nodes_; }
+  int n_fields() const { return n_fields_; }
+  int size() const { return static_cast<int>(residual_.size()); }
+  int index(const int field, const int node) const { return node * n_fields_ + field; }
+
+  double &residual(const int field, const int i) { return residual_[index(field, i)]; }
+  double &jacobian(const int field_i, const int i, const int field_j, const int j)
+  {
+    return jacobian_[index(field_i, i) * size() + index(field_j, j)];
+  }
+  const std::vector<double> &residual_values() const { return residual_; }
+  /// Row-major, size() x size().
+  const std::vector<double> &jacobian_values() const { return jacobian_; }
+
+private:
+  int n_nodes_;
+  int n_fields_;
+  std::vector<double> residual_;
+  std::vector<double> jacobian_;
+};
+} // namespace kiln

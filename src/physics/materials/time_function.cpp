@@ -1,0 +1,114 @@
+#include "physics/materials/time_function.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
+
+#include <algorithm>
+#include <iterator>
+
+namespace kiln
+{
+Teuchos::ParameterList TimeFunction::valid_parameters()
+{
+  Teuchos::ParameterList p("Time Function");
+  p.set("Type", "Constant",
+        "\"Constant\": f = Value; \"Smooth Step\": from Start Value at Start Time to End Value "
+        "at End Time, y0 + (y1 - y0) s^2 (3 - 2 s) in between; \"Table\": piecewise linear "
+        "through (Times, Values), constant beyond the ends",
+        choice_validator({"Constant", "Smooth Step", "Table"}));
+  p.set("Value", 0.0, "f for Type \"Constant\" [unit of the quantity: K for a temperature]");
+  p.set("Start Time", 0.0, "x0 for Type \"Smooth Step\": f = Start Value for t <= x0 [s]");
+  p.set("End Time", 1.0,
+        "x1 for Type \"Smooth Step\", > Start Time: f = End Value for t >= x1 [s]");
+  p.set("Start Value", 0.0,
+        "y0 for Type \"Smooth Step\" [unit of the quantity: K for a temperature]");
+  p.set("End Value", 0.0,
+        "y1 for Type \"Smooth Step\" [unit of the quantity: K for a temperature]");
+  p.set("Times", Teuchos::Array<double>(Teuchos::tuple(0.0)),
+        "for Type \"Table\": at least one time, strictly increasing [s]",
+        double_array_validator(0));
+  p.set("Values", Teuchos::Array<double>(Teuchos::tuple(0.0)),
+        "for Type \"Table\": f at each of Times, as many as Times [unit of the quantity: K for "
+        "a temperature]",
+        double_array_validator(0));
+  return p;
+}
+
+TimeFunction::TimeFunction(const Teuchos::ParameterList &p, const std::string &where)
+{
+  const std::string type = p.get<std::string>("Type");
+  if (type == "Constant")
+  {
+    kind_ = Kind::constant;
+    values_ = {p.get<double>("Value")};
+  }
+  else if (type == "Smooth Step")
+  {
+    kind_ = Kind::smooth_step;
+    times_ = {p.get<double>("Start Time"), p.get<double>("End Time")};
+    values_ = {p.get<double>("Start Value"), p.get<double>("End Value")};
+    KILN_CHECK_INPUT(times_[1] > times_[0], where + "/\"End Time\"",
+                     "= " << times_[1] << " must be > \"Start Time\" = " << times_[0]
+                          << "; for a sudden change use Type \"Table\" with two close times");
+  }
+  else
+  {
+    kind_ = Kind::table;
+    const auto &times = p.get<Teuchos::Array<double>>("Times");
+    const auto &values = p.get<Teuchos::Array<double>>("Values");
+    times_.assign(times.begin(), times.end());
+    values_.assign(values.begin(), values.end());
+    KILN_CHECK_INPUT(!times_.empty(), where + "/\"Times\"", "must have at least one entry");
+    KILN_CHECK_INPUT(values_.size() == times_.size(), where + "/\"Values\"",
+                     "has " << values_.size() << " entries but \"Times\" has " << times_.size()
+                            << "; give one value per time");
+    for (std::size_t i = 1; i < times_.size(); ++i)
+      KILN_CHECK_INPUT(times_[i] > times_[i - 1], where + "/\"Times\"",
+                       "must be strictly increasing, but entry " << i << " (" << times_[i]
+                                                                 << ") <= entry " << i - 1 << " ("
+                                                                 << times_[i - 1] << ")");
+  }
+}
+
+TimeFunction TimeFunction::constant(const double value)
+{
+  TimeFunction f;
+  f.kind_ = Kind::constant;
+  f.values_ = {value};
+  return f;
+}
+
+double TimeFunction::value(const double t) const
+{
+  switch (kind_)
+  {
+  case Kind::constant:
+    return values_[0];
+  case Kind::smooth_step:
+  {
+    if (t <= times_[0])
+      return values_[0];
+    if (t >= times_[1])
+      return values_[1];
+    const double s = (t - times_[0]) / (times_[1] - times_[0]);
+    return values_[0] + (values_[1] - values_[0]) * s * s * (3 - 2 * s);
+  }
+  case Kind::table:
+  {
+    if (t <= times_.front())
+      return values_.front();
+    if (t >= times_.back())
+      return values_.back();
+    // times_[k - 1] <= t < times_[k]
+    const auto k = static_cast<std::size_t>(
+        std::distance(times_.begin(), std::upper_bound(times_.begin(), times_.end(), t)));
+    const double w = (t - times_[k - 1]) / (times_[k] - times_[k - 1]);
+    return (1 - w) * values_[k - 1] + w * values_[k];
+  }
+  }
+  return values_[0];
+}
+} // namespace kiln

@@ -1,0 +1,93 @@
+#include "solvers/model_evaluator.hpp"
+
+#include "base/errors.hpp"
+
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
+
+namespace kiln
+{
+namespace internal
+{
+using Teuchos::RCP;
+using MEB = Thyra::ModelEvaluatorBase;
+using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
+
+ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
+                               RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory)
+    : problem_(std::move(problem)), W_factory_(std::move(W_factory)),
+      space_(Thyra::createVectorSpace<double>(problem_->solution_map()))
+{
+  MEB::InArgsSetup<double> in_args;
+  in_args.setModelEvalDescription(description());
+  in_args.setSupports(MEB::IN_ARG_x);
+  nominal_values_ = in_args;
+  const RCP<Thyra::VectorBase<double>> x0 = Thyra::createMember(space_);
+  Thyra::assign(x0.ptr(), 0.0);
+  nominal_values_.set_x(x0);
+}
+
+RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_x_space() const
+{
+  return space_;
+}
+RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_f_space() const
+{
+  return space_;
+}
+MEB::InArgs<double> ModelEvaluator::getNominalValues() const
+{
+  return nominal_values_;
+}
+
+MEB::InArgs<double> ModelEvaluator::createInArgs() const
+{
+  MEB::InArgsSetup<double> in_args;
+  in_args.setModelEvalDescription(description());
+  in_args.setSupports(MEB::IN_ARG_x);
+  return std::move(in_args);
+}
+
+MEB::OutArgs<double> ModelEvaluator::createOutArgsImpl() const
+{
+  MEB::OutArgsSetup<double> out_args;
+  out_args.setModelEvalDescription(description());
+  out_args.setSupports(MEB::OUT_ARG_f);
+  out_args.setSupports(MEB::OUT_ARG_W_op);
+  return std::move(out_args);
+}
+
+RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const
+{
+  const RCP<const NonlinearProblem::Graph> graph = problem_->jacobian_graph();
+  KILN_ASSERT(graph->isFillComplete(), "the Jacobian graph must be fill-complete");
+  const auto J = Teuchos::rcp(new NonlinearProblem::Matrix(graph));
+  J->fillComplete(graph->getDomainMap(), graph->getRangeMap());
+  return Thyra::tpetraLinearOp<double>(Thyra::createVectorSpace<double>(J->getRangeMap()),
+                                       Thyra::createVectorSpace<double>(J->getDomainMap()),
+                                       Teuchos::rcp_implicit_cast<Tpetra::Operator<>>(J));
+}
+
+RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ModelEvaluator::get_W_factory() const
+{
+  return W_factory_;
+}
+
+void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
+                                   const MEB::OutArgs<double> &out_args) const
+{
+  const RCP<const NonlinearProblem::Vector> x =
+      Extraction::getConstTpetraVector(in_args.get_x().assert_not_null());
+  const RCP<Thyra::VectorBase<double>> f_thyra = out_args.get_f();
+  const RCP<Thyra::LinearOpBase<double>> W_thyra = out_args.get_W_op();
+  RCP<NonlinearProblem::Vector> f;
+  if (!f_thyra.is_null())
+    f = Extraction::getTpetraVector(f_thyra);
+  RCP<NonlinearProblem::Matrix> J;
+  if (!W_thyra.is_null())
+    J = Teuchos::rcp_dynamic_cast<NonlinearProblem::Matrix>(Extraction::getTpetraOperator(W_thyra),
+                                                            true);
+  problem_->evaluate(*x, f.get(), J.get());
+}
+} // namespace internal
+} // namespace kiln

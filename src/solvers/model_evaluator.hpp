@@ -1,0 +1,41 @@
+#pragma once
+/// Private to src/solvers: the Thyra model evaluator NOX sees, over a
+/// NonlinearProblem. x and f live on solution_map(); W is a Tpetra::CrsMatrix
+/// on jacobian_graph() (static graph), wrapped by Thyra::tpetraLinearOp and
+/// solved with the Stratimikos factory given at construction.
+#include "solvers/nonlinear_problem.hpp"
+
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+#include <Thyra_StateFuncModelEvaluatorBase.hpp>
+
+namespace kiln
+{
+namespace internal
+{
+class ModelEvaluator final : public Thyra::StateFuncModelEvaluatorBase<double>
+{
+public:
+  ModelEvaluator(Teuchos::RCP<NonlinearProblem> problem,
+                 Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory);
+
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override;
+  Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override;
+  Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override;
+  /// A new matrix on the problem's Jacobian graph, fill-complete, zero.
+  Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override;
+
+private:
+  Thyra::ModelEvaluatorBase::OutArgs<double> createOutArgsImpl() const override;
+  /// f = F(x) and/or W = dF/dx through NonlinearProblem::evaluate.
+  void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double> &in_args,
+                     const Thyra::ModelEvaluatorBase::OutArgs<double> &out_args) const override;
+
+  Teuchos::RCP<NonlinearProblem> problem_;
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory_;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
+  Thyra::ModelEvaluatorBase::InArgs<double> nominal_values_;
+};
+} // namespace internal
+} // namespace kiln

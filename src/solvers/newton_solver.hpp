@@ -1,0 +1,49 @@
+#pragma once
+/// Newton's method by NOX on Tpetra objects, through Thyra (a model evaluator
+/// over the NonlinearProblem) and Stratimikos: Belos Krylov solvers with MueLu
+/// (or Ifpack2) preconditioning. The "Nonlinear Solver" and "Linear Solver"
+/// sublists of the input are handed to NOX and Stratimikos as they are, so
+/// every option those packages document can be set from the XML.
+#include "solvers/nonlinear_problem.hpp"
+
+#include <Teuchos_FancyOStream.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+
+namespace kiln
+{
+class NewtonSolver
+{
+public:
+  /// "Nonlinear Solver" (NOX, default: Line Search Based Newton with a full
+  /// step, convergence when ||F|| <= "Absolute Tolerance" or
+  /// ||F|| <= "Relative Tolerance" * ||F(x0)|| , at most "Maximum Iterations")
+  /// and "Linear Solver" (Stratimikos; default: Belos Pseudo Block GMRES with
+  /// MueLu, with a coarse solver that works on more than one rank in
+  /// Debian's Trilinos 13.2), each with documented defaults.
+  static Teuchos::ParameterList valid_parameters();
+
+  /// `params` is the validated "Solver" block.
+  NewtonSolver(const Teuchos::ParameterList &params, Teuchos::RCP<NonlinearProblem> problem,
+               Teuchos::RCP<Teuchos::FancyOStream> out);
+  ~NewtonSolver();
+
+  struct Result
+  {
+    bool converged = false;
+    int newton_iterations = 0;
+    int linear_iterations = 0; ///< summed over the Newton iterations
+    double initial_residual_norm = 0.0;
+    double final_residual_norm = 0.0;
+  };
+
+  /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on
+  /// return (converged or not). Collective.
+  Result solve(NonlinearProblem::Vector &x);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+} // namespace kiln

@@ -1,0 +1,460 @@
+// Tests src/solvers/newton_solver.cpp on a nonlinear diffusion problem,
+// -div(k(u) grad u) = f with k(u) = 1 + u^2, finite differences on a box of
+// n^d nodes (d = 1, 2, 3) split over the ranks, Dirichlet values on the box's
+// faces, f manufactured from a discrete u* so that F(u*) = 0 exactly: Newton
+// converges quadratically to u*, with the same iterates on one rank and on
+// all, and the solver's options and failure paths behave.
+// KILN_TEST_NP: 1 2
+#include "solvers/newton_solver.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using kiln::NewtonSolver;
+using kiln::NonlinearProblem;
+using Teuchos::RCP;
+using GO = NonlinearProblem::Map::global_ordinal_type;
+using LO = NonlinearProblem::Map::local_ordinal_type;
+
+/// F_i = sum over neighbours j of k((u_i + u_j)/2) (u_i - u_j) - b_i in the
+/// interior (the flux form scaled by h^2), F_i = u_i - u*_i on the faces;
+/// b = the interior operator applied to u*. Records ||F||_2 of every
+/// evaluation.
+class NonlinearDiffusion final : public NonlinearProblem
+{
+public:
+  NonlinearDiffusion(const RCP<const Teuchos::Comm<int>> &comm, const int n, const int dim)
+      : n_(n), dim_(dim)
+  {
+    GO n_total = 1;
+    for (int a = 0; a < dim; ++a)
+      n_total *= n;
+    map_ = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n_total), GO(0), comm));
+    const size_t n_owned = map_->getNodeNumElements();
+    auto graph = Teuchos::rcp(new Graph(map_, 2 * dim + 1));
+    b_.resize(n_owned);
+    coordinates_ = Teuchos::rcp(new Tpetra::MultiVector<double>(map_, 3));
+    for (size_t lid = 0; lid < n_owned; ++lid)
+    {
+      const GO gid = map_->getGlobalElement(static_cast<LO>(lid));
+      const std::array<double, 3> p = point(gid);
+      for (int a = 0; a < 3; ++a)
+        coordinates_->replaceLocalValue(static_cast<LO>(lid), a, p[a]);
+      std::vector<GO> columns{gid};
+      if (!on_boundary(gid))
+        for (const GO j : neighbours(gid))
+        {
+          columns.push_back(j);
+          b_[lid] += flux(u_star(gid), u_star(j));
+        }
+      graph->insertGlobalIndices(gid, Teuchos::arrayViewFromVector(columns));
+    }
+    graph->fillComplete();
+    graph_ = graph;
+  }
+
+  RCP<const Map> solution_map() const override { return map_; }
+  RCP<const Graph> jacobian_graph() const override { return graph_; }
+  RCP<const Tpetra::MultiVector<double>> node_coordinates() const override { return coordinates_; }
+
+  void evaluate(const Vector &x, Vector *f, Matrix *J) override
+  {
+    Vector x_col(graph_->getColMap());
+    if (graph_->getImporter().is_null())
+      Tpetra::deep_copy(x_col, x);
+    else
+      x_col.doImport(x, *graph_->getImporter(), Tpetra::INSERT);
+    const auto u = x_col.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto &col_map = *graph_->getColMap();
+    if (J != nullptr)
+      J->resumeFill();
+    std::vector<double> F_values(map_->getNodeNumElements());
+    {
+      for (size_t lid = 0; lid < map_->getNodeNumElements(); ++lid)
+      {
+        const GO gid = map_->getGlobalElement(static_cast<LO>(lid));
+        const double u_i = u(col_map.getLocalElement(gid), 0);
+        std::vector<LO> columns{col_map.getLocalElement(gid)};
+        std::vector<double> values{0.0};
+        double F = 0.0;
+        if (on_boundary(gid))
+        {
+          F = u_i - u_star(gid);
+          values[0] = 1.0;
+        }
+        else
+        {
+          F = -b_[lid];
+          for (const GO j : neighbours(gid))
+          {
+            const LO c = col_map.getLocalElement(j);
+            const double u_j = u(c, 0);
+            F += flux(u_i, u_j);
+            const double m = 0.5 * (u_i + u_j), k = 1.0 + m * m, dk = 2.0 * m;
+            values[0] += 0.5 * dk * (u_i - u_j) + k;
+            columns.push_back(c);
+            values.push_back(0.5 * dk * (u_i - u_j) - k);
+          }
+        }
+        F_values[lid] = F * residual_factor_;
+        if (J != nullptr)
+          J->replaceLocalValues(static_cast<LO>(lid), Teuchos::arrayViewFromVector(columns),
+                                Teuchos::arrayViewFromVector(values));
+      }
+    }
+    if (J != nullptr)
+      J->fillComplete();
+    if (f == nullptr)
+      return;
+    {
+      const auto f_view = f->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (size_t lid = 0; lid < F_values.size(); ++lid)
+        f_view(lid, 0) = F_values[lid];
+    }
+    residual_norms.push_back(f->norm2());
+  }
+
+  /// u* at every owned row.
+  Vector exact_solution() const
+  {
+    Vector u(map_);
+    for (size_t lid = 0; lid < map_->getNodeNumElements(); ++lid)
+      u.replaceLocalValue(static_cast<LO>(lid),
+                          u_star(map_->getGlobalElement(static_cast<LO>(lid))));
+    return u;
+  }
+
+  /// Multiplies F by this (NaN makes a problem whose residual is NaN).
+  void set_residual_factor(const double factor) { residual_factor_ = factor; }
+
+  std::vector<double> residual_norms;
+
+private:
+  std::array<int, 3> index(const GO gid) const
+  {
+    return {static_cast<int>(gid % n_), static_cast<int>(gid / n_ % n_),
+            static_cast<int>(gid / n_ / n_)};
+  }
+  std::array<double, 3> point(const GO gid) const
+  {
+    const auto ijk = index(gid);
+    const double h = 1.0 / (n_ - 1);
+    return {ijk[0] * h, dim_ > 1 ? ijk[1] * h : 0.0, dim_ > 2 ? ijk[2] * h : 0.0};
+  }
+  bool on_boundary(const GO gid) const
+  {
+    const auto ijk = index(gid);
+    for (int a = 0; a < dim_; ++a)
+      if (ijk[a] == 0 || ijk[a] == n_ - 1)
+        return true;
+    return false;
+  }
+  std::vector<GO> neighbours(const GO gid) const
+  {
+    std::vector<GO> result;
+    GO stride = 1;
+    for (int a = 0; a < dim_; ++a, stride *= n_)
+      result.insert(result.end(), {gid - stride, gid + stride});
+    return result;
+  }
+  double u_star(const GO gid) const
+  {
+    const auto p = point(gid);
+    return 0.5 + p[0] + 2.0 * p[1] * p[2] + std::sin(3.0 * p[0] + p[1] - p[2]);
+  }
+  static double flux(const double u_i, const double u_j)
+  {
+    const double m = 0.5 * (u_i + u_j);
+    return (1.0 + m * m) * (u_i - u_j);
+  }
+
+  int n_, dim_;
+  double residual_factor_ = 1.0;
+  RCP<const Map> map_;
+  RCP<const Graph> graph_;
+  RCP<Tpetra::MultiVector<double>> coordinates_;
+  std::vector<double> b_;
+};
+
+Teuchos::ParameterList solver_parameters()
+{
+  Teuchos::ParameterList p = NewtonSolver::valid_parameters();
+  p.set("Absolute Tolerance", 1e-10);
+  p.set("Relative Tolerance", 1e-12);
+  return p;
+}
+
+RCP<Teuchos::FancyOStream> quiet()
+{
+  return Teuchos::getFancyOStream(Teuchos::rcp(new Teuchos::oblackholestream));
+}
+
+struct Outcome
+{
+  NewtonSolver::Result result;
+  std::vector<double> residual_norms;
+  double error = 0.0; ///< max |u - u*| / max |u*|
+};
+
+Outcome solve(const RCP<const Teuchos::Comm<int>> &comm, const int n, const int dim,
+              const Teuchos::ParameterList &params = solver_parameters(), const double factor = 1.0)
+{
+  auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, n, dim));
+  problem->set_residual_factor(factor);
+  NewtonSolver solver(params, problem, quiet());
+  NonlinearProblem::Vector x(problem->solution_map());
+  Outcome outcome;
+  outcome.result = solver.solve(x);
+  outcome.residual_norms = problem->residual_norms;
+  NonlinearProblem::Vector u_star = problem->exact_solution();
+  const double scale = u_star.normInf();
+  u_star.update(1.0, x, -1.0);
+  outcome.error = u_star.normInf() / scale;
+  return outcome;
+}
+
+class NewtonSolverTest : public testing::Test
+{
+protected:
+  RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
+};
+
+TEST_F(NewtonSolverTest, ConvergesQuadraticallyToTheManufacturedSolution)
+{
+  for (const int dim : {1, 3})
+  {
+    SCOPED_TRACE("dim " + std::to_string(dim));
+    const Outcome run = solve(comm, dim == 1 ? 101 : 12, dim);
+    const auto &r = run.residual_norms;
+    ASSERT_TRUE(run.result.converged);
+    EXPECT_LT(run.error, 1e-9);
+    EXPECT_GE(run.result.newton_iterations, 3);
+    EXPECT_LE(run.result.newton_iterations, 8);
+    // One residual per Newton iterate, and the result reports the first and the last.
+    ASSERT_EQ(static_cast<int>(r.size()), run.result.newton_iterations + 1);
+    EXPECT_DOUBLE_EQ(run.result.initial_residual_norm, r.front());
+    EXPECT_DOUBLE_EQ(run.result.final_residual_norm, r.back());
+    EXPECT_LE(r.back(), std::max(1e-10, 1e-12 * r.front()));
+    // Quadratic: once in the asymptotic range, the order estimate
+    // log(r_{k+1}/r_0) / log(r_k/r_0) is near 2 (while above the linear
+    // solver's relative tolerance, 1e-10).
+    int checked = 0;
+    for (size_t k = 1; k + 1 < r.size(); ++k)
+    {
+      EXPECT_LT(r[k + 1], r[k]);
+      const double e_k = r[k] / r[0], e_next = r[k + 1] / r[0];
+      if (e_k < 1e-2 && e_next > 1e-9)
+      {
+        const double order = std::log(e_next) / std::log(e_k);
+        EXPECT_GT(order, 1.6) << "k = " << k;
+        EXPECT_LT(order, 2.6) << "k = " << k;
+        ++checked;
+      }
+    }
+    EXPECT_GE(checked, 1);
+    // Belos + MueLu: a few iterations per linear solve.
+    EXPECT_GE(run.result.linear_iterations, run.result.newton_iterations);
+    EXPECT_LE(run.result.linear_iterations, 30 * run.result.newton_iterations);
+  }
+}
+
+TEST_F(NewtonSolverTest, SameIteratesOnOneRankAndOnAll)
+{
+  const int n = 12, dim = 3;
+  const Outcome all = solve(comm, n, dim);
+  // The same problem on this rank alone.
+  const RCP<const Teuchos::Comm<int>> self = comm->split(comm->getRank(), 0);
+  ASSERT_EQ(self->getSize(), 1);
+  const Outcome one = solve(self, n, dim);
+  ASSERT_TRUE(all.result.converged);
+  ASSERT_TRUE(one.result.converged);
+  EXPECT_EQ(all.result.newton_iterations, one.result.newton_iterations);
+  ASSERT_EQ(all.residual_norms.size(), one.residual_norms.size());
+  const double r0 = one.residual_norms.front();
+  EXPECT_NEAR(all.residual_norms.front(), r0, 1e-13 * r0);
+  // Newton steps agree up to the linear solver's tolerance (1e-10 relative).
+  for (size_t k = 1; k < one.residual_norms.size(); ++k)
+    EXPECT_NEAR(all.residual_norms[k], one.residual_norms[k], 1e-8 * r0) << "k = " << k;
+  EXPECT_LT(all.error, 1e-9);
+  EXPECT_LT(one.error, 1e-9);
+}
+
+TEST_F(NewtonSolverTest, AlreadyConvergedNeedsNoIteration)
+{
+  auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 21, 1));
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  NonlinearProblem::Vector x = problem->exact_solution();
+  const NewtonSolver::Result result = solver.solve(x);
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.newton_iterations, 0);
+  EXPECT_EQ(result.linear_iterations, 0);
+  EXPECT_LT(result.final_residual_norm, 1e-10);
+  // The solver can be used again, from another initial guess.
+  x.putScalar(0.0);
+  const NewtonSolver::Result again = solver.solve(x);
+  EXPECT_TRUE(again.converged);
+  EXPECT_GE(again.newton_iterations, 3);
+}
+
+TEST_F(NewtonSolverTest, BelosOptionsFromTheInputTakeEffect)
+{
+  const Outcome reference = solve(comm, 12, 3);
+  ASSERT_TRUE(reference.result.converged);
+  Teuchos::ParameterList p = solver_parameters();
+  Teuchos::ParameterList &gmres = p.sublist("Linear Solver")
+                                      .sublist("Linear Solver Types")
+                                      .sublist("Belos")
+                                      .sublist("Solver Types")
+                                      .sublist("Pseudo Block GMRES");
+  gmres.set("Maximum Iterations", 1);
+  gmres.set("Convergence Tolerance", 1e-14);
+  p.set("Maximum Iterations", 6);
+  const Outcome limited = solve(comm, 12, 3, p);
+  // A failed linear solve does not throw: Newton goes on with the inexact step
+  // and, with one Krylov iteration per step, stops at its iteration limit.
+  EXPECT_FALSE(limited.result.converged);
+  EXPECT_EQ(limited.result.newton_iterations, 6);
+  EXPECT_EQ(limited.result.linear_iterations, limited.result.newton_iterations);
+  EXPECT_LT(limited.result.final_residual_norm, limited.result.initial_residual_norm);
+}
+
+TEST_F(NewtonSolverTest, Ifpack2PreconditionerCanBeChosen)
+{
+  Teuchos::ParameterList p = solver_parameters();
+  Teuchos::ParameterList &linear = p.sublist("Linear Solver");
+  linear.set("Preconditioner Type", "Ifpack2");
+  linear.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", "RELAXATION");
+  linear.sublist("Preconditioner Types")
+      .sublist("Ifpack2")
+      .sublist("Ifpack2 Settings")
+      .set("relaxation: type", "Symmetric Gauss-Seidel");
+  const Outcome run = solve(comm, 8, 3, p);
+  EXPECT_TRUE(run.result.converged);
+  EXPECT_LT(run.error, 1e-9);
+  EXPECT_GT(run.result.linear_iterations, run.result.newton_iterations);
+}
+
+TEST_F(NewtonSolverTest, NanResidualIsNotConverged)
+{
+  const Outcome run =
+      solve(comm, 21, 1, solver_parameters(), std::numeric_limits<double>::quiet_NaN());
+  EXPECT_FALSE(run.result.converged);
+  EXPECT_EQ(run.result.newton_iterations, 0);
+  EXPECT_TRUE(std::isnan(run.result.initial_residual_norm));
+}
+
+TEST_F(NewtonSolverTest, MaximumIterationsIsNotConverged)
+{
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Maximum Iterations", 2);
+  const Outcome run = solve(comm, 12, 3, p);
+  EXPECT_FALSE(run.result.converged);
+  EXPECT_EQ(run.result.newton_iterations, 2);
+  EXPECT_GT(run.error, 1e-6);
+}
+
+/// The message of the InputError that constructing a solver with `p` throws.
+std::string input_error(const RCP<const Teuchos::Comm<int>> &comm, const Teuchos::ParameterList &p)
+{
+  auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 11, 1));
+  try
+  {
+    NewtonSolver solver(p, problem, quiet());
+  }
+  catch (const kiln::InputError &e)
+  {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
+{
+  using testing::HasSubstr;
+  using testing::StartsWith;
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver")
+        .sublist("Linear Solver Types")
+        .sublist("Belos")
+        .set("Solver Type", "No Such Solver");
+    const std::string message = input_error(comm, p);
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver: "));
+    EXPECT_THAT(message, HasSubstr("No Such Solver"));
+  }
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver").set("Preconditioner Type", "No Such Preconditioner");
+    const std::string message = input_error(comm, p);
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver: "));
+    EXPECT_THAT(message, HasSubstr("\"Ifpack2\"")); // listed among the valid values
+  }
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver")
+        .sublist("Preconditioner Types")
+        .sublist("MueLu")
+        .set("smoother: tpye", "CHEBYSHEV");
+    const std::string message = input_error(comm, p);
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver/Preconditioner Types/MueLu: "));
+    EXPECT_THAT(message, HasSubstr("Did you mean \"smoother: type\"?"));
+    EXPECT_THAT(message, testing::Not(HasSubstr("Throw number")));
+  }
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Nonlinear Solver").sublist("Direction").set("Method", "No Such Direction");
+    const std::string message = input_error(comm, p);
+    EXPECT_THAT(message, StartsWith("Solver/Nonlinear Solver: "));
+    EXPECT_THAT(message, HasSubstr("Invalid choice for \"Method\" in \"Direction\""));
+  }
+  {
+    Teuchos::ParameterList p; // as read from an input: no validators
+    p.set("Absolute Tolerance", -1.0);
+    EXPECT_THAT(input_error(comm, p), HasSubstr("\"Absolute Tolerance\""));
+  }
+}
+
+/// Not a test: Belos + MueLu iterations per linear solve with the default
+/// parameters (or those of the "Solver" block in the file KILN_BENCH_XML) on
+/// the 3D problem, n^3 nodes (KILN_BENCH_N, default 20), e.g.
+///   mpirun -np 2 unit_newton_solver --gtest_also_run_disabled_tests
+///     --gtest_filter='*Iterations*'
+TEST_F(NewtonSolverTest, DISABLED_IterationsPerLinearSolve)
+{
+  const char *env = std::getenv("KILN_BENCH_N");
+  const int n = env != nullptr ? std::atoi(env) : 20;
+  auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, n, 3));
+  Teuchos::ParameterList p = NewtonSolver::valid_parameters();
+  if (const char *xml = std::getenv("KILN_BENCH_XML"); xml != nullptr) // a "Solver" block
+    Teuchos::updateParametersFromXmlFileAndBroadcast(xml, Teuchos::ptrFromRef(p), *comm);
+  NewtonSolver solver(p, problem, quiet());
+  NonlinearProblem::Vector x(problem->solution_map());
+  const auto start = std::chrono::steady_clock::now();
+  const NewtonSolver::Result r = solver.solve(x);
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  if (comm->getRank() == 0)
+    std::cout << "n = " << n << "^3, np = " << comm->getSize() << ": converged " << r.converged
+              << ", Newton " << r.newton_iterations << ", linear " << r.linear_iterations << " ("
+              << static_cast<double>(r.linear_iterations) / r.newton_iterations
+              << " per solve), ||F|| " << r.initial_residual_norm << " -> " << r.final_residual_norm
+              << ", " << seconds.count() << " s\n";
+  EXPECT_TRUE(r.converged);
+}
+} // namespace
