@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 
@@ -266,3 +267,29 @@ TEST(GapSplitter, SideSetFromOneSideOnlySplitsTheSame)
   }
 }
 } // namespace
+
+TEST(GapSplitter, GapFacesPairSideAFacesWithTheirTwins)
+{
+  Mesh mesh = contact_box();
+  kiln::split_gap(mesh, 10, "test");
+  ASSERT_EQ(mesh.gap_faces.size(), 16u); // 4 x 4 cut faces
+  std::map<int, int> twin_of;
+  for (const auto &p : mesh.gap_pairs)
+    twin_of[p.node_a] = p.node_b;
+  for (const auto &face : mesh.gap_faces)
+  {
+    EXPECT_EQ(mesh.block_id[face.cell_a], 1);
+    EXPECT_EQ(mesh.block_id[face.cell_b], 2);
+    std::set<int> b_face_nodes;
+    for (int i = 0; i < 4; ++i)
+      b_face_nodes.insert(mesh.connectivity[face.cell_b][kiln::hex_face_nodes[face.face_b][i]]);
+    for (int i = 0; i < 4; ++i)
+    {
+      const int a = mesh.connectivity[face.cell_a][kiln::hex_face_nodes[face.face_a][i]];
+      ASSERT_EQ(twin_of.count(a), 1u) << "face node " << a << " is not a node_a";
+      EXPECT_EQ(face.node_b[i], twin_of[a]);
+      EXPECT_EQ(b_face_nodes.count(face.node_b[i]), 1u);
+      EXPECT_EQ(mesh.coordinates[a], mesh.coordinates[face.node_b[i]]);
+    }
+  }
+}
