@@ -86,6 +86,13 @@ ParameterList muelu_defaults()
   return p;
 }
 
+/// Whether the Stratimikos list asks for MueLu (Stratimikos checks the value).
+bool uses_muelu(const ParameterList &stratimikos)
+{
+  return stratimikos.isType<std::string>("Preconditioner Type") &&
+         stratimikos.get<std::string>("Preconditioner Type") == "MueLu";
+}
+
 /// Kiln's defaults for the parameters of the smoother types chosen, set
 /// where the input gives none. They cannot be in valid_parameters(): they
 /// would be merged into the input's list, where they are invalid for
@@ -93,7 +100,7 @@ ParameterList muelu_defaults()
 /// "KLU2").
 void add_smoother_defaults(ParameterList &stratimikos)
 {
-  if (stratimikos.get<std::string>("Preconditioner Type") != "MueLu")
+  if (!uses_muelu(stratimikos))
     return;
   ParameterList &muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
   const auto is = [&](const std::string &name, const std::string &type)
@@ -104,6 +111,7 @@ void add_smoother_defaults(ParameterList &stratimikos)
     // low and the preconditioner indefinite (notes: 3D elasticity, 40^3).
     ParameterList &chebyshev = muelu.sublist("smoother: params");
     chebyshev.get("chebyshev: degree", 2);
+    chebyshev.get("chebyshev: ratio eigenvalue", 7.0);
     chebyshev.get("chebyshev: eigenvalue max iterations", 30);
   }
   if (is("coarse: type", "RELAXATION"))
@@ -194,7 +202,7 @@ void as_input_error(const Teuchos::Comm<int> &comm, const std::string &sublist, 
 void check_muelu_parameters(const ParameterList &stratimikos,
                             const RCP<const Teuchos::Comm<int>> &comm)
 {
-  if (stratimikos.get<std::string>("Preconditioner Type") != "MueLu")
+  if (!uses_muelu(stratimikos))
     return;
   ParameterList muelu;
   if (stratimikos.isSublist("Preconditioner Types") &&
@@ -225,7 +233,7 @@ void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem
                      const Teuchos::Comm<int> &comm)
 {
   const RCP<const Tpetra::MultiVector<double>> coordinates = problem.node_coordinates();
-  if (coordinates.is_null() || stratimikos.get<std::string>("Preconditioner Type") != "MueLu")
+  if (coordinates.is_null() || !uses_muelu(stratimikos))
     return;
   const auto n_rows = static_cast<long long>(problem.solution_map()->getNodeNumElements());
   const auto n_nodes = static_cast<long long>(coordinates->getLocalLength());
@@ -272,7 +280,8 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "Stratimikos parameters (default: Belos Pseudo Block GMRES, relative tolerance 1e-10, "
       "500 iterations, preconditioned by MueLu smoothed aggregation with Chebyshev smoothing and "
       "a Gauss-Seidel coarse level; see doc/solvers.md). Unless the input sets them, Kiln adds "
-      "to \"smoother: params\" of a CHEBYSHEV smoother degree 2 and 30 eigenvalue iterations, "
+      "to \"smoother: params\" of a CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and 30 "
+      "eigenvalue iterations, "
       "and to \"coarse: params\" of a RELAXATION coarse level 4 symmetric Gauss-Seidel sweeps",
       internal::linear_solver_defaults());
   return p;
@@ -330,6 +339,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
       Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
                                   Thyra::Ifpack2PreconditionerFactory<NonlinearProblem::Matrix>>(),
       "Ifpack2");
+  internal::add_smoother_defaults(*linear);
+  internal::check_muelu_parameters(*linear, s.comm);
+  internal::add_coordinates(*linear, *problem, *s.comm);
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory;
   internal::as_input_error(*s.comm, linear_name,
                            [&]
@@ -337,9 +349,6 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
                              s.builder->setParameterList(linear);
                              lows_factory = Thyra::createLinearSolveStrategy(*s.builder);
                            });
-  internal::add_smoother_defaults(*linear);
-  internal::check_muelu_parameters(*linear, s.comm);
-  internal::add_coordinates(*linear, *problem, *s.comm);
   lows_factory->setOStream(s.out);
   s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, lows_factory));
 
