@@ -107,7 +107,6 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs) : mesh_(mesh), do
                            });
   // Its column map is the overlap map, so add() can use overlap local ids.
   overlap_graph_ = internal::make_graph(overlap, overlap_rows, owned, overlap);
-  const std::vector<std::vector<GO>> &overlap_rows_copy = overlap_rows; // sorted, unique
 
   // The owned rows get every block that touches them, from any rank: the mesh
   // is replicated, so each rank finds its rows' columns without communication.
@@ -126,22 +125,6 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs) : mesh_(mesh), do
                              }
                            });
   owned_graph_ = internal::make_graph(owned, owned_rows, owned);
-
-  // The overlap rows this rank does not own, with their columns.
-  std::vector<GO> ghost_gids;
-  std::vector<std::vector<GO>> ghost_rows;
-  for (std::size_t i = 0; i < overlap->getNodeNumElements(); ++i)
-  {
-    const GO row = overlap->getGlobalElement(static_cast<LO>(i));
-    if (owned->isNodeGlobalElement(row))
-      continue;
-    ghost_gids.push_back(row);
-    ghost_rows.push_back(overlap_rows_copy[i]);
-  }
-  const auto ghost_map = make_map(ghost_gids, owned->getComm());
-  ghost_graph_ = internal::make_graph(ghost_map, ghost_rows, owned);
-  ghost_matrix_ = Teuchos::rcp(new Matrix(ghost_graph_));
-  ghost_exporter_ = Teuchos::rcp(new Tpetra::Export<>(ghost_map, owned));
 
   overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));
   overlap_residual_ = Teuchos::rcp(new Vector(overlap));
@@ -206,33 +189,11 @@ void Assembler::finish(Vector *f, Matrix *J)
   if (J != nullptr)
   {
     KILN_ASSERT(assembling_jacobian_, "finish(J) without begin(jacobian)");
-    // Rows this rank owns are added in place; only the ghost rows travel.
-    const auto overlap = dofs_.overlap_dof_map();
-    const auto owned = dofs_.owned_dof_map();
+    overlap_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
     J->resumeFill();
     J->setAllToScalar(0.0);
-    ghost_matrix_->resumeFill();
-    ghost_matrix_->setAllToScalar(0.0);
-    Teuchos::Array<GO> cols;
-    Teuchos::Array<double> vals;
-    for (std::size_t i = 0; i < overlap->getNodeNumElements(); ++i)
-    {
-      const GO row = overlap->getGlobalElement(static_cast<LO>(i));
-      const std::size_t n = overlap_matrix_->getNumEntriesInGlobalRow(row);
-      cols.resize(n);
-      vals.resize(n);
-      std::size_t count = 0;
-      overlap_matrix_->getGlobalRowCopy(row, cols(), vals(), count);
-      const LO done = owned->isNodeGlobalElement(row)
-                          ? J->sumIntoGlobalValues(row, cols(0, count), vals(0, count))
-                          : ghost_matrix_->replaceGlobalValues(row, cols(0, count), vals(0, count));
-      if (done != static_cast<LO>(count))
-        throw InternalError("Assembler: row " + std::to_string(row) + " took " +
-                            std::to_string(done) + " of " + std::to_string(count) + " entries");
-    }
-    ghost_matrix_->fillComplete(owned, owned);
-    J->doExport(*ghost_matrix_, *ghost_exporter_, Tpetra::ADD);
-    J->fillComplete(owned, owned);
+    J->doExport(*overlap_matrix_, *dofs_.dof_exporter(), Tpetra::ADD);
+    J->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
   }
   assembling_residual_ = assembling_jacobian_ = false;
 }

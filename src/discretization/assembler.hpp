@@ -58,9 +58,6 @@ private:
   Teuchos::RCP<Graph> overlap_graph_;
   Teuchos::RCP<Graph> owned_graph_;
   Teuchos::RCP<Matrix> overlap_matrix_;
-  Teuchos::RCP<Graph> ghost_graph_;
-  Teuchos::RCP<Matrix> ghost_matrix_;
-  Teuchos::RCP<const Tpetra::Export<>> ghost_exporter_;
   Teuchos::RCP<Vector> overlap_residual_;
   bool assembling_residual_ = false;
   bool assembling_jacobian_ = false;

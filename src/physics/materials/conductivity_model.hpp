@@ -1,10 +1,10 @@
 #pragma once
 /// Thermal conductivity as a function of temperature, k(T).
+#include "base/piecewise_linear.hpp"
+
 #include <Teuchos_ParameterList.hpp>
 
-#include <cstddef>
 #include <string>
-#include <vector>
 
 namespace kiln
 {
@@ -35,10 +35,7 @@ public:
   double derivative(double T) const;
 
 private:
-  /// Constant: temperatures_ empty, values_ = {k}. Table: the table (at least 2 points).
-  std::vector<double> temperatures_;
-  std::vector<double> values_{1.0};
-  /// The index k with temperatures_[k] <= T < temperatures_[k + 1]; T inside the table.
-  std::size_t interval(double T) const;
+  /// Table: the table (at least 2 points). Constant: the single point (0 K, k).
+  PiecewiseLinear k_of_T_{{0.0}, {1.0}, {}};
 };
 } // namespace kiln

@@ -6,9 +6,6 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
 
-#include <algorithm>
-#include <iterator>
-
 namespace kiln
 {
 Teuchos::ParameterList TimeFunction::valid_parameters()
@@ -59,17 +56,9 @@ TimeFunction::TimeFunction(const Teuchos::ParameterList &p, const std::string &w
     kind_ = Kind::table;
     const auto &times = p.get<Teuchos::Array<double>>("Times");
     const auto &values = p.get<Teuchos::Array<double>>("Values");
-    times_.assign(times.begin(), times.end());
-    values_.assign(values.begin(), values.end());
-    KILN_CHECK_INPUT(!times_.empty(), where + "/\"Times\"", "must have at least one entry");
-    KILN_CHECK_INPUT(values_.size() == times_.size(), where + "/\"Values\"",
-                     "has " << values_.size() << " entries but \"Times\" has " << times_.size()
-                            << "; give one value per time");
-    for (std::size_t i = 1; i < times_.size(); ++i)
-      KILN_CHECK_INPUT(times_[i] > times_[i - 1], where + "/\"Times\"",
-                       "must be strictly increasing, but entry " << i << " (" << times_[i]
-                                                                 << ") <= entry " << i - 1 << " ("
-                                                                 << times_[i - 1] << ")");
+    KILN_CHECK_INPUT(!times.empty(), where + "/\"Times\"", "must have at least one entry");
+    table_ = PiecewiseLinear({times.begin(), times.end()}, {values.begin(), values.end()},
+                             {where, "Times", "Values", ""});
   }
 }
 
@@ -97,17 +86,7 @@ double TimeFunction::value(const double t) const
     return values_[0] + (values_[1] - values_[0]) * s * s * (3 - 2 * s);
   }
   case Kind::table:
-  {
-    if (t <= times_.front())
-      return values_.front();
-    if (t >= times_.back())
-      return values_.back();
-    // times_[k - 1] <= t < times_[k]
-    const auto k = static_cast<std::size_t>(
-        std::distance(times_.begin(), std::upper_bound(times_.begin(), times_.end(), t)));
-    const double w = (t - times_[k - 1]) / (times_[k] - times_[k - 1]);
-    return (1 - w) * values_[k - 1] + w * values_[k];
-  }
+    return table_.value(t);
   }
   return values_[0];
 }

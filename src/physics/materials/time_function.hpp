@@ -1,5 +1,7 @@
 #pragma once
 /// A scalar function of time: constant, smooth step or piecewise linear table.
+#include "base/piecewise_linear.hpp"
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
@@ -40,8 +42,8 @@ private:
   };
   Kind kind_ = Kind::constant;
   /// Constant: values_ = {value}. Smooth step: times_ = {x0, x1}, values_ = {y0, y1}.
-  /// Table: the table.
   std::vector<double> times_;
   std::vector<double> values_{0.0};
+  PiecewiseLinear table_; ///< Table
 };
 } // namespace kiln
