@@ -64,6 +64,13 @@ int main(int argc, char **argv)
       std::cerr << "kiln: error: " << e.what() << "\n";
     return 1;
   }
+  catch (const kiln::RunError &e)
+  {
+    // Also raised alike on every rank (decided on reduced quantities).
+    if (comm->getRank() == 0)
+      std::cerr << "kiln: error: " << e.what() << "\n";
+    return 1;
+  }
   catch (const std::exception &e)
   {
     // Anything else may have happened on one rank only: abort so no rank hangs.

@@ -8,6 +8,10 @@
 #include "mesh/gap_splitter.hpp"
 #include "mesh/mesh_factory.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "physics/heat/thermal_problem.hpp"
+#include "physics/materials/material.hpp"
+#include "solvers/newton_solver.hpp"
+#include "solvers/time_stepper.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -35,8 +39,8 @@ Teuchos::ParameterList output_parameters()
         "path of the results without extension: FILE.h5 and FILE.xmf are written; the "
         "default \"\" means results/<input file name without .xml>");
   p.set("Times", Teuchos::Array<double>(1, 0.0),
-        "output times [s]; the state at each is written (until the solver exists, the "
-        "initial state only)");
+        "output times, increasing, >= 0 [s]: the state at each is written; the run starts at "
+        "t = 0 and ends at the last");
   return p;
 }
 } // namespace internal
@@ -47,6 +51,16 @@ Teuchos::ParameterList Simulation::valid_parameters()
   p.set("Problem Name", "", "a title printed in the log [-]");
   p.sublist("Mesh", false, "the mesh; see MeshFactory")
       .setParameters(MeshFactory::valid_parameters());
+  p.sublist("Material", false, "material properties; see Material")
+      .setParameters(Material::valid_parameters());
+  p.sublist("Thermal", false,
+            "heat conduction: initial state, boundary conditions, gap conductance; see "
+            "doc/heat.md")
+      .setParameters(ThermalProblem::valid_parameters());
+  p.sublist("Time Stepping", false, "implicit time integration; see TimeStepper")
+      .setParameters(TimeStepper::valid_parameters());
+  p.sublist("Solver", false, "Newton (NOX) and linear solver (Belos, MueLu); see doc/solvers.md")
+      .setParameters(NewtonSolver::valid_parameters());
   p.sublist("Output", false, "results in HDF5 + XDMF; see doc/output-format.md")
       .setParameters(internal::output_parameters());
   return p;
@@ -81,7 +95,16 @@ void Simulation::setup()
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
     cell_rank_ = partition_cells(mesh_, *comm_, input_path_ + ": Kiln/Mesh");
-    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_);
+    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, DofLayout{1, false});
+  }
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
+    const Material material(params_.sublist("Material"), input_path_ + ": Kiln/Material");
+    problem_ = Teuchos::rcp(new ThermalProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
+                                               input_path_ + ": Kiln/Thermal"));
+    newton_ = std::make_unique<NewtonSolver>(params_.sublist("Solver"), problem_, out_);
+    stepper_ = std::make_unique<TimeStepper>(params_.sublist("Time Stepping"),
+                                             input_path_ + ": Kiln/Time Stepping", out_);
   }
   print_header();
 }
@@ -89,9 +112,32 @@ void Simulation::setup()
 void Simulation::run()
 {
   setup();
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 output"));
-  output(0.0, 0, 0.0);
-  *out_ << "wrote " << output_base() << ".h5 and " << output_base() << ".xmf (t = 0)\n";
+  solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
+  problem_->initial_condition(0.0, *solution_);
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
+    const std::string base = output_base();
+    if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
+    {
+      std::error_code ignored; // a failure shows when the writer opens the file
+      std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
+    }
+    comm_->barrier();
+    const MPI_Comm mpi_comm =
+        *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+    writer_ = std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
+                                               dofs_->owned_cells(), cell_rank_);
+  }
+  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
+  const TimeStepper::Statistics stats =
+      stepper_->run(*problem_, *newton_, *solution_, 0.0, {times.begin(), times.end()},
+                    [this](const double t, const int cycle, const double dt,
+                           const NonlinearProblem::Vector &x) { output(t, cycle, dt, x); });
+  *out_ << "done: " << stats.steps << " steps (" << stats.error_rejections
+        << " repeated for the error estimate, " << stats.newton_failures << " for Newton), "
+        << stats.newton_iterations << " Newton and " << stats.linear_iterations
+        << " linear iterations; results in " << output_base() << ".h5 and " << output_base()
+        << ".xmf\n";
 }
 
 std::string Simulation::output_base() const
@@ -149,24 +195,21 @@ void Simulation::print_header() const
   };
   out << "partition (METIS k-way): cells per rank " << balance(cells) << "; owned nodes per rank "
       << balance(nodes) << "\n";
-  out << "unknowns: " << dofs_->n_global_dofs() << " (4 per node + " << mesh_.gap_pairs.size()
-      << " contact)\n";
+  out << "unknowns: " << dofs_->n_global_dofs() << " (temperature at every node)\n";
 }
 
-void Simulation::output(const double time, const int cycle, const double dt) const
+void Simulation::output(const double time, const int cycle, const double dt,
+                        const NonlinearProblem::Vector &x)
 {
-  const std::string base = output_base();
-  if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
-  {
-    std::error_code ignored; // a failure shows when the writer opens the file
-    std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
-  }
-  comm_->barrier();
-  const MPI_Comm mpi_comm =
-      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-  Hdf5XdmfWriter writer(mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(),
-                        cell_rank_);
-  writer.begin_step(time, cycle, dt);
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
+  writer_->begin_step(time, cycle, dt);
+  const auto values = x.getData();
+  const auto &map = *x.getMap();
+  std::vector<double> temperature;
+  temperature.reserve(dofs_->owned_nodes().size());
+  for (const int n : dofs_->owned_nodes())
+    temperature.push_back(values[map.getLocalElement(dofs_->dof(n, Field::T))]);
+  writer_->write_node_field("temperature", 1, temperature);
   // The gap opening of the initial geometry: n . (x_b - x_a), NaN off the gap.
   std::vector<double> opening_of_node(mesh_.n_nodes(), std::numeric_limits<double>::quiet_NaN());
   for (const auto &p : mesh_.gap_pairs)
@@ -179,8 +222,9 @@ void Simulation::output(const double time, const int cycle, const double dt) con
   std::vector<double> opening;
   for (const int n : dofs_->owned_nodes())
     opening.push_back(opening_of_node[n]);
-  writer.write_node_field("gap_opening", 1, opening);
-  writer.end_step();
+  writer_->write_node_field("gap_opening", 1, opening);
+  writer_->end_step();
+  *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
 }
 
 void Simulation::write_mesh(const std::string &path) const

@@ -1,7 +1,9 @@
 #pragma once
 /// Puts the pieces together, deal.II-tutorial style:
-///   run() { setup(); output(); }   (the time loop joins with the solver)
+///   run() { setup(); output(t0); for each step { assemble; solve; } output(t_k) }
+/// (the time loop is the TimeStepper's; each step one NOX solve).
 #include "discretization/dof_manager.hpp"
+#include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_Comm.hpp>
@@ -14,6 +16,11 @@
 
 namespace kiln
 {
+class Hdf5XdmfWriter;
+class NewtonSolver;
+class ThermalProblem;
+class TimeStepper;
+
 class Simulation
 {
 public:
@@ -26,9 +33,10 @@ public:
              const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const std::string &mesh_file = "");
   ~Simulation();
 
-  /// Mesh, gap split, partition, unknowns; prints the header.
+  /// Mesh, gap split, partition, unknowns, physics, solvers (so that every input
+  /// error shows here); prints the header.
   void setup();
-  /// setup(), then the initial state written to the output file.
+  /// setup(), then the time integration, the state written at every output time.
   void run();
   /// The mesh before the split, as Exodus II (rank 0 writes).
   void write_mesh(const std::string &path) const;
@@ -38,10 +46,13 @@ public:
   const DofManager &dofs() const { return *dofs_; }
   /// The output file path without extension.
   std::string output_base() const;
+  /// The solution after run(): temperatures of the owned nodes (dofs().owned_nodes()
+  /// order; one unknown per node).
+  const NonlinearProblem::Vector &solution() const { return *solution_; }
 
 private:
   void print_header() const;
-  void output(double time, int cycle, double dt) const;
+  void output(double time, int cycle, double dt, const NonlinearProblem::Vector &x);
 
   Teuchos::ParameterList params_;
   std::string input_path_;
@@ -51,5 +62,10 @@ private:
   Mesh mesh_;
   std::vector<int> cell_rank_;
   std::unique_ptr<DofManager> dofs_;
+  Teuchos::RCP<ThermalProblem> problem_;
+  std::unique_ptr<NewtonSolver> newton_;
+  std::unique_ptr<TimeStepper> stepper_;
+  std::unique_ptr<Hdf5XdmfWriter> writer_;
+  Teuchos::RCP<NonlinearProblem::Vector> solution_;
 };
 } // namespace kiln

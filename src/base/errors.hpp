@@ -25,6 +25,16 @@ public:
   explicit InputError(const std::string &message) : std::runtime_error(message) {}
 };
 
+/// A run that cannot go on although its input was valid (Newton keeps failing and the
+/// time step falls below its minimum). Raised alike on every rank (the decision is
+/// taken on reduced quantities); the message says when, what failed and what to try.
+/// Output written before it stays valid.
+class RunError : public std::runtime_error
+{
+public:
+  explicit RunError(const std::string &message) : std::runtime_error(message) {}
+};
+
 /// A programmer error found by KILN_ASSERT.
 class InternalError : public std::logic_error
 {

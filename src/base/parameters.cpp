@@ -100,6 +100,33 @@ bool is_pass_through(const Teuchos::ParameterEntry &valid_entry)
   return valid_entry.docString().find(pass_through_marker) != std::string::npos;
 }
 
+const std::string named_sublists_marker = " [any number of sublists, each named by the user]";
+const std::string named_sublist_template = "<any name>";
+
+bool holds_named_sublists(const Teuchos::ParameterEntry &valid_entry)
+{
+  return valid_entry.docString().find(named_sublists_marker) != std::string::npos;
+}
+
+void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
+                const std::string &where, const std::string &path);
+
+/// Every entry of `user` must be a sublist matching the template.
+void check_named_sublists(const Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
+                          const std::string &where, const std::string &path)
+{
+  const Teuchos::ParameterList &tmpl = valid.sublist(named_sublist_template);
+  for (auto it = user.begin(); it != user.end(); ++it)
+  {
+    const std::string &name = user.name(it);
+    KILN_CHECK_INPUT(user.entry(it).isList(), parameter_path(where, path, name),
+                     "expected a sublist (<ParameterList name=\"" << name
+                                                                  << "\">), got a parameter");
+    check_list(Teuchos::getValue<Teuchos::ParameterList>(user.entry(it)), tmpl, where,
+               path + "/" + name);
+  }
+}
+
 void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
                 const std::string &where, const std::string &path)
 {
@@ -130,6 +157,13 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
                                                                     << "\">), got a parameter");
       if (is_pass_through(*valid_entry))
         continue;
+      if (holds_named_sublists(*valid_entry))
+      {
+        check_named_sublists(Teuchos::getValue<Teuchos::ParameterList>(entry),
+                             Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), where,
+                             path + "/" + name);
+        continue;
+      }
       check_list(Teuchos::getValue<Teuchos::ParameterList>(entry),
                  Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), where, path + "/" + name);
       continue;
@@ -165,11 +199,22 @@ void set_defaults(Teuchos::ParameterList &list, const Teuchos::ParameterList &va
   {
     const std::string &name = valid.name(it);
     const Teuchos::ParameterEntry &entry = valid.entry(it);
-    if (entry.isList())
+    if (entry.isList() && holds_named_sublists(entry))
+    {
+      Teuchos::ParameterList &named = list.sublist(name, false, entry.docString());
+      const Teuchos::ParameterList &tmpl =
+          Teuchos::getValue<Teuchos::ParameterList>(entry).sublist(named_sublist_template);
+      for (auto n = named.begin(); n != named.end(); ++n)
+        set_defaults(named.sublist(named.name(n)), tmpl);
+    }
+    else if (entry.isList())
       set_defaults(list.sublist(name, false, entry.docString()),
                    Teuchos::getValue<Teuchos::ParameterList>(entry));
     else if (!list.isParameter(name))
+    {
       list.setEntry(name, entry);
+      list.getEntryRCP(name)->setAnyValue(entry.getAny(false), true); // marks it a default
+    }
   }
 }
 } // namespace internal
@@ -181,6 +226,28 @@ void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string 
   parent
       .sublist(name, false, doc + internal::pass_through_marker + package + ", which validates it]")
       .setParameters(defaults);
+}
+
+bool given_in_input(const Teuchos::ParameterList &list, const std::string &name)
+{
+  const Teuchos::ParameterEntry *entry = list.getEntryPtr(name);
+  if (entry == nullptr)
+    return false;
+  if (!entry->isList())
+    return !entry->isDefault();
+  const auto &sub = Teuchos::getValue<Teuchos::ParameterList>(*entry);
+  for (auto it = sub.begin(); it != sub.end(); ++it)
+    if (given_in_input(sub, sub.name(it)))
+      return true;
+  return false;
+}
+
+void set_named_sublists(Teuchos::ParameterList &parent, const std::string &name,
+                        const std::string &doc, const Teuchos::ParameterList &each)
+{
+  parent.sublist(name, false, doc + internal::named_sublists_marker)
+      .sublist(internal::named_sublist_template, false, "one of them")
+      .setParameters(each);
 }
 
 std::string parameter_path(const std::string &where, const std::string &path,

@@ -30,6 +30,17 @@ void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string 
                               const std::string &package, const std::string &doc,
                               const Teuchos::ParameterList &defaults);
 
+/// Whether `name` was set in the input of a list returned by validated() (false for a
+/// value filled in from its default; for a sublist, whether it holds a value from the
+/// input).
+bool given_in_input(const Teuchos::ParameterList &list, const std::string &name);
+
+/// Declares sublist `name` of `parent` holding any number of sublists named by
+/// the user (one per boundary condition, say), each validated against `each`
+/// and given its defaults. The valid tree shows `each` as "<any name>".
+void set_named_sublists(Teuchos::ParameterList &parent, const std::string &name,
+                        const std::string &doc, const Teuchos::ParameterList &each);
+
 /// `where: path/"name"`, the way every message names a parameter.
 std::string parameter_path(const std::string &where, const std::string &path,
                            const std::string &name);

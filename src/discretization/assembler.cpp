@@ -214,6 +214,18 @@ std::vector<LO> Assembler::cell_lids(const int cell) const
   return lids;
 }
 
+std::vector<LO> Assembler::face_lids(const int cell, const int face) const
+{
+  std::vector<LO> lids;
+  for (int i = 0; i < 4; ++i)
+  {
+    const int n = mesh_.connectivity[cell][hex_face_nodes[face][i]];
+    for (int f = 0; f < dofs_.n_node_fields(); ++f)
+      lids.push_back(lid(dofs_.dof(n, static_cast<Field>(f))));
+  }
+  return lids;
+}
+
 std::vector<LO> Assembler::gap_face_lids(const int gap_face) const
 {
   const GapFace &face = mesh_.gap_faces[gap_face];

@@ -47,6 +47,8 @@ public:
 
   /// Overlap local ids of a cell's unknowns (node-major, n_node_fields each).
   std::vector<LO> cell_lids(int cell) const;
+  /// Overlap local ids of the unknowns of a cell face's 4 nodes (hex_face_nodes order).
+  std::vector<LO> face_lids(int cell, int face) const;
   /// Overlap local ids of a gap face's 4 side-a nodes then its 4 twins.
   std::vector<LO> gap_face_lids(int gap_face) const;
   /// Overlap local id of an unknown.

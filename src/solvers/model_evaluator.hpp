@@ -3,7 +3,7 @@
 /// NonlinearProblem. x and f live on solution_map(); W is a Tpetra::CrsMatrix
 /// on jacobian_graph() (static graph), wrapped by Thyra::tpetraLinearOp and
 /// solved with the Stratimikos factory given at construction.
-#include "solvers/nonlinear_problem.hpp"
+#include "discretization/nonlinear_problem.hpp"
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>

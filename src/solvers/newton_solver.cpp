@@ -366,6 +366,11 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
 
 NewtonSolver::~NewtonSolver() = default;
 
+int NewtonSolver::max_iterations() const
+{
+  return impl_->max_iterations;
+}
+
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
 {
   namespace ST = NOX::StatusTest;

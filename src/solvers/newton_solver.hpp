@@ -4,7 +4,7 @@
 /// (or Ifpack2) preconditioning. The "Nonlinear Solver" and "Linear Solver"
 /// sublists of the input are handed to NOX and Stratimikos as they are, so
 /// every option those packages document can be set from the XML.
-#include "solvers/nonlinear_problem.hpp"
+#include "discretization/nonlinear_problem.hpp"
 
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_ParameterList.hpp>
@@ -41,6 +41,8 @@ public:
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on
   /// return (converged or not). Collective.
   Result solve(NonlinearProblem::Vector &x);
+  /// "Maximum Iterations" of the input.
+  int max_iterations() const;
 
 private:
   struct Impl;

@@ -1,7 +1,7 @@
 #pragma once
 /// What the Newton solver sees of a problem: a residual F(x) and its Jacobian
 /// on Tpetra objects. The Assembler-based physics implements it; the solver
-/// (NewtonSolver) knows nothing of meshes or physics.
+/// (NewtonSolver, TimeStepper) knows nothing of meshes or physics.
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_CrsGraph.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -34,5 +34,17 @@ public:
   {
     return Teuchos::null;
   }
+};
+
+/// A problem with a time derivative: F(x, xdot, t) with xdot = a x + b, the
+/// form every implicit one-step or multistep method takes (backward Euler:
+/// a = 1/dt, b = -x_n/dt). The time stepper sets t, a and b before each
+/// solve; evaluate() then includes dxdot/dx = a in the Jacobian. A steady
+/// solve sets a = 0 and b = 0.
+class TransientProblem : public NonlinearProblem
+{
+public:
+  /// t [s], a [1/s], b (on solution_map(), unit of x per s) for the next evaluate() calls.
+  virtual void set_time_derivative(double time, double a, const Vector &b) = 0;
 };
 } // namespace kiln

@@ -1,0 +1,25 @@
+#include "physics/heat/convection_kernel.hpp"
+
+#include "discretization/dof_manager.hpp"
+
+namespace kiln
+{
+void ConvectionKernel::evaluate(const FaceValues &fv, const std::array<double, 4> &T_nodes,
+                                const double T_ambient, LocalSystem &local) const
+{
+  constexpr int T_field = static_cast<int>(Field::T);
+  for (int q = 0; q < fv.n_qpoints(); ++q)
+  {
+    double T = 0.0;
+    for (int j = 0; j < fv.n_shape(); ++j)
+      T += fv.shape(j, q) * T_nodes[j];
+    const double JxW = fv.JxW(q);
+    for (int i = 0; i < fv.n_shape(); ++i)
+    {
+      local.residual(T_field, i) += h_ * (T - T_ambient) * fv.shape(i, q) * JxW;
+      for (int j = 0; j < fv.n_shape(); ++j)
+        local.jacobian(T_field, i, T_field, j) += h_ * fv.shape(j, q) * fv.shape(i, q) * JxW;
+    }
+  }
+}
+} // namespace kiln

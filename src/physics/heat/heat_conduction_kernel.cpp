@@ -1,0 +1,55 @@
+#include "physics/heat/heat_conduction_kernel.hpp"
+
+#include "discretization/dof_manager.hpp"
+
+#include <utility>
+
+namespace kiln
+{
+namespace
+{
+double dot(const Point &a, const Point &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+} // namespace
+
+HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel conductivity)
+    : rho_c_(rho_c), conductivity_(std::move(conductivity))
+{
+}
+
+void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &T_nodes,
+                                    const NodalValues &T_dot_nodes, const double dTdot_dT,
+                                    LocalSystem &local) const
+{
+  constexpr int T_field = static_cast<int>(Field::T);
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+  {
+    double T = 0.0;
+    double T_dot = 0.0;
+    Point grad_T{0.0, 0.0, 0.0};
+    for (int j = 0; j < fe.n_shape(); ++j)
+    {
+      T += fe.shape(j, q) * T_nodes[j];
+      T_dot += fe.shape(j, q) * T_dot_nodes[j];
+      for (int d = 0; d < 3; ++d)
+        grad_T[d] += fe.grad(j, q)[d] * T_nodes[j];
+    }
+    const double k = conductivity_.value(T);
+    const double dk_dT = conductivity_.derivative(T);
+    const double JxW = fe.JxW(q);
+    for (int i = 0; i < fe.n_shape(); ++i)
+    {
+      const double phi_i = fe.shape(i, q);
+      const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
+      local.residual(T_field, i) += (rho_c_ * T_dot * phi_i + k * grad_T_dot_grad_phi_i) * JxW;
+      for (int j = 0; j < fe.n_shape(); ++j)
+        local.jacobian(T_field, i, T_field, j) +=
+            (rho_c_ * dTdot_dT * fe.shape(j, q) * phi_i + k * dot(fe.grad(j, q), fe.grad(i, q)) +
+             dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
+            JxW;
+    }
+  }
+}
+} // namespace kiln

@@ -1,0 +1,37 @@
+#pragma once
+/// The volume kernel of transient heat conduction on one Q1 cell.
+#include "discretization/element_values.hpp"
+#include "discretization/local_system.hpp"
+#include "physics/materials/conductivity_model.hpp"
+
+#include <array>
+
+namespace kiln
+{
+/// Transient heat conduction without sources:  rho c dT/dt - div(k(T) grad T) = 0.
+///
+///   R_i       = ∫ (rho c Tdot φ_i + k(T) ∇T·∇φ_i) dΩ
+///   dR_i/dT_j = ∫ (rho c a φ_j φ_i + k ∇φ_j·∇φ_i + k'(T) φ_j ∇T·∇φ_i) dΩ,   a = dTdot/dT
+///
+/// T, Tdot and ∇T are interpolated from the nodal values at the 2x2x2 Gauss points;
+/// the boundary terms are the BC kernels' (none: insulated). Only the temperature rows
+/// and columns (Field::T) of the local system are touched, so the kernel serves the
+/// thermal system (1 unknown per node) and the coupled one (4 per node) alike.
+class HeatConductionKernel final
+{
+public:
+  using NodalValues = std::array<double, n_hex_nodes>;
+
+  /// rho_c [J/(m^3 K)]; k(T) [W/(m K)].
+  HeatConductionKernel(double rho_c, ConductivityModel conductivity);
+
+  /// Adds the cell's residual [W] and Jacobian [W/K] to `local` (8 nodes): T [K] and
+  /// T_dot [K/s] at the nodes, dTdot_dT = a [1/s].
+  void evaluate(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
+                double dTdot_dT, LocalSystem &local) const;
+
+private:
+  double rho_c_;
+  ConductivityModel conductivity_;
+};
+} // namespace kiln

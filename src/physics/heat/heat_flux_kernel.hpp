@@ -1,0 +1,20 @@
+#pragma once
+/// A prescribed heat flux into the body through a boundary face.
+#include "discretization/face_values.hpp"
+#include "discretization/local_system.hpp"
+
+namespace kiln
+{
+/// Prescribed flux q into the body (q > 0 heats it): -k ∇T·n = -q on the face.
+///
+///   R_i       = -∫ q φ_i dΓ
+///   dR_i/dT_j = 0
+///
+/// Touches the Field::T rows of a 4-node local system (face-node order).
+class HeatFluxKernel final
+{
+public:
+  /// q [W/m^2]; adds [W].
+  static void evaluate(const FaceValues &fv, double q, LocalSystem &local);
+};
+} // namespace kiln

@@ -1,0 +1,102 @@
+#include "physics/heat/thermal_boundary_condition.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+const std::map<std::string, ThermalBoundaryCondition::Type> thermal_bc_types = {
+    {"Temperature", ThermalBoundaryCondition::Type::temperature},
+    {"Heat Flux", ThermalBoundaryCondition::Type::heat_flux},
+    {"Convection", ThermalBoundaryCondition::Type::convection}};
+
+/// The parameters each Type reads besides Type and Side Sets.
+const std::map<std::string, std::vector<std::string>> thermal_bc_parameters = {
+    {"Temperature", {"Temperature"}},
+    {"Heat Flux", {"Heat Flux"}},
+    {"Convection", {"Coefficient", "Ambient Temperature"}}};
+} // namespace internal
+
+Teuchos::ParameterList ThermalBoundaryCondition::valid_parameters()
+{
+  Teuchos::ParameterList p("Boundary Condition");
+  p.set("Type", "Temperature",
+        "\"Temperature\": prescribed temperature; \"Heat Flux\": prescribed flux into the "
+        "body; \"Convection\": outward flux Coefficient (T - Ambient Temperature)",
+        choice_validator({"Temperature", "Heat Flux", "Convection"}));
+  p.set("Side Sets", Teuchos::Array<int>(),
+        "the mesh side set ids the condition applies to (at least one) [-]");
+  p.sublist("Temperature", false, "for Type \"Temperature\": T(t) [K]; see TimeFunction")
+      .setParameters(TimeFunction::valid_parameters());
+  p.sublist("Heat Flux", false,
+            "for Type \"Heat Flux\": q(t) into the body [W/m^2]; see TimeFunction")
+      .setParameters(TimeFunction::valid_parameters());
+  p.set("Coefficient", 0.0, "for Type \"Convection\": h, must be >= 0 [W/(m^2 K)]",
+        nonnegative_double_validator());
+  p.sublist("Ambient Temperature", false,
+            "for Type \"Convection\": T_ambient(t) [K]; see TimeFunction")
+      .setParameters(TimeFunction::valid_parameters());
+  return p;
+}
+
+ThermalBoundaryCondition::ThermalBoundaryCondition(const std::string &name,
+                                                   const Teuchos::ParameterList &p,
+                                                   const Mesh &mesh, const std::string &where)
+    : name_(name)
+{
+  const std::string path = where + "/" + name;
+  const std::string type = p.get<std::string>("Type");
+  type_ = internal::thermal_bc_types.at(type);
+  const auto &uses = internal::thermal_bc_parameters.at(type);
+  for (const auto &[other_type, parameters] : internal::thermal_bc_parameters)
+    for (const auto &parameter : parameters)
+      KILN_CHECK_INPUT(std::find(uses.begin(), uses.end(), parameter) != uses.end() ||
+                           !given_in_input(p, parameter),
+                       path + "/\"" + parameter + "\"",
+                       "applies to Type \"" << other_type << "\", not to Type \"" << type
+                                            << "\"; remove it or change the Type");
+
+  const auto &ids = p.get<Teuchos::Array<int>>("Side Sets");
+  KILN_CHECK_INPUT(!ids.empty(), path + "/\"Side Sets\"",
+                   "is missing or empty; list the side set ids the condition applies to, "
+                   "e.g. <Parameter name=\"Side Sets\" type=\"Array(int)\" value=\"{1, 2}\"/>");
+  for (const int id : ids)
+  {
+    std::ostringstream available;
+    for (const auto &s : mesh.side_sets)
+      if (s.id != mesh.gap_side_set)
+        available << (available.tellp() > 0 ? ", " : "") << s.id;
+    KILN_CHECK_INPUT(id != mesh.gap_side_set || id == 0, path + "/\"Side Sets\"",
+                     "side set " << id
+                                 << " is the gap; heat crosses it through Kiln/Thermal/\"Gap "
+                                    "Conductance\". Boundary side sets of this mesh: "
+                                 << available.str());
+    KILN_CHECK_INPUT(mesh.find_side_set(id) != nullptr, path + "/\"Side Sets\"",
+                     "side set " << id << " is not in the mesh; its side sets are "
+                                 << available.str());
+    side_sets_.push_back(id);
+  }
+
+  if (type_ == Type::convection)
+  {
+    coefficient_ = p.get<double>("Coefficient");
+    KILN_CHECK_INPUT(given_in_input(p, "Coefficient"), path + "/\"Coefficient\"",
+                     "is required for Type \"Convection\" (h [W/(m^2 K)])");
+  }
+  const std::string function = uses.back();
+  KILN_CHECK_INPUT(given_in_input(p, function), path + "/" + function,
+                   "is required for Type \"" << type << "\"; give it as a sublist, e.g. "
+                                             << "<ParameterList name=\"" << function
+                                             << "\"><Parameter name=\"Value\" type=\"double\" "
+                                                "value=\"300\"/></ParameterList>");
+  value_ = TimeFunction(p.sublist(function), path + "/" + function);
+}
+} // namespace kiln
