@@ -49,6 +49,11 @@ public:
   /// The solution after run(): temperatures of the owned nodes (dofs().owned_nodes()
   /// order; one unknown per node).
   const NonlinearProblem::Vector &solution() const { return *solution_; }
+  /// The pieces setup() builds, for tests and studies that drive the time loop
+  /// themselves (from an initial state of their own, say).
+  ThermalProblem &thermal_problem() { return *problem_; }
+  NewtonSolver &newton_solver() { return *newton_; }
+  const TimeStepper &time_stepper() const { return *stepper_; }
 
 private:
   void print_header() const;

@@ -1,0 +1,189 @@
+// Convergence of the heat-conduction discretization on a rotated generated mesh, for the
+// decay of one cosine mode between two faces held at T0 (insulated elsewhere):
+//   T(x', t) = T0 + A exp(-lambda t) cos(pi x' / L),   lambda = k pi^2 / (rho c L^2),
+// x' the coordinate along the box's first axis (the box is rotated by phi, theta).
+// - Space: BDF2 with small fixed steps on 4 x 2 x 2 ... 32 x 16 x 16 cells; L2 error of
+//   order 2 +- 0.1.
+// - Time: on uniform Q1 cells the nodal cosine is an exact eigenvector of the discrete
+//   operator (consistent mass, Dirichlet ends), so the semi-discrete solution is known
+//   exactly: T0 + A exp(-lambda_h t) cos(pi x'/L), lambda_h = (k/(rho c)) (6/h^2)
+//   (1 - cos(theta)) / (2 + cos(theta)), theta = pi h / L. The error against it is the
+//   time-stepping error alone: order 1 for backward Euler, 2 for BDF2.
+// KILN_TEST_NP: 2
+#include "unit/physics/heat_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+constexpr double L = 1.0; // box size [m]
+constexpr double T0 = 300.0;
+constexpr double A = 10.0; // mode amplitude [K]
+constexpr double phi = 45.0, theta = -30.0;
+
+std::string deck(const int nx, const int ny, const std::string &method, const double dt)
+{
+  std::string s = R"xml(<ParameterList name="Kiln">
+  <ParameterList name="Mesh">
+    <Parameter name="Gap Side Set" type="int" value="0"/>
+    <ParameterList name="Box">
+      <Parameter name="Size" type="Array(double)" value="{1, 1, 1}"/>
+      <Parameter name="Cells" type="Array(int)" value="{NX, NY, NY}"/>
+      <Parameter name="Phi" type="double" value="45"/>
+      <Parameter name="Theta" type="double" value="-30"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Material">
+    <Parameter name="Density" type="double" value="1"/>
+    <Parameter name="Specific Heat" type="double" value="1"/>
+    <ParameterList name="Conductivity">
+      <Parameter name="Value" type="double" value="1"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Thermal">
+    <Parameter name="Initial Temperature" type="double" value="300"/>
+    <ParameterList name="Boundary Conditions">
+      <ParameterList name="ends">
+        <Parameter name="Type" type="string" value="Temperature"/>
+        <Parameter name="Side Sets" type="Array(int)" value="{1, 2}"/>
+        <ParameterList name="Temperature">
+          <Parameter name="Value" type="double" value="300"/>
+        </ParameterList>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Time Stepping">
+    <Parameter name="Method" type="string" value="METHOD"/>
+    <Parameter name="Initial Step" type="double" value="DT"/>
+    <Parameter name="Maximum Step" type="double" value="DT"/>
+    <Parameter name="Minimum Step" type="double" value="DTMIN"/>
+    <Parameter name="Growth Factor" type="double" value="1"/>
+    <Parameter name="Error Control" type="bool" value="false"/>
+  </ParameterList>
+  <ParameterList name="Solver">
+    <Parameter name="Absolute Tolerance" type="double" value="1e-10"/>
+    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
+  </ParameterList>
+</ParameterList>)xml";
+  std::ostringstream dt_text, dt_min_text;
+  dt_text << std::setprecision(17) << dt;
+  dt_min_text << std::setprecision(17) << dt / 10;
+  kiln_test::replace(s, "NX", std::to_string(nx));
+  kiln_test::replace(s, "NY", std::to_string(ny));
+  kiln_test::replace(s, "METHOD", method);
+  kiln_test::replace(s, "DTMIN", dt_min_text.str());
+  kiln_test::replace(s, "DT", dt_text.str());
+  return s;
+}
+
+/// x' = (A^T x)_0: the coordinate along the box's first axis.
+double box_x(const kiln::Point &x)
+{
+  const auto R = kiln::rotation_matrix(phi, theta);
+  return R[0][0] * x[0] + R[1][0] * x[1] + R[2][0] * x[2];
+}
+
+double mode(const kiln::Point &x)
+{
+  return std::cos(pi * box_x(x) / L);
+}
+
+struct Result
+{
+  std::vector<double> nodal; ///< all nodes
+  std::unique_ptr<kiln::Simulation> sim;
+};
+
+/// Runs from the exact initial state to t_end; the temperatures at t_end.
+Result run(const int nx, const int ny, const std::string &method, const double dt,
+           const double t_end)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  Result r;
+  r.sim = kiln_test::make_simulation(deck(nx, ny, method, dt), comm);
+  kiln::ThermalProblem &problem = r.sim->thermal_problem();
+  kiln_test::Vector x(problem.solution_map());
+  kiln_test::interpolate(
+      *r.sim, [](const kiln::Point &p) { return T0 + A * mode(p); }, x);
+  const auto stats =
+      r.sim->time_stepper().run(problem, r.sim->newton_solver(), x, 0.0, {t_end},
+                                [](double, int, double, const kiln_test::Vector &) {});
+  EXPECT_EQ(stats.steps, static_cast<int>(std::lround(t_end / dt)));
+  r.nodal = kiln_test::all_node_values(*r.sim, x);
+  return r;
+}
+
+double order(const double coarse_error, const double fine_error)
+{
+  return std::log2(coarse_error / fine_error);
+}
+} // namespace
+
+TEST(HeatConvergence, SpatialL2OrderTwo)
+{
+  const double lambda = pi * pi / (L * L); // k / (rho c) = 1
+  // Small steps: the first step (backward Euler) leaves an O(dt^2) error that must stay
+  // well below the spatial error of the finest mesh.
+  const double dt = 2.5e-4, t_end = 5e-3;
+  std::vector<double> errors;
+  for (const int n : {4, 8, 16, 32})
+  {
+    // The solution does not vary across the box: half the cells there keep it cheap.
+    const Result r = run(n, n / 2, "BDF2", dt, t_end);
+    const double decay = std::exp(-lambda * t_end);
+    errors.push_back(kiln_test::l2_error(
+        *r.sim, r.nodal, [&](const kiln::Point &p) { return T0 + A * decay * mode(p); }));
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    std::cout << "cells " << (4 << i) << " x " << (2 << i) << " x " << (2 << i) << ": L2 error "
+              << errors[i] << ", order " << order(errors[i - 1], errors[i]) << "\n";
+  // The asymptotic range: the last two refinements.
+  EXPECT_NEAR(order(errors[1], errors[2]), 2.0, 0.1);
+  EXPECT_NEAR(order(errors[2], errors[3]), 2.0, 0.1);
+}
+
+/// Max nodal error against the exact semi-discrete solution, for steps dt, dt/2, ...
+std::vector<double> temporal_errors(const std::string &method)
+{
+  constexpr int nx = 8;
+  const double h = L / nx;
+  const double c = std::cos(pi * h / L);
+  const double lambda_h = 6.0 / (h * h) * (1.0 - c) / (2.0 + c);
+  const double t_end = 0.1;
+  std::vector<double> errors;
+  for (const double dt : {0.02, 0.01, 0.005, 0.0025})
+  {
+    const Result r = run(nx, 2, method, dt, t_end);
+    double e = 0.0;
+    for (int n = 0; n < r.sim->mesh().n_nodes(); ++n)
+    {
+      const double exact =
+          T0 + A * std::exp(-lambda_h * t_end) * mode(r.sim->mesh().coordinates[n]);
+      e = std::max(e, std::abs(r.nodal[n] - exact));
+    }
+    errors.push_back(e);
+    std::cout << method << " dt " << dt << ": max nodal error " << e << "\n";
+  }
+  return errors;
+}
+
+TEST(HeatConvergence, BackwardEulerOrderOne)
+{
+  const std::vector<double> e = temporal_errors("Backward Euler");
+  for (std::size_t i = 1; i < e.size(); ++i)
+    std::cout << "order " << order(e[i - 1], e[i]) << "\n";
+  EXPECT_NEAR(order(e[2], e[3]), 1.0, 0.1);
+}
+
+TEST(HeatConvergence, Bdf2OrderTwo)
+{
+  const std::vector<double> e = temporal_errors("BDF2");
+  for (std::size_t i = 1; i < e.size(); ++i)
+    std::cout << "order " << order(e[i - 1], e[i]) << "\n";
+  EXPECT_NEAR(order(e[2], e[3]), 2.0, 0.1);
+}
