@@ -335,7 +335,8 @@ template <typename T>
 Validator array_validator(const int size, const bool positive, const std::string &xml_name)
 {
   std::ostringstream req;
-  req << "must have " << (size > 0 ? "exactly " + std::to_string(size) : "at least 1") << " entries"
+  req << "must have "
+      << (size > 0 ? "exactly " + std::to_string(size) + " entries" : "at least 1 entry")
       << (positive ? ", each > 0" : "");
   return Teuchos::rcp(new PredicateValidator(
       xml_name, req.str(),

@@ -16,9 +16,9 @@ PiecewiseLinear::PiecewiseLinear(std::vector<double> x, std::vector<double> y, c
                           << "\"");
   for (std::size_t i = 1; i < x_.size(); ++i)
     KILN_CHECK_INPUT(x_[i] > x_[i - 1], at_x,
-                     "must be strictly increasing, but entry " << i << " (" << x_[i] << names.x_unit
-                                                               << ") <= entry " << i - 1 << " ("
-                                                               << x_[i - 1] << names.x_unit << ")");
+                     "must be strictly increasing (entries counted from 1), but entry "
+                         << i + 1 << " (" << x_[i] << names.x_unit << ") <= entry " << i << " ("
+                         << x_[i - 1] << names.x_unit << ")");
 }
 
 std::size_t PiecewiseLinear::interval(const double x) const

@@ -89,8 +89,8 @@ TimeStepper::TimeStepper(const Teuchos::ParameterList &p, const std::string &whe
                                          : Method::bdf2;
   KILN_CHECK_INPUT(minimum_step_ <= initial_step_ && initial_step_ <= maximum_step_,
                    where + "/\"Initial Step\"",
-                   "= " << initial_step_ << " s must lie between \"Minimum Step\" = "
-                        << minimum_step_ << " s and \"Maximum Step\" = " << maximum_step_ << " s");
+                   "is " << initial_step_ << " s but must lie between \"Minimum Step\" = "
+                         << minimum_step_ << " s and \"Maximum Step\" = " << maximum_step_ << " s");
 }
 
 TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver &newton,
@@ -188,17 +188,21 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
       {
         ++stats.newton_failures;
         dt = h * step_reduction_;
-        *out_ << "  step from t = " << seconds(t) << " with dt = " << seconds(h)
-              << ": Newton did not converge (|F| " << std::scientific << std::setprecision(3)
-              << r.initial_residual_norm << " -> " << r.final_residual_norm << std::defaultfloat
-              << " after " << r.newton_iterations
-              << " iterations); retrying with dt = " << seconds(dt) << "\n";
+        std::ostringstream failure;
+        failure << "Newton did not converge in the step from t = " << seconds(t)
+                << " with dt = " << seconds(h) << " (|F| " << std::scientific
+                << std::setprecision(3) << r.initial_residual_norm << " -> "
+                << r.final_residual_norm << std::defaultfloat << " after " << r.newton_iterations
+                << " iterations)";
         if (dt < minimum_step_)
-          throw RunError(where_ + ": Newton did not converge at t = " + seconds(t + h) +
-                         " and the step fell below \"Minimum Step\" = " + seconds(minimum_step_) +
-                         "; the results up to t = " + seconds(t) +
-                         " are written. Check the boundary conditions and material data, or "
-                         "raise Solver/\"Maximum Iterations\"");
+          throw RunError(where_ + ": " + failure.str() + "; the next step, " + seconds(dt) +
+                         ", would be below \"Minimum Step\" = " + seconds(minimum_step_) +
+                         ". The results up to t = " + seconds(t) +
+                         " are written. If |F| stalled near its tolerance, loosen Solver/"
+                         "\"Absolute Tolerance\" or \"Relative Tolerance\"; otherwise check the "
+                         "boundary conditions and material data, raise Solver/\"Maximum "
+                         "Iterations\", or lower \"Minimum Step\"");
+        *out_ << "  " << failure.str() << "; retrying with dt = " << seconds(dt) << "\n";
         continue;
       }
 

@@ -39,7 +39,8 @@ Teuchos::ParameterList ThermalBoundaryCondition::valid_parameters()
   p.sublist("Heat Flux", false,
             "for Type \"Heat Flux\": q(t) into the body [W/m^2]; see TimeFunction")
       .setParameters(TimeFunction::valid_parameters());
-  p.set("Coefficient", 0.0, "for Type \"Convection\": h, must be >= 0 [W/(m^2 K)]",
+  p.set("Coefficient", 0.0,
+        "for Type \"Convection\", where it is required: h, must be >= 0 [W/(m^2 K)]",
         nonnegative_double_validator());
   p.sublist("Ambient Temperature", false,
             "for Type \"Convection\": T_ambient(t) [K]; see TimeFunction")
@@ -80,8 +81,9 @@ ThermalBoundaryCondition::ThermalBoundaryCondition(const std::string &name,
                                     "Conductance\". Boundary side sets of this mesh: "
                                  << available.str());
     KILN_CHECK_INPUT(mesh.find_side_set(id) != nullptr, path + "/\"Side Sets\"",
-                     "side set " << id << " is not in the mesh; its side sets are "
-                                 << available.str());
+                     "side set " << id << " is not in the mesh; its boundary side sets are "
+                                 << available.str()
+                                 << ". Use one of these ids, or check the mesh file");
     side_sets_.push_back(id);
   }
 
@@ -89,10 +91,11 @@ ThermalBoundaryCondition::ThermalBoundaryCondition(const std::string &name,
   {
     coefficient_ = p.get<double>("Coefficient");
     KILN_CHECK_INPUT(given_in_input(p, "Coefficient"), path + "/\"Coefficient\"",
-                     "is required for Type \"Convection\" (h [W/(m^2 K)])");
+                     "is required for Type \"Convection\" (h [W/(m^2 K)]), e.g. <Parameter "
+                     "name=\"Coefficient\" type=\"double\" value=\"50\"/>");
   }
   const std::string function = uses.back();
-  KILN_CHECK_INPUT(given_in_input(p, function), path + "/" + function,
+  KILN_CHECK_INPUT(given_in_input(p, function), path + "/\"" + function + "\"",
                    "is required for Type \"" << type << "\"; give it as a sublist, e.g. "
                                              << "<ParameterList name=\"" << function
                                              << "\"><Parameter name=\"Value\" type=\"double\" "

@@ -51,7 +51,10 @@ TEST(PiecewiseLinear, ChecksTheTable)
   }
   catch (const kiln::InputError &e)
   {
-    EXPECT_THAT(e.what(), HasSubstr("B/\"X\": must be strictly increasing, but entry 2 (2 s) "
-                                    "<= entry 1 (2 s)"));
+    EXPECT_THAT(
+        e.what(),
+        HasSubstr(
+            "B/\"X\": must be strictly increasing (entries counted from 1), but entry 3 (2 s) "
+            "<= entry 2 (2 s)"));
   }
 }

@@ -116,8 +116,8 @@ TEST(ConductivityModel, NonIncreasingTemperaturesAreAnError)
 {
   const std::string e = error_of(table({250, 300, 290}, {1, 2, 3}));
   EXPECT_THAT(e, HasSubstr(where + "/\"Temperatures\": must be strictly increasing"));
-  EXPECT_THAT(e, HasSubstr("entry 2 (290 K) <= entry 1 (300 K)"));
-  EXPECT_THAT(error_of(table({250, 250}, {1, 2})), HasSubstr("entry 1 (250 K) <= entry 0 (250 K)"));
+  EXPECT_THAT(e, HasSubstr("entry 3 (290 K) <= entry 2 (300 K)"));
+  EXPECT_THAT(error_of(table({250, 250}, {1, 2})), HasSubstr("entry 2 (250 K) <= entry 1 (250 K)"));
 }
 
 TEST(ConductivityModel, TableLengthsMustAgree)

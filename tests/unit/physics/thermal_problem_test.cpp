@@ -494,7 +494,7 @@ TEST(ThermalBoundaryCondition, InputErrors)
   const auto unknown = temperature_on(Teuchos::Array<int>(Teuchos::tuple(1, 99)));
   EXPECT_THROW(make_bc(mesh, unknown), kiln::InputError);
   EXPECT_THAT(bc_error(mesh, unknown),
-              HasSubstr(side_sets + "side set 99 is not in the mesh; its side sets are "
+              HasSubstr(side_sets + "side set 99 is not in the mesh; its boundary side sets are "
                                     "1, 2, 3, 4, 5, 6"));
 
   // The gap side set.
@@ -526,7 +526,7 @@ TEST(ThermalBoundaryCondition, InputErrors)
   no_ambient.set("Coefficient", 10.0);
   EXPECT_THROW(make_bc(mesh, no_ambient), kiln::InputError);
   EXPECT_THAT(bc_error(mesh, no_ambient),
-              HasSubstr(bc_where + "/bad/Ambient Temperature: is required for Type "
+              HasSubstr(bc_where + "/bad/\"Ambient Temperature\": is required for Type "
                                    "\"Convection\""));
   Teuchos::ParameterList no_coefficient = no_ambient;
   no_coefficient.remove("Coefficient");

@@ -130,8 +130,8 @@ TEST(TimeFunction, NonIncreasingTableTimesAreAnError)
 {
   const std::string e = error_of(table({0, 10, 10, 20}, {1, 2, 3, 4}));
   EXPECT_THAT(e, HasSubstr(where + "/\"Times\": must be strictly increasing"));
-  EXPECT_THAT(e, HasSubstr("entry 2 (10) <= entry 1 (10)"));
-  EXPECT_THAT(error_of(table({0, 10, 5}, {1, 2, 3})), HasSubstr("entry 2 (5) <= entry 1 (10)"));
+  EXPECT_THAT(e, HasSubstr("entry 3 (10) <= entry 2 (10)"));
+  EXPECT_THAT(error_of(table({0, 10, 5}, {1, 2, 3})), HasSubstr("entry 3 (5) <= entry 2 (10)"));
 }
 
 TEST(TimeFunction, TableLengthsMustAgree)

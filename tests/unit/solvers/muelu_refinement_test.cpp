@@ -1,7 +1,8 @@
 // MueLu on the heat-conduction Jacobian of the contact box (rotated, split at the gap,
 // the variant-A end temperatures): the Belos iterations per linear solve stay within 20%
-// when the mesh is refined twice by 2 (8^3, 16^3, 32^3 cells; 64^3 in doc/solvers.md), a range
-// check on the mean over the first steps, never a fixed count. KILN_TEST_NP: 2
+// when the mesh is refined twice by 2 (8^3, 16^3, 32^3 cells; 64^3 in doc/solvers.md),
+// a range check on the mean over the first steps, never a fixed count.
+// KILN_TEST_NP: 2
 #include "io/input_reader.hpp"
 #include "unit/physics/heat_test_support.hpp"
 
