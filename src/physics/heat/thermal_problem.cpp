@@ -50,7 +50,7 @@ ThermalProblem::ThermalProblem(const Mesh &mesh, const DofManager &dofs, const M
   for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
     bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh,
                       where + "/Boundary Conditions");
-  find_boundary_faces();
+  find_boundary_faces(where + "/Boundary Conditions");
   compute_dirichlet_scales(initial_temperature_);
 
   const auto &owned_cells = dofs.owned_cells();
@@ -70,8 +70,9 @@ ThermalProblem::ThermalProblem(const Mesh &mesh, const DofManager &dofs, const M
       coordinates_->replaceLocalValue(static_cast<LO>(i), d, mesh.coordinates[owned_nodes[i]][d]);
 }
 
-void ThermalProblem::find_boundary_faces()
+void ThermalProblem::find_boundary_faces(const std::string &where)
 {
+  check_faces_on_boundary(where);
   std::vector<char> owns_cell(mesh_.n_cells(), 0);
   for (const int c : dofs_.owned_cells())
     owns_cell[c] = 1;
@@ -92,6 +93,46 @@ void ThermalProblem::find_boundary_faces()
         }
         else if (owns_cell[set.cells[s]])
           boundary_faces_.push_back({set.cells[s], set.faces[s], b});
+      }
+    }
+}
+
+void ThermalProblem::check_faces_on_boundary(const std::string &where) const
+{
+  if (bcs_.empty())
+    return;
+  // Every cell face by its sorted nodes; a face listed twice is inside the body.
+  using FaceKey = std::array<int, 4>;
+  const auto key_of = [&](const int cell, const int face)
+  {
+    FaceKey key;
+    for (int i = 0; i < 4; ++i)
+      key[i] = mesh_.connectivity[cell][hex_face_nodes[face][i]];
+    std::sort(key.begin(), key.end());
+    return key;
+  };
+  std::vector<FaceKey> all_faces;
+  all_faces.reserve(static_cast<std::size_t>(mesh_.n_cells()) * n_hex_faces);
+  for (int c = 0; c < mesh_.n_cells(); ++c)
+    for (int f = 0; f < n_hex_faces; ++f)
+      all_faces.push_back(key_of(c, f));
+  std::sort(all_faces.begin(), all_faces.end());
+  for (const auto &bc : bcs_)
+    for (const int id : bc.side_sets())
+    {
+      const SideSet &set = *mesh_.find_side_set(id);
+      for (int s = 0; s < set.n_sides(); ++s)
+      {
+        const FaceKey key = key_of(set.cells[s], set.faces[s]);
+        const auto range = std::equal_range(all_faces.begin(), all_faces.end(), key);
+        KILN_CHECK_INPUT(range.second - range.first == 1,
+                         where + "/" + bc.name() + "/\"Side Sets\"",
+                         "side set " << id << " has faces inside the body (cell "
+                                     << set.cells[s] + 1 << ", side " << set.faces[s] + 1
+                                     << " is shared with another cell); boundary conditions "
+                                        "apply to boundary faces only. To make it a gap, set "
+                                        "Kiln/Mesh/\"Gap Side Set\" to "
+                                     << id);
       }
     }
 }

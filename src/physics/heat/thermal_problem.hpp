@@ -58,7 +58,9 @@ private:
     int face;
     int bc; ///< index into bcs_
   };
-  void find_boundary_faces();
+  void find_boundary_faces(const std::string &where);
+  /// Throws InputError if a condition's side set holds a face shared by two cells.
+  void check_faces_on_boundary(const std::string &where) const;
   void compute_dirichlet_scales(double initial_temperature);
   /// Drops the rows of constrained nodes (node_of_local[i]: the mesh node of local node i).
   void drop_constrained_rows(const std::vector<int> &node_of_local, LocalSystem &local) const;
