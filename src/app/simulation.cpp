@@ -106,6 +106,19 @@ void Simulation::setup()
     stepper_ = std::make_unique<TimeStepper>(params_.sublist("Time Stepping"),
                                              input_path_ + ": Kiln/Time Stepping", out_);
   }
+  // The gap opening of the initial geometry, n . (x_b - x_a), NaN off the gap: the same at
+  // every output until the mechanics moves the nodes.
+  std::vector<double> opening_of_node(mesh_.n_nodes(), std::numeric_limits<double>::quiet_NaN());
+  for (const auto &p : mesh_.gap_pairs)
+  {
+    double g = 0.0;
+    for (int d = 0; d < 3; ++d)
+      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] - mesh_.coordinates[p.node_a][d]);
+    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
+  }
+  gap_opening_.clear();
+  for (const int n : dofs_->owned_nodes())
+    gap_opening_.push_back(opening_of_node[n]);
   print_header();
 }
 
@@ -210,19 +223,7 @@ void Simulation::output(const double time, const int cycle, const double dt,
   for (const int n : dofs_->owned_nodes())
     temperature.push_back(values[map.getLocalElement(dofs_->dof(n, Field::T))]);
   writer_->write_node_field("temperature", 1, temperature);
-  // The gap opening of the initial geometry: n . (x_b - x_a), NaN off the gap.
-  std::vector<double> opening_of_node(mesh_.n_nodes(), std::numeric_limits<double>::quiet_NaN());
-  for (const auto &p : mesh_.gap_pairs)
-  {
-    double g = 0.0;
-    for (int d = 0; d < 3; ++d)
-      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] - mesh_.coordinates[p.node_a][d]);
-    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
-  }
-  std::vector<double> opening;
-  for (const int n : dofs_->owned_nodes())
-    opening.push_back(opening_of_node[n]);
-  writer_->write_node_field("gap_opening", 1, opening);
+  writer_->write_node_field("gap_opening", 1, gap_opening_);
   writer_->end_step();
   *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
 }

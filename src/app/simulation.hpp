@@ -72,5 +72,6 @@ private:
   std::unique_ptr<TimeStepper> stepper_;
   std::unique_ptr<Hdf5XdmfWriter> writer_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
+  std::vector<double> gap_opening_; ///< per owned node [m]; NaN off the gap
 };
 } // namespace kiln

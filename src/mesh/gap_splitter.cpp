@@ -13,24 +13,13 @@ namespace kiln
 {
 namespace internal
 {
-using FaceKey = std::array<int, 4>;
-
-FaceKey face_key(const Mesh &mesh, const int cell, const int face)
-{
-  FaceKey key;
-  for (int i = 0; i < 4; ++i)
-    key[i] = mesh.connectivity[cell][hex_face_nodes[face][i]];
-  std::sort(key.begin(), key.end());
-  return key;
-}
-
 /// Each face of the mesh with the (cell, local face) pairs that share it.
 std::map<FaceKey, std::vector<std::pair<int, int>>> face_cells(const Mesh &mesh)
 {
   std::map<FaceKey, std::vector<std::pair<int, int>>> faces;
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (int f = 0; f < n_hex_faces; ++f)
-      faces[face_key(mesh, c, f)].emplace_back(c, f);
+      faces[mesh.face_key(c, f)].emplace_back(c, f);
   return faces;
 }
 
@@ -100,10 +89,10 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
   }
 
   const auto faces = internal::face_cells(mesh);
-  std::set<internal::FaceKey> cut;
+  std::set<FaceKey> cut;
   for (int s = 0; s < side_set->n_sides(); ++s)
   {
-    const auto key = internal::face_key(mesh, side_set->cells[s], side_set->faces[s]);
+    const auto key = mesh.face_key(side_set->cells[s], side_set->faces[s]);
     if (faces.at(key).size() == 2)
       cut.insert(key);
   }

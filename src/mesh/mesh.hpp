@@ -55,6 +55,10 @@ struct GapFace
   std::array<int, 4> node_b{-1, -1, -1, -1};
 };
 
+/// A cell face by its node ids in increasing order: two cells share a face exactly when
+/// their faces have the same key.
+using FaceKey = std::array<int, 4>;
+
 struct Mesh
 {
   std::vector<Point> coordinates;               ///< per node [m]
@@ -74,5 +78,7 @@ struct Mesh
   const SideSet *find_side_set(int id) const;
   /// The distinct block ids, sorted.
   std::vector<int> block_ids() const;
+  /// The key of local face `face` (0..5) of `cell`.
+  FaceKey face_key(int cell, int face) const;
 };
 } // namespace kiln

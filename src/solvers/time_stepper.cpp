@@ -144,7 +144,6 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
   double k2 = 0.0; // t_{n-1} - t_{n-2}
   int n_past = 0;  // accepted steps so far
   double dt = initial_step_;
-  const int n_attempts_max = maximum_steps_;
   int attempts = 0;
 
   for (; next < output_times.size(); ++next)
@@ -152,8 +151,8 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
     const double t_out = output_times[next];
     while (!same_time(t, t_out))
     {
-      if (++attempts > n_attempts_max)
-        throw RunError(where_ + "/\"Maximum Steps\": " + std::to_string(n_attempts_max) +
+      if (++attempts > maximum_steps_)
+        throw RunError(where_ + "/\"Maximum Steps\": " + std::to_string(maximum_steps_) +
                        " steps were taken before t = " + seconds(t_out) +
                        " (now at t = " + seconds(t) + "); raise it or the step limits");
       // The step: limited, then fitted to the output time.
@@ -260,9 +259,6 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
       ++stats.steps;
       stats.newton_iterations += r.newton_iterations;
       stats.linear_iterations += r.linear_iterations;
-      if (r.newton_iterations > 0)
-        stats.max_linear_per_newton = std::max(
-            stats.max_linear_per_newton, double(r.linear_iterations) / double(r.newton_iterations));
       dt = h * factor;
       if (h < wanted && factor >= 1.0)
         dt = std::max(dt, wanted);

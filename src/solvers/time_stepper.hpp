@@ -48,12 +48,11 @@ public:
 
   struct Statistics
   {
-    int steps = 0;                      ///< accepted
-    int error_rejections = 0;           ///< repeated because of the error estimate
-    int newton_failures = 0;            ///< repeated because Newton did not converge
-    int newton_iterations = 0;          ///< summed over accepted steps
-    int linear_iterations = 0;          ///< summed over accepted steps
-    double max_linear_per_newton = 0.0; ///< the largest per-step average
+    int steps = 0;             ///< accepted
+    int error_rejections = 0;  ///< repeated because of the error estimate
+    int newton_failures = 0;   ///< repeated because Newton did not converge
+    int newton_iterations = 0; ///< summed over accepted steps
+    int linear_iterations = 0; ///< summed over accepted steps
   };
 
   /// Integrates from (t0, x) through output_times (increasing, >= t0); x holds the state

@@ -36,7 +36,7 @@ ThermalProblem::ThermalProblem(const Mesh &mesh, const DofManager &dofs, const M
                                const Teuchos::ParameterList &thermal, const std::string &where)
     : mesh_(mesh), dofs_(dofs), assembler_(mesh, dofs),
       conduction_(material.heat_capacity(), material.conductivity()),
-      conductivity_(material.conductivity()), gap_(thermal.get<double>("Gap Conductance")),
+      gap_(thermal.get<double>("Gap Conductance")),
       initial_temperature_(thermal.get<double>("Initial Temperature")),
       dirichlet_bc_(mesh.n_nodes(), -1), dirichlet_scale_(mesh.n_nodes(), 0.0)
 {
@@ -50,13 +50,12 @@ ThermalProblem::ThermalProblem(const Mesh &mesh, const DofManager &dofs, const M
   for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
     bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh,
                       where + "/Boundary Conditions");
-  find_boundary_faces(where + "/Boundary Conditions");
-  compute_dirichlet_scales(initial_temperature_);
-
-  const auto &owned_cells = dofs.owned_cells();
   std::vector<char> owns_cell(mesh.n_cells(), 0);
-  for (const int c : owned_cells)
+  for (const int c : dofs.owned_cells())
     owns_cell[c] = 1;
+  find_boundary_faces(owns_cell, where + "/Boundary Conditions");
+  compute_dirichlet_scales(material.conductivity().value(initial_temperature_));
+
   for (int k = 0; k < static_cast<int>(mesh.gap_faces.size()); ++k)
     if (owns_cell[mesh.gap_faces[k].cell_a])
       owned_gap_faces_.push_back(k);
@@ -70,12 +69,10 @@ ThermalProblem::ThermalProblem(const Mesh &mesh, const DofManager &dofs, const M
       coordinates_->replaceLocalValue(static_cast<LO>(i), d, mesh.coordinates[owned_nodes[i]][d]);
 }
 
-void ThermalProblem::find_boundary_faces(const std::string &where)
+void ThermalProblem::find_boundary_faces(const std::vector<char> &owns_cell,
+                                         const std::string &where)
 {
   check_faces_on_boundary(where);
-  std::vector<char> owns_cell(mesh_.n_cells(), 0);
-  for (const int c : dofs_.owned_cells())
-    owns_cell[c] = 1;
   for (int b = 0; b < static_cast<int>(bcs_.size()); ++b)
     for (const int id : bcs_[b].side_sets())
     {
@@ -101,21 +98,12 @@ void ThermalProblem::check_faces_on_boundary(const std::string &where) const
 {
   if (bcs_.empty())
     return;
-  // Every cell face by its sorted nodes; a face listed twice is inside the body.
-  using FaceKey = std::array<int, 4>;
-  const auto key_of = [&](const int cell, const int face)
-  {
-    FaceKey key;
-    for (int i = 0; i < 4; ++i)
-      key[i] = mesh_.connectivity[cell][hex_face_nodes[face][i]];
-    std::sort(key.begin(), key.end());
-    return key;
-  };
+  // Every cell face by its key; a face listed twice is inside the body.
   std::vector<FaceKey> all_faces;
   all_faces.reserve(static_cast<std::size_t>(mesh_.n_cells()) * n_hex_faces);
   for (int c = 0; c < mesh_.n_cells(); ++c)
     for (int f = 0; f < n_hex_faces; ++f)
-      all_faces.push_back(key_of(c, f));
+      all_faces.push_back(mesh_.face_key(c, f));
   std::sort(all_faces.begin(), all_faces.end());
   for (const auto &bc : bcs_)
     for (const int id : bc.side_sets())
@@ -123,7 +111,7 @@ void ThermalProblem::check_faces_on_boundary(const std::string &where) const
       const SideSet &set = *mesh_.find_side_set(id);
       for (int s = 0; s < set.n_sides(); ++s)
       {
-        const FaceKey key = key_of(set.cells[s], set.faces[s]);
+        const FaceKey key = mesh_.face_key(set.cells[s], set.faces[s]);
         const auto range = std::equal_range(all_faces.begin(), all_faces.end(), key);
         KILN_CHECK_INPUT(range.second - range.first == 1,
                          where + "/" + bc.name() + "/\"Side Sets\"",
@@ -137,9 +125,8 @@ void ThermalProblem::check_faces_on_boundary(const std::string &where) const
     }
 }
 
-void ThermalProblem::compute_dirichlet_scales(const double initial_temperature)
+void ThermalProblem::compute_dirichlet_scales(const double k)
 {
-  const double k = conductivity_.value(initial_temperature);
   ElementValues fe;
   for (int c = 0; c < mesh_.n_cells(); ++c)
   {

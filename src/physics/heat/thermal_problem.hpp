@@ -58,10 +58,13 @@ private:
     int face;
     int bc; ///< index into bcs_
   };
-  void find_boundary_faces(const std::string &where);
+  /// Temperature-BC nodes, and the flux and convection faces of the owned cells
+  /// (owns_cell: per cell).
+  void find_boundary_faces(const std::vector<char> &owns_cell, const std::string &where);
   /// Throws InputError if a condition's side set holds a face shared by two cells.
   void check_faces_on_boundary(const std::string &where) const;
-  void compute_dirichlet_scales(double initial_temperature);
+  /// dirichlet_scale_ with conductivity k [W/(m K)].
+  void compute_dirichlet_scales(double k);
   /// Drops the rows of constrained nodes (node_of_local[i]: the mesh node of local node i).
   void drop_constrained_rows(const std::vector<int> &node_of_local, LocalSystem &local) const;
   void add_cells(const double *T, const double *b);
@@ -73,7 +76,6 @@ private:
   const DofManager &dofs_;
   Assembler assembler_;
   HeatConductionKernel conduction_;
-  ConductivityModel conductivity_;
   GapConductanceKernel gap_;
   double initial_temperature_;
   std::vector<ThermalBoundaryCondition> bcs_;

@@ -1,0 +1,177 @@
+// Tests solvers/time_stepper: on y' = -lambda y (a few unknowns per rank, diagonal
+// Jacobian) the steps land exactly on the output times, the error control meets tighter
+// tolerances with more steps and repeats steps it rejects, and a failed Newton solve is
+// repeated with a smaller step.
+// KILN_TEST_NP: 1 2
+#include "base/errors.hpp"
+#include "discretization/nonlinear_problem.hpp"
+#include "solvers/newton_solver.hpp"
+#include "solvers/time_stepper.hpp"
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_oblackholestream.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+using kiln::NonlinearProblem;
+using kiln::TimeStepper;
+using Teuchos::RCP;
+
+/// F(x) = xdot + lambda x with xdot = a x + b; J = (a + lambda) I. With `max_step` > 0,
+/// a step longer than it (a < 1/max_step for backward Euler) gives a NaN residual, which
+/// Newton reports as not converged.
+class Decay final : public kiln::TransientProblem
+{
+public:
+  Decay(const double lambda, const double max_step) : lambda_(lambda), max_step_(max_step)
+  {
+    const auto comm = Teuchos::DefaultComm<int>::getComm();
+    map_ = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(3 * comm->getSize()), 0, comm));
+    auto graph = Teuchos::rcp(new Graph(map_, 1));
+    for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i)
+    {
+      const auto gid = map_->getGlobalElement(static_cast<int>(i));
+      graph->insertGlobalIndices(gid, Teuchos::tuple(gid));
+    }
+    graph->fillComplete();
+    graph_ = graph;
+    b_ = Teuchos::rcp(new Vector(map_));
+  }
+  RCP<const Map> solution_map() const override { return map_; }
+  RCP<const Graph> jacobian_graph() const override { return graph_; }
+  void set_time_derivative(double, const double a, const Vector &b) override
+  {
+    a_ = a;
+    Tpetra::deep_copy(*b_, b);
+  }
+  void evaluate(const Vector &x, Vector *f, Matrix *J) override
+  {
+    const bool too_long = max_step_ > 0.0 && a_ < 1.0 / max_step_ - 1e-12;
+    if (f != nullptr)
+    {
+      f->update(a_ + lambda_, x, 1.0, *b_, 0.0);
+      if (too_long)
+        f->putScalar(std::numeric_limits<double>::quiet_NaN());
+    }
+    if (J != nullptr)
+    {
+      J->resumeFill();
+      J->setAllToScalar(a_ + lambda_);
+      J->fillComplete();
+    }
+  }
+
+private:
+  double lambda_;
+  double max_step_;
+  double a_ = 0.0;
+  RCP<const Map> map_;
+  RCP<const Graph> graph_;
+  RCP<Vector> b_;
+};
+
+struct Outcome
+{
+  TimeStepper::Statistics stats;
+  std::vector<double> times; ///< seen by the output function
+  double error = 0.0;        ///< max |y - exp(-lambda t)| at the last output time
+};
+
+Outcome run(const Teuchos::ParameterList &stepping, const std::vector<double> &output_times,
+            const double lambda = 2.0, const double max_step = 0.0)
+{
+  auto problem = Teuchos::rcp(new Decay(lambda, max_step));
+  auto quiet = Teuchos::getFancyOStream(Teuchos::rcp(new Teuchos::oblackholestream));
+  Teuchos::ParameterList solver = kiln::NewtonSolver::valid_parameters();
+  solver.set("Absolute Tolerance", 1e-13);
+  solver.set("Relative Tolerance", 1e-13);
+  solver.sublist("Linear Solver").set("Preconditioner Type", "None");
+  kiln::NewtonSolver newton(solver, problem, quiet);
+  Teuchos::ParameterList p = TimeStepper::valid_parameters();
+  p.setParameters(stepping);
+  const TimeStepper stepper(p, "test.xml: Kiln/Time Stepping", quiet);
+  NonlinearProblem::Vector x(problem->solution_map());
+  x.putScalar(1.0);
+  Outcome r;
+  r.stats = stepper.run(*problem, newton, x, 0.0, output_times,
+                        [&](const double t, int, double, const NonlinearProblem::Vector &)
+                        { r.times.push_back(t); });
+  NonlinearProblem::Vector exact(problem->solution_map());
+  exact.putScalar(std::exp(-lambda * output_times.back()));
+  exact.update(1.0, x, -1.0);
+  r.error = exact.normInf();
+  return r;
+}
+
+Teuchos::ParameterList stepping(const std::string &method, const double initial,
+                                const double maximum, const bool error_control,
+                                const double rtol = 1e-3)
+{
+  Teuchos::ParameterList p;
+  p.set("Method", method);
+  p.set("Initial Step", initial);
+  p.set("Maximum Step", maximum);
+  p.set("Error Control", error_control);
+  p.set("Relative Error Tolerance", rtol);
+  p.set("Absolute Error Tolerance", 1e-12);
+  return p;
+}
+} // namespace
+
+TEST(TimeStepper, LandsExactlyOnEveryOutputTime)
+{
+  const std::vector<double> times{0.0, 0.3, 0.35, 1.0};
+  for (const char *method : {"BDF2", "Backward Euler"})
+  {
+    const Outcome r = run(stepping(method, 0.1, 0.25, false), times);
+    EXPECT_EQ(r.times, times) << method;
+    EXPECT_EQ(r.stats.error_rejections, 0);
+    EXPECT_EQ(r.stats.newton_failures, 0);
+  }
+}
+
+TEST(TimeStepper, TighterToleranceGivesSmallerErrorWithMoreSteps)
+{
+  for (const char *method : {"BDF2", "Backward Euler"})
+  {
+    const Outcome loose = run(stepping(method, 0.01, 1.0, true, 1e-3), {2.0});
+    const Outcome tight = run(stepping(method, 0.01, 1.0, true, 1e-5), {2.0});
+    std::cout << method << ": rtol 1e-3: " << loose.stats.steps << " steps, error " << loose.error
+              << "; rtol 1e-5: " << tight.stats.steps << " steps, error " << tight.error << "\n";
+    EXPECT_GT(tight.stats.steps, loose.stats.steps) << method;
+    EXPECT_LT(tight.error, loose.error / 10) << method;
+  }
+}
+
+TEST(TimeStepper, RejectsStepsTheErrorEstimateFindsTooLong)
+{
+  // Steps of 0.5 s on a decay rate of 2 /s: the first two (no estimate yet) are taken, the
+  // next is rejected by the estimate and repeated shorter.
+  const Outcome r = run(stepping("BDF2", 0.5, 0.5, true, 1e-4), {3.0});
+  EXPECT_GT(r.stats.error_rejections, 0);
+  EXPECT_EQ(r.times, std::vector<double>{3.0});
+}
+
+TEST(TimeStepper, FailedNewtonSolveIsRepeatedWithASmallerStep)
+{
+  Teuchos::ParameterList p = stepping("Backward Euler", 1.0, 1.0, false);
+  p.set("Step Reduction", 0.25);
+  const Outcome r = run(p, {2.0}, 2.0, 0.3); // steps over 0.3 s fail
+  // 1.0 s fails and 0.25 s passes; each time the step grows back past 0.3 s it fails
+  // again and is repeated shorter, so the run goes on to the end.
+  EXPECT_GE(r.stats.newton_failures, 1);
+  EXPECT_GT(r.stats.steps, r.stats.newton_failures);
+  EXPECT_EQ(r.times, std::vector<double>{2.0});
+  EXPECT_LT(r.error, 0.1);
+}
+
+TEST(TimeStepper, StepBelowMinimumIsARunError)
+{
+  Teuchos::ParameterList p = stepping("Backward Euler", 1.0, 1.0, false);
+  p.set("Minimum Step", 0.5);
+  EXPECT_THROW(run(p, {2.0}, 2.0, 0.3), kiln::RunError);
+}
