@@ -8,7 +8,7 @@
 #include "mesh/gap_splitter.hpp"
 #include "mesh/mesh_factory.hpp"
 #include "mesh/metis_partitioner.hpp"
-#include "physics/heat/thermal_problem.hpp"
+#include "physics/coupled_problem.hpp"
 #include "physics/materials/material.hpp"
 #include "solvers/newton_solver.hpp"
 #include "solvers/time_stepper.hpp"
@@ -49,6 +49,12 @@ Teuchos::ParameterList Simulation::valid_parameters()
 {
   Teuchos::ParameterList p("Kiln");
   p.set("Problem Name", "", "a title printed in the log [-]");
+  p.set("Physics", "Heat Conduction",
+        "the fields solved for: \"Heat Conduction\" (temperature; block Thermal), "
+        "\"Thermo-Elasticity\" (temperature and displacement in one Newton solve; blocks "
+        "Thermal and Mechanics) or \"Elasticity\" (displacement at T = Reference "
+        "Temperature; block Mechanics)",
+        choice_validator({"Heat Conduction", "Thermo-Elasticity", "Elasticity"}));
   p.sublist("Mesh", false, "the mesh; see MeshFactory")
       .setParameters(MeshFactory::valid_parameters());
   p.sublist("Material", false, "material properties; see Material")
@@ -56,7 +62,11 @@ Teuchos::ParameterList Simulation::valid_parameters()
   p.sublist("Thermal", false,
             "heat conduction: initial state, boundary conditions, gap conductance; see "
             "doc/heat.md")
-      .setParameters(ThermalProblem::valid_parameters());
+      .setParameters(CoupledProblem::valid_thermal_parameters());
+  p.sublist("Mechanics", false,
+            "quasi-static small-strain thermo-elasticity: body force, boundary conditions; see "
+            "doc/mechanics.md")
+      .setParameters(CoupledProblem::valid_mechanics_parameters());
   p.sublist("Time Stepping", false, "implicit time integration; see TimeStepper")
       .setParameters(TimeStepper::valid_parameters());
   p.sublist("Solver", false, "Newton (NOX) and linear solver (Belos, MueLu); see doc/solvers.md")
@@ -78,6 +88,22 @@ Simulation::Simulation(const Teuchos::ParameterList &input, const std::string &i
                      parameter_path(input_path_, "Kiln/Output", "Times"),
                      "output times must be >= 0 and increasing; entry " << i + 1 << " is "
                                                                         << times[i]);
+  const std::string physics = params_.get<std::string>("Physics");
+  const bool thermal = physics != "Elasticity";
+  const bool mechanics = physics != "Heat Conduction";
+  KILN_CHECK_INPUT(thermal || !given_in_input(params_, "Thermal"),
+                   parameter_path(input_path_, "Kiln", "Thermal"),
+                   "is given but Kiln/\"Physics\" is \"" << physics
+                                                         << "\", which has no temperature; "
+                                                            "remove it or set Physics to "
+                                                            "\"Thermo-Elasticity\"");
+  KILN_CHECK_INPUT(mechanics || !given_in_input(params_, "Mechanics"),
+                   parameter_path(input_path_, "Kiln", "Mechanics"),
+                   "is given but Kiln/\"Physics\" is \"" << physics
+                                                         << "\", which has no displacement; "
+                                                            "remove it or set Physics to "
+                                                            "\"Thermo-Elasticity\"");
+  layout_ = DofLayout{thermal, mechanics, false};
 }
 
 Simulation::~Simulation() = default;
@@ -95,30 +121,18 @@ void Simulation::setup()
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
     cell_rank_ = partition_cells(mesh_, *comm_, input_path_ + ": Kiln/Mesh");
-    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, DofLayout{1, false});
+    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
     const Material material(params_.sublist("Material"), input_path_ + ": Kiln/Material");
-    problem_ = Teuchos::rcp(new ThermalProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
-                                               input_path_ + ": Kiln/Thermal"));
+    problem_ =
+        Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
+                                        params_.sublist("Mechanics"), input_path_ + ": Kiln"));
     newton_ = std::make_unique<NewtonSolver>(params_.sublist("Solver"), problem_, out_);
     stepper_ = std::make_unique<TimeStepper>(params_.sublist("Time Stepping"),
                                              input_path_ + ": Kiln/Time Stepping", out_);
   }
-  // The gap opening of the initial geometry, n . (x_b - x_a), NaN off the gap: the same at
-  // every output until the mechanics moves the nodes.
-  std::vector<double> opening_of_node(mesh_.n_nodes(), std::numeric_limits<double>::quiet_NaN());
-  for (const auto &p : mesh_.gap_pairs)
-  {
-    double g = 0.0;
-    for (int d = 0; d < 3; ++d)
-      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] - mesh_.coordinates[p.node_a][d]);
-    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
-  }
-  gap_opening_.clear();
-  for (const int n : dofs_->owned_nodes())
-    gap_opening_.push_back(opening_of_node[n]);
   print_header();
 }
 
@@ -208,7 +222,11 @@ void Simulation::print_header() const
   };
   out << "partition (METIS k-way): cells per rank " << balance(cells) << "; owned nodes per rank "
       << balance(nodes) << "\n";
-  out << "unknowns: " << dofs_->n_global_dofs() << " (temperature at every node)\n";
+  out << "unknowns: " << dofs_->n_global_dofs() << " ("
+      << (layout_.temperature && layout_.displacement ? "temperature and displacement"
+          : layout_.temperature                       ? "temperature"
+                                                      : "displacement")
+      << " at every node)\n";
 }
 
 void Simulation::output(const double time, const int cycle, const double dt,
@@ -216,16 +234,62 @@ void Simulation::output(const double time, const int cycle, const double dt,
 {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
   writer_->begin_step(time, cycle, dt);
-  const auto values = x.getData();
-  const auto &map = *x.getMap();
-  std::vector<double> temperature;
-  temperature.reserve(dofs_->owned_nodes().size());
-  for (const int n : dofs_->owned_nodes())
-    temperature.push_back(values[map.getLocalElement(dofs_->dof(n, Field::T))]);
-  writer_->write_node_field("temperature", 1, temperature);
-  writer_->write_node_field("gap_opening", 1, gap_opening_);
+  if (layout_.temperature)
+    writer_->write_node_field("temperature", 1, problem_->node_temperatures(x));
+  std::vector<Point> u(dofs_->owned_nodes().size(), Point{});
+  if (layout_.displacement)
+  {
+    u = problem_->node_displacements(x);
+    std::vector<double> values;
+    values.reserve(3 * u.size());
+    for (const Point &v : u)
+      values.insert(values.end(), v.begin(), v.end());
+    writer_->write_node_field("displacement", 3, values);
+    const auto cells = problem_->cell_averages(x);
+    std::vector<double> stress, strain, thermal_strain;
+    for (const auto &c : cells)
+    {
+      stress.insert(stress.end(), c.stress.begin(), c.stress.end());
+      strain.insert(strain.end(), c.strain.begin(), c.strain.end());
+      thermal_strain.insert(thermal_strain.end(), c.thermal_strain.begin(), c.thermal_strain.end());
+    }
+    writer_->write_cell_field("stress", 6, stress);
+    writer_->write_cell_field("strain", 6, strain);
+    writer_->write_cell_field("thermal_strain", 6, thermal_strain);
+  }
+  writer_->write_node_field("gap_opening", 1, gap_opening(u));
   writer_->end_step();
   *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
+}
+
+std::vector<double> Simulation::gap_opening(const std::vector<Point> &u_owned) const
+{
+  // n . (x_b + u_b - x_a - u_a) at both nodes of each pair, NaN off the gap. The mesh is
+  // replicated; the displacement of every node is summed over the ranks.
+  const int n_nodes = mesh_.n_nodes();
+  std::vector<double> local(3 * static_cast<std::size_t>(n_nodes), 0.0), u(local.size(), 0.0);
+  if (layout_.displacement)
+  {
+    const auto &owned = dofs_->owned_nodes();
+    for (std::size_t i = 0; i < owned.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        local[3 * owned[i] + d] = u_owned[i][d];
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
+                       u.data());
+  }
+  std::vector<double> opening_of_node(n_nodes, std::numeric_limits<double>::quiet_NaN());
+  for (const auto &p : mesh_.gap_pairs)
+  {
+    double g = 0.0;
+    for (int d = 0; d < 3; ++d)
+      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] + u[3 * p.node_b + d] -
+                          mesh_.coordinates[p.node_a][d] - u[3 * p.node_a + d]);
+    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
+  }
+  std::vector<double> result;
+  for (const int n : dofs_->owned_nodes())
+    result.push_back(opening_of_node[n]);
+  return result;
 }
 
 void Simulation::write_mesh(const std::string &path) const

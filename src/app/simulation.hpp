@@ -18,7 +18,7 @@ namespace kiln
 {
 class Hdf5XdmfWriter;
 class NewtonSolver;
-class ThermalProblem;
+class CoupledProblem;
 class TimeStepper;
 
 class Simulation
@@ -46,18 +46,21 @@ public:
   const DofManager &dofs() const { return *dofs_; }
   /// The output file path without extension.
   std::string output_base() const;
-  /// The solution after run(): temperatures of the owned nodes (dofs().owned_nodes()
-  /// order; one unknown per node).
+  /// The solution after run(), the unknowns of the owned nodes (CoupledProblem has
+  /// their physical values).
   const NonlinearProblem::Vector &solution() const { return *solution_; }
   /// The pieces setup() builds, for tests and studies that drive the time loop
   /// themselves (from an initial state of their own, say).
-  ThermalProblem &thermal_problem() { return *problem_; }
+  CoupledProblem &problem() { return *problem_; }
   NewtonSolver &newton_solver() { return *newton_; }
   const TimeStepper &time_stepper() const { return *stepper_; }
 
 private:
   void print_header() const;
   void output(double time, int cycle, double dt, const NonlinearProblem::Vector &x);
+  /// n . (x_b + u_b - x_a - u_a) [m] at the owned nodes (NaN off the gap); u_owned: the
+  /// displacement of the owned nodes (ignored without displacement).
+  std::vector<double> gap_opening(const std::vector<Point> &u_owned) const;
 
   Teuchos::ParameterList params_;
   std::string input_path_;
@@ -67,11 +70,11 @@ private:
   Mesh mesh_;
   std::vector<int> cell_rank_;
   std::unique_ptr<DofManager> dofs_;
-  Teuchos::RCP<ThermalProblem> problem_;
+  DofLayout layout_;
+  Teuchos::RCP<CoupledProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
   std::unique_ptr<Hdf5XdmfWriter> writer_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
-  std::vector<double> gap_opening_; ///< per owned node [m]; NaN off the gap
 };
 } // namespace kiln

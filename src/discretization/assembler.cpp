@@ -21,7 +21,7 @@ void for_each_block(const Mesh &mesh, const DofManager &dofs, const std::vector<
   const auto add_node = [&](const int n)
   {
     for (int f = 0; f < F; ++f)
-      gids.push_back(dofs.dof(n, static_cast<Field>(f)));
+      gids.push_back(dofs.node_dof(n, f));
   };
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (use_cell[c])
@@ -210,7 +210,7 @@ std::vector<LO> Assembler::cell_lids(const int cell) const
   std::vector<LO> lids;
   for (const int n : mesh_.connectivity[cell])
     for (int f = 0; f < dofs_.n_node_fields(); ++f)
-      lids.push_back(lid(dofs_.dof(n, static_cast<Field>(f))));
+      lids.push_back(lid(dofs_.node_dof(n, f)));
   return lids;
 }
 
@@ -221,7 +221,7 @@ std::vector<LO> Assembler::face_lids(const int cell, const int face) const
   {
     const int n = mesh_.connectivity[cell][hex_face_nodes[face][i]];
     for (int f = 0; f < dofs_.n_node_fields(); ++f)
-      lids.push_back(lid(dofs_.dof(n, static_cast<Field>(f))));
+      lids.push_back(lid(dofs_.node_dof(n, f)));
   }
   return lids;
 }
@@ -233,7 +233,7 @@ std::vector<LO> Assembler::gap_face_lids(const int gap_face) const
   const auto add = [&](const int n)
   {
     for (int f = 0; f < dofs_.n_node_fields(); ++f)
-      lids.push_back(lid(dofs_.dof(n, static_cast<Field>(f))));
+      lids.push_back(lid(dofs_.node_dof(n, f)));
   };
   for (int i = 0; i < 4; ++i)
     add(mesh_.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]]);

@@ -18,7 +18,7 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
 
 DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
                        const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const DofLayout layout)
-    : layout_(layout), n_nodes_(mesh.n_nodes())
+    : layout_(layout), n_node_fields_(layout.n_node_fields()), n_nodes_(mesh.n_nodes())
 {
   const int rank = comm->getRank();
   node_owner_ = node_owners(mesh, cell_rank);
@@ -64,10 +64,10 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
   const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs)
   {
     std::vector<GO> gids;
-    gids.reserve(nodes.size() * layout_.n_node_fields + pairs.size());
+    gids.reserve(nodes.size() * n_node_fields_ + pairs.size());
     for (const int n : nodes)
-      for (int f = 0; f < layout_.n_node_fields; ++f)
-        gids.push_back(dof(n, static_cast<Field>(f)));
+      for (int s = 0; s < n_node_fields_; ++s)
+        gids.push_back(node_dof(n, s));
     for (const int k : pairs)
       gids.push_back(contact_dof(k));
     return gids;

@@ -4,8 +4,9 @@
 /// Cells are owned as the partitioner says; a node is owned by the lowest rank
 /// among its cells; a gap pair (and its contact unknown) by the owner of its
 /// node_a. With F unknowns per node (DofLayout: 1 for heat conduction alone,
-/// 4 with displacement), unknowns by global id:
-///   F n + f          node n, field f (0 temperature, 1-3 displacement x, y, z)
+/// 3 for displacement alone, 4 for both), unknowns by global id:
+///   F n + s          node n, slot s of the node's fields in the order temperature,
+///                    displacement x, y, z (the fields the layout has: DofLayout::slot)
 ///   F N + k          the contact unknown of gap pair k (N = number of nodes),
 ///                    when the layout has contact
 /// Owned maps hold this rank's unknowns; overlap maps add those of every node
@@ -41,8 +42,21 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
 /// Which unknowns the system has.
 struct DofLayout
 {
-  int n_node_fields = 4; ///< 1: temperature; 4: temperature and displacement
-  bool contact = true;   ///< one contact unknown per gap pair
+  bool temperature = true;  ///< a temperature unknown per node
+  bool displacement = true; ///< three displacement unknowns per node
+  bool contact = true;      ///< one contact unknown per gap pair
+
+  int n_node_fields() const { return (temperature ? 1 : 0) + (displacement ? 3 : 0); }
+  /// The index of field f among a node's unknowns, or -1 if the layout lacks it.
+  int slot(const Field f) const
+  {
+    if (f == Field::T)
+      return temperature ? 0 : -1;
+    if (!displacement)
+      return -1;
+    return static_cast<int>(f) - (temperature ? 0 : 1);
+  }
+  bool has(const Field f) const { return slot(f) >= 0; }
 };
 
 class DofManager
@@ -52,7 +66,7 @@ public:
              const Teuchos::RCP<const Teuchos::Comm<int>> &comm, DofLayout layout = {});
 
   const DofLayout &layout() const { return layout_; }
-  int n_node_fields() const { return layout_.n_node_fields; }
+  int n_node_fields() const { return n_node_fields_; }
 
   const std::vector<int> &owned_cells() const { return owned_cells_; }
   const std::vector<int> &owned_nodes() const { return owned_nodes_; }
@@ -60,14 +74,14 @@ public:
   const std::vector<int> &owned_pairs() const { return owned_pairs_; }
   const std::vector<int> &node_owner() const { return node_owner_; }
 
-  GO dof(const int node, const Field f) const
+  /// The global id of field f of node n; the layout must have f.
+  GO dof(const int node, const Field f) const { return node_dof(node, layout_.slot(f)); }
+  /// The global id of unknown `slot` (0 <= slot < n_node_fields()) of node n.
+  GO node_dof(const int node, const int slot) const
   {
-    return static_cast<GO>(layout_.n_node_fields) * node + static_cast<int>(f);
+    return static_cast<GO>(n_node_fields_) * node + slot;
   }
-  GO contact_dof(const int pair) const
-  {
-    return static_cast<GO>(layout_.n_node_fields) * n_nodes_ + pair;
-  }
+  GO contact_dof(const int pair) const { return static_cast<GO>(n_node_fields_) * n_nodes_ + pair; }
 
   Teuchos::RCP<const Map> owned_node_map() const { return owned_node_map_; }
   Teuchos::RCP<const Map> overlap_node_map() const { return overlap_node_map_; }
@@ -83,6 +97,7 @@ public:
 
 private:
   DofLayout layout_;
+  int n_node_fields_;
   int n_nodes_;
   std::vector<int> owned_cells_;
   std::vector<int> owned_nodes_;

@@ -34,6 +34,17 @@ public:
   {
     return Teuchos::null;
   }
+  /// Optional: a basis of the operator's near-null space on solution_map() (for MueLu:
+  /// the constant temperature, the rigid-body modes), in the unknowns x. Default: none.
+  virtual Teuchos::RCP<const Tpetra::MultiVector<double>> near_null_space() const
+  {
+    return Teuchos::null;
+  }
+  /// Optional: the scale c of every unknown. The solver then works on x̂ = x / c with the
+  /// rows multiplied by c (F̂ = c F, Ĵ = diag(c) J diag(c)), so that fields of different
+  /// units reach the Krylov solver and the multigrid with comparable rows and unknowns;
+  /// the tolerances of the Newton solver apply to F̂. Default: none (c = 1).
+  virtual Teuchos::RCP<const Vector> unknown_scale() const { return Teuchos::null; }
 };
 
 /// A problem with a time derivative: F(x, xdot, t) with xdot = a x + b, the
@@ -46,5 +57,9 @@ class TransientProblem : public NonlinearProblem
 public:
   /// t [s], a [1/s], b (on solution_map(), unit of x per s) for the next evaluate() calls.
   virtual void set_time_derivative(double time, double a, const Vector &b) = 0;
+  /// Optional: 1 for the unknowns with a time derivative, 0 for the others (quasi-static
+  /// displacement); the local error estimate of the time stepper counts the first only.
+  /// Default: none (every unknown counts).
+  virtual Teuchos::RCP<const Vector> time_error_mask() const { return Teuchos::null; }
 };
 } // namespace kiln

@@ -18,6 +18,9 @@ ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
     : problem_(std::move(problem)), W_factory_(std::move(W_factory)),
       space_(Thyra::createVectorSpace<double>(problem_->solution_map()))
 {
+  scale_ = problem_->unknown_scale();
+  if (!scale_.is_null())
+    x_unscaled_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
   MEB::InArgsSetup<double> in_args;
   in_args.setModelEvalDescription(description());
   in_args.setSupports(MEB::IN_ARG_x);
@@ -87,7 +90,20 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
   if (!W_thyra.is_null())
     J = Teuchos::rcp_dynamic_cast<NonlinearProblem::Matrix>(Extraction::getTpetraOperator(W_thyra),
                                                             true);
-  problem_->evaluate(*x, f.get(), J.get());
+  if (scale_.is_null())
+  {
+    problem_->evaluate(*x, f.get(), J.get());
+    return;
+  }
+  x_unscaled_->elementWiseMultiply(1.0, *scale_, *x, 0.0);
+  problem_->evaluate(*x_unscaled_, f.get(), J.get());
+  if (!f.is_null())
+    f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
+  if (!J.is_null())
+  {
+    J->leftScale(*scale_);
+    J->rightScale(*scale_);
+  }
 }
 } // namespace internal
 } // namespace kiln

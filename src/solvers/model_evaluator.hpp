@@ -2,7 +2,9 @@
 /// Private to src/solvers: the Thyra model evaluator NOX sees, over a
 /// NonlinearProblem. x and f live on solution_map(); W is a Tpetra::CrsMatrix
 /// on jacobian_graph() (static graph), wrapped by Thyra::tpetraLinearOp and
-/// solved with the Stratimikos factory given at construction.
+/// solved with the Stratimikos factory given at construction. With the
+/// problem's unknown_scale() c, NOX sees the scaled system: x̂ = x / c,
+/// F̂(x̂) = c F(c x̂), Ŵ = diag(c) J diag(c).
 #include "discretization/nonlinear_problem.hpp"
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
@@ -33,6 +35,8 @@ private:
                      const Thyra::ModelEvaluatorBase::OutArgs<double> &out_args) const override;
 
   Teuchos::RCP<NonlinearProblem> problem_;
+  Teuchos::RCP<const NonlinearProblem::Vector> scale_; ///< c, or null
+  Teuchos::RCP<NonlinearProblem::Vector> x_unscaled_;  ///< c x̂
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_values_;

@@ -258,6 +258,21 @@ void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem
   muelu.set("Coordinates", Teuchos::rcp_const_cast<Tpetra::MultiVector<double>>(coordinates));
   if (!muelu.isParameter("number of equations"))
     muelu.set("number of equations", static_cast<int>(global[0]));
+  // The near-null space, divided by the unknown scale as the solver sees it.
+  const RCP<const Tpetra::MultiVector<double>> modes = problem.near_null_space();
+  if (!modes.is_null() && !muelu.isParameter("Nullspace"))
+  {
+    auto scaled = Teuchos::rcp(new Tpetra::MultiVector<double>(*modes, Teuchos::Copy));
+    const RCP<const NonlinearProblem::Vector> scale = problem.unknown_scale();
+    if (!scale.is_null())
+    {
+      NonlinearProblem::Vector inverse(scale->getMap());
+      inverse.reciprocal(*scale);
+      for (std::size_t j = 0; j < scaled->getNumVectors(); ++j)
+        scaled->getVectorNonConst(j)->elementWiseMultiply(1.0, inverse, *modes->getVector(j), 0.0);
+    }
+    muelu.set("Nullspace", scaled);
+  }
 }
 } // namespace internal
 
@@ -389,9 +404,19 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
   Impl &s = *impl_;
 
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
-  s.group->setX(
-      NOX::Thyra::Vector(Thyra::createConstVector(Teuchos::rcpFromRef(std::as_const(x)), space)
-                             ->clone_v())); // setX copies; x is untouched until the end
+  // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
+  const RCP<const NonlinearProblem::Vector> scale = s.problem->unknown_scale();
+  auto x_hat = Teuchos::rcp(new NonlinearProblem::Vector(x, Teuchos::Copy));
+  if (!scale.is_null())
+  {
+    NonlinearProblem::Vector inverse(scale->getMap());
+    inverse.reciprocal(*scale);
+    x_hat->elementWiseMultiply(1.0, inverse, x, 0.0);
+  }
+  s.group->setX(NOX::Thyra::Vector(
+      Thyra::createConstVector(Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(x_hat),
+                               space)
+          ->clone_v()));
   s.group->computeF();
   Result result;
   result.initial_residual_norm = s.group->getNormF();
@@ -411,7 +436,11 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
 
   const auto &solution = dynamic_cast<const NOX::Thyra::Group &>(solver->getSolutionGroup());
   const auto &x_nox = dynamic_cast<const NOX::Thyra::Vector &>(solution.getX());
-  Tpetra::deep_copy(x, *Extraction::getConstTpetraVector(x_nox.getThyraRCPVector()));
+  const auto x_final = Extraction::getConstTpetraVector(x_nox.getThyraRCPVector());
+  if (scale.is_null())
+    Tpetra::deep_copy(x, *x_final);
+  else
+    x.elementWiseMultiply(1.0, *scale, *x_final, 0.0);
 
   result.converged = status == ST::Converged;
   result.newton_iterations = solver->getNumIterations();

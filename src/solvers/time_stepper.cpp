@@ -17,22 +17,29 @@ namespace internal
 {
 using Vector = NonlinearProblem::Vector;
 
-/// sqrt(mean_i (e_i / (atol + rtol max(|x_i|, |y_i|)))^2) over all ranks.
+/// sqrt(mean_i (e_i / (atol + rtol max(|x_i|, |y_i|)))^2) over all ranks and the unknowns i
+/// where `mask` is not 0 (all if it is null); 0 if there are none.
 double weighted_rms(const Vector &e, const Vector &x, const Vector &y, const double atol,
-                    const double rtol)
+                    const double rtol, const Vector *mask)
 {
   const auto e_v = e.getData();
   const auto x_v = x.getData();
   const auto y_v = y.getData();
-  double sum = 0.0;
+  Teuchos::ArrayRCP<const double> m_v;
+  if (mask != nullptr)
+    m_v = mask->getData();
+  double local[2] = {0.0, 0.0}; // sum, count
   for (std::size_t i = 0; i < e.getLocalLength(); ++i)
   {
+    if (mask != nullptr && m_v[i] == 0.0)
+      continue;
     const double w = atol + rtol * std::max(std::abs(x_v[i]), std::abs(y_v[i]));
-    sum += (e_v[i] / w) * (e_v[i] / w);
+    local[0] += (e_v[i] / w) * (e_v[i] / w);
+    local[1] += 1.0;
   }
-  double global = 0.0;
-  Teuchos::reduceAll(*e.getMap()->getComm(), Teuchos::REDUCE_SUM, sum, Teuchos::outArg(global));
-  return std::sqrt(global / static_cast<double>(e.getGlobalLength()));
+  double global[2] = {0.0, 0.0};
+  Teuchos::reduceAll(*e.getMap()->getComm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return global[1] > 0.0 ? std::sqrt(global[0] / global[1]) : 0.0;
 }
 
 std::string seconds(const double t)
@@ -225,7 +232,8 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
           lte.update(ratio, x, -ratio * (1.0 + h / k), x_n, 0.0);
           lte.update(ratio * h / k, x_nm1, 1.0);
         }
-        error = internal::weighted_rms(lte, x, x_n, absolute_tolerance_, relative_tolerance_);
+        error = internal::weighted_rms(lte, x, x_n, absolute_tolerance_, relative_tolerance_,
+                                       problem.time_error_mask().get());
         if (error > 1.0)
         {
           ++stats.error_rejections;

@@ -2,12 +2,11 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "physics/boundary_input.hpp"
 
 #include <Teuchos_Array.hpp>
 
-#include <algorithm>
 #include <map>
-#include <sstream>
 
 namespace kiln
 {
@@ -56,36 +55,9 @@ ThermalBoundaryCondition::ThermalBoundaryCondition(const std::string &name,
   const std::string path = where + "/" + name;
   const std::string type = p.get<std::string>("Type");
   type_ = internal::thermal_bc_types.at(type);
-  const auto &uses = internal::thermal_bc_parameters.at(type);
-  for (const auto &[other_type, parameters] : internal::thermal_bc_parameters)
-    for (const auto &parameter : parameters)
-      KILN_CHECK_INPUT(std::find(uses.begin(), uses.end(), parameter) != uses.end() ||
-                           !given_in_input(p, parameter),
-                       path + "/\"" + parameter + "\"",
-                       "applies to Type \"" << other_type << "\", not to Type \"" << type
-                                            << "\"; remove it or change the Type");
-
-  const auto &ids = p.get<Teuchos::Array<int>>("Side Sets");
-  KILN_CHECK_INPUT(!ids.empty(), path + "/\"Side Sets\"",
-                   "is missing or empty; list the side set ids the condition applies to, "
-                   "e.g. <Parameter name=\"Side Sets\" type=\"Array(int)\" value=\"{1, 2}\"/>");
-  for (const int id : ids)
-  {
-    std::ostringstream available;
-    for (const auto &s : mesh.side_sets)
-      if (s.id != mesh.gap_side_set)
-        available << (available.tellp() > 0 ? ", " : "") << s.id;
-    KILN_CHECK_INPUT(id != mesh.gap_side_set || id == 0, path + "/\"Side Sets\"",
-                     "side set " << id
-                                 << " is the gap; heat crosses it through Kiln/Thermal/\"Gap "
-                                    "Conductance\". Boundary side sets of this mesh: "
-                                 << available.str());
-    KILN_CHECK_INPUT(mesh.find_side_set(id) != nullptr, path + "/\"Side Sets\"",
-                     "side set " << id << " is not in the mesh; its boundary side sets are "
-                                 << available.str()
-                                 << ". Use one of these ids, or check the mesh file");
-    side_sets_.push_back(id);
-  }
+  check_parameters_of_type(p, type, internal::thermal_bc_parameters, path);
+  side_sets_ = read_boundary_side_sets(p, mesh, path,
+                                       "heat crosses it through Kiln/Thermal/\"Gap Conductance\"");
 
   if (type_ == Type::convection)
   {
@@ -94,7 +66,7 @@ ThermalBoundaryCondition::ThermalBoundaryCondition(const std::string &name,
                      "is required for Type \"Convection\" (h [W/(m^2 K)]), e.g. <Parameter "
                      "name=\"Coefficient\" type=\"double\" value=\"50\"/>");
   }
-  const std::string function = uses.back();
+  const std::string function = internal::thermal_bc_parameters.at(type).back();
   KILN_CHECK_INPUT(given_in_input(p, function), path + "/\"" + function + "\"",
                    "is required for Type \"" << type << "\"; give it as a sublist, e.g. "
                                              << "<ParameterList name=\"" << function

@@ -54,7 +54,7 @@ void check_variant_a(const std::string &name, const double final_temperature)
   auto sim = std::make_unique<kiln::Simulation>(kiln::read_input(path, *comm), path, comm);
   sim->setup();
   const std::vector<int> mirror = mirror_nodes(sim->mesh());
-  kiln::ThermalProblem &problem = sim->thermal_problem();
+  kiln::CoupledProblem &problem = sim->problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   std::vector<double> times_seen;

@@ -25,7 +25,7 @@ std::vector<std::vector<double>> run(const Teuchos::RCP<const Teuchos::Comm<int>
       .set("Convergence Tolerance", 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
-  kiln::ThermalProblem &problem = sim.thermal_problem();
+  kiln::CoupledProblem &problem = sim.problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   std::vector<std::vector<double>> states;

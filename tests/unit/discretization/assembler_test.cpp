@@ -42,7 +42,7 @@ struct Fixture
   Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
   Mesh mesh = split_box();
   std::vector<int> cell_rank = kiln::partition_cells(mesh, *comm, "test");
-  kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{1, false}};
+  kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{true, false, false}};
   kiln::Assembler assembler{mesh, dofs};
   double h = 7.0;
 

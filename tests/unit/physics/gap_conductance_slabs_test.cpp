@@ -53,7 +53,7 @@ TEST(GapConductance, TwoSlabJumpMatchesAnalytic)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const auto sim = kiln_test::make_simulation(deck, comm);
-  kiln::ThermalProblem &problem = sim->thermal_problem();
+  kiln::CoupledProblem &problem = sim->problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   const auto stats = sim->time_stepper().run(problem, sim->newton_solver(), x, 0.0, {1.0},

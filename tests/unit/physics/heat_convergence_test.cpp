@@ -106,7 +106,7 @@ Result run(const int nx, const int ny, const std::string &method, const double d
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   Result r;
   r.sim = kiln_test::make_simulation(deck(nx, ny, method, dt), comm);
-  kiln::ThermalProblem &problem = r.sim->thermal_problem();
+  kiln::CoupledProblem &problem = r.sim->problem();
   kiln_test::Vector x(problem.solution_map());
   kiln_test::interpolate(
       *r.sim, [](const kiln::Point &p) { return T0 + A * mode(p); }, x);

@@ -3,7 +3,7 @@
 /// time loop from an initial state of the test's own; integrate fields over the mesh.
 #include "app/simulation.hpp"
 #include "mesh/hex_geometry.hpp"
-#include "physics/heat/thermal_problem.hpp"
+#include "physics/coupled_problem.hpp"
 #include "solvers/newton_solver.hpp"
 #include "solvers/time_stepper.hpp"
 
@@ -29,7 +29,7 @@ inline void replace(std::string &text, const std::string &key, const std::string
     text.replace(at, key.size(), value);
 }
 
-/// A set-up Simulation (mesh, partition, ThermalProblem, Newton, stepper) from a Kiln
+/// A set-up Simulation (mesh, partition, CoupledProblem, Newton, stepper) from a Kiln
 /// input given as XML text.
 inline std::unique_ptr<kiln::Simulation>
 make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<int>> &comm)

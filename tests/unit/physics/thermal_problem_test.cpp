@@ -5,7 +5,7 @@
 // a uniform temperature; zero gap flux for equal temperatures across the gap; and the
 // messages for inconsistent boundary conditions.
 // KILN_TEST_NP: 1 2
-#include "physics/heat/thermal_problem.hpp"
+#include "physics/coupled_problem.hpp"
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
@@ -140,15 +140,17 @@ struct Fixture
   Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
   Mesh mesh = split_box();
   std::vector<int> cell_rank = kiln::partition_cells(mesh, *comm, "test");
-  kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{1, false}};
+  kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{true, false, false}};
   kiln::Material material = table_material();
 
-  std::unique_ptr<kiln::ThermalProblem> problem(const Teuchos::ParameterList &user) const
+  std::unique_ptr<kiln::CoupledProblem> problem(const Teuchos::ParameterList &user) const
   {
-    const Teuchos::ParameterList p =
-        kiln::validated(user, kiln::ThermalProblem::valid_parameters(), "test.xml", "Kiln/Thermal");
-    return std::make_unique<kiln::ThermalProblem>(mesh, dofs, material, p,
-                                                  "test.xml: Kiln/Thermal");
+    const Teuchos::ParameterList p = kiln::validated(
+        user, kiln::CoupledProblem::valid_thermal_parameters(), "test.xml", "Kiln/Thermal");
+    const Teuchos::ParameterList none = kiln::validated(
+        Teuchos::ParameterList(), kiln::CoupledProblem::valid_mechanics_parameters(), "test.xml",
+        "Kiln/Mechanics");
+    return std::make_unique<kiln::CoupledProblem>(mesh, dofs, material, p, none, "test.xml: Kiln");
   }
   bool is_twin(const int node) const { return mesh.parent_node[node] != node; }
   /// 1 for the nodes of the faces of side set `id`.

@@ -18,7 +18,7 @@ double iterations_per_solve(const int n)
   input.sublist("Mesh").sublist("Box").set("Cells", Teuchos::Array<int>(3, n));
   kiln::Simulation sim(input, path, comm);
   sim.setup();
-  kiln::ThermalProblem &problem = sim.thermal_problem();
+  kiln::CoupledProblem &problem = sim.problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   // Steps of 1 s then 5 s: the first three solves of the real run.

@@ -1,0 +1,83 @@
+#include "physics/boundary_input.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "mesh/hex_geometry.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace kiln
+{
+void check_parameters_of_type(
+    const Teuchos::ParameterList &p, const std::string &type,
+    const std::map<std::string, std::vector<std::string>> &parameters_of_type,
+    const std::string &path)
+{
+  const auto &uses = parameters_of_type.at(type);
+  for (const auto &[other_type, parameters] : parameters_of_type)
+    for (const auto &parameter : parameters)
+      KILN_CHECK_INPUT(std::find(uses.begin(), uses.end(), parameter) != uses.end() ||
+                           !given_in_input(p, parameter),
+                       path + "/\"" + parameter + "\"",
+                       "applies to Type \"" << other_type << "\", not to Type \"" << type
+                                            << "\"; remove it or change the Type");
+}
+
+std::vector<int> read_boundary_side_sets(const Teuchos::ParameterList &p, const Mesh &mesh,
+                                         const std::string &path, const std::string &gap_note)
+{
+  const auto &ids = p.get<Teuchos::Array<int>>("Side Sets");
+  KILN_CHECK_INPUT(!ids.empty(), path + "/\"Side Sets\"",
+                   "is missing or empty; list the side set ids the condition applies to, "
+                   "e.g. <Parameter name=\"Side Sets\" type=\"Array(int)\" value=\"{1, 2}\"/>");
+  std::ostringstream available;
+  for (const auto &s : mesh.side_sets)
+    if (s.id != mesh.gap_side_set)
+      available << (available.tellp() > 0 ? ", " : "") << s.id;
+  std::vector<int> result;
+  for (const int id : ids)
+  {
+    KILN_CHECK_INPUT(id != mesh.gap_side_set || id == 0, path + "/\"Side Sets\"",
+                     "side set " << id << " is the gap; " << gap_note
+                                 << ". Boundary side sets of this mesh: " << available.str());
+    KILN_CHECK_INPUT(mesh.find_side_set(id) != nullptr, path + "/\"Side Sets\"",
+                     "side set " << id << " is not in the mesh; its boundary side sets are "
+                                 << available.str()
+                                 << ". Use one of these ids, or check the mesh file");
+    result.push_back(id);
+  }
+  return result;
+}
+
+InteriorFaceCheck::InteriorFaceCheck(const Mesh &mesh) : mesh_(mesh)
+{
+  all_faces_.reserve(static_cast<std::size_t>(mesh.n_cells()) * n_hex_faces);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int f = 0; f < n_hex_faces; ++f)
+      all_faces_.push_back(mesh.face_key(c, f));
+  std::sort(all_faces_.begin(), all_faces_.end());
+}
+
+void InteriorFaceCheck::check(const std::vector<int> &ids, const std::string &path) const
+{
+  for (const int id : ids)
+  {
+    const SideSet &set = *mesh_.find_side_set(id);
+    for (int s = 0; s < set.n_sides(); ++s)
+    {
+      const FaceKey key = mesh_.face_key(set.cells[s], set.faces[s]);
+      const auto range = std::equal_range(all_faces_.begin(), all_faces_.end(), key);
+      KILN_CHECK_INPUT(range.second - range.first == 1, path,
+                       "side set " << id << " has faces inside the body (cell " << set.cells[s] + 1
+                                   << ", side " << set.faces[s] + 1
+                                   << " is shared with another cell); boundary conditions "
+                                      "apply to boundary faces only. To make it a gap, set "
+                                      "Kiln/Mesh/\"Gap Side Set\" to "
+                                   << id);
+    }
+  }
+}
+} // namespace kiln

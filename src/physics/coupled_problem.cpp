@@ -1,0 +1,688 @@
+#include "physics/coupled_problem.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "discretization/element_values.hpp"
+#include "discretization/face_values.hpp"
+#include "mesh/hex_geometry.hpp"
+#include "physics/boundary_input.hpp"
+#include "physics/heat/convection_kernel.hpp"
+#include "physics/heat/heat_flux_kernel.hpp"
+#include "physics/mechanics/traction_kernel.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kiln
+{
+namespace internal
+{
+double dot(const Point &a, const Point &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// Appends `v` to the orthonormal `basis` (Gram-Schmidt, twice for accuracy) unless it is
+/// within 1e-6 of their span; returns whether it was appended.
+bool append_orthonormal(std::vector<Point> &basis, Point v)
+{
+  const double length = std::sqrt(dot(v, v));
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Point &q : basis)
+    {
+      const double c = dot(v, q);
+      for (int d = 0; d < 3; ++d)
+        v[d] -= c * q[d];
+    }
+  const double rest = std::sqrt(dot(v, v));
+  if (rest <= 1e-6 * length)
+    return false;
+  for (double &x : v)
+    x /= rest;
+  basis.push_back(v);
+  return true;
+}
+
+Point read_vector(const Teuchos::ParameterList &p, const std::string &name,
+                  const std::string &where)
+{
+  const auto &v = p.get<Teuchos::Array<double>>(name);
+  KILN_CHECK_INPUT(v.size() == 3, where + "/\"" + name + "\"",
+                   "must have 3 entries (x, y, z), has " << v.size());
+  return {v[0], v[1], v[2]};
+}
+} // namespace internal
+
+using internal::dot;
+
+Teuchos::ParameterList CoupledProblem::valid_thermal_parameters()
+{
+  Teuchos::ParameterList p("Thermal");
+  p.set("Initial Temperature", 298.0, "the uniform initial temperature, must be > 0 [K]",
+        positive_double_validator());
+  p.set("Gap Conductance", 1.0e4,
+        "h, the heat-transfer coefficient between the two sides of the split gap: flux "
+        "h (T_a - T_b) from side a to side b; must be >= 0 [W/(m^2 K)]",
+        nonnegative_double_validator());
+  set_named_sublists(p, "Boundary Conditions",
+                     "thermal boundary conditions on side sets; faces in none are insulated",
+                     ThermalBoundaryCondition::valid_parameters());
+  return p;
+}
+
+Teuchos::ParameterList CoupledProblem::valid_mechanics_parameters()
+{
+  Teuchos::ParameterList p("Mechanics");
+  p.set("Body Force", Teuchos::Array<double>(3, 0.0),
+        "a force per volume f = (fx, fy, fz), added to rho g [N/m^3]");
+  p.set("Gravity", Teuchos::Array<double>(3, 0.0),
+        "the acceleration of gravity g = (gx, gy, gz); the body force is rho g + f [m/s^2]");
+  set_named_sublists(p, "Boundary Conditions",
+                     "mechanical boundary conditions on side sets; faces in none are free of "
+                     "traction",
+                     MechanicalBoundaryCondition::valid_parameters());
+  return p;
+}
+
+CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
+                               const Teuchos::ParameterList &thermal,
+                               const Teuchos::ParameterList &mechanics, const std::string &where)
+    : mesh_(mesh), dofs_(dofs), assembler_(mesh, dofs), F_(dofs.n_node_fields()),
+      T_slot_(dofs.layout().slot(Field::T)), u_slot_(dofs.layout().slot(Field::ux)),
+      overlap_index_(mesh.n_nodes(), -1), dirichlet_bc_(mesh.n_nodes(), -1),
+      temperature_scale_(mesh.n_nodes(), 0.0), prescribed_temperature_(mesh.n_nodes(), 0.0),
+      frame_of_node_(mesh.n_nodes(), -1), displacement_row_scale_(mesh.n_nodes(), 0.0)
+{
+  KILN_ASSERT(!dofs.layout().contact, "CoupledProblem has no contact unknowns yet");
+  KILN_ASSERT(T_slot_ <= 0, "the temperature must be the first unknown of a node");
+  const auto &overlap_nodes = dofs.overlap_nodes();
+  for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
+  {
+    overlap_index_[overlap_nodes[i]] = static_cast<int>(i);
+    KILN_ASSERT(assembler_.lid(dofs.node_dof(overlap_nodes[i], 0)) == static_cast<LO>(F_ * i),
+                "the overlap map is not node-major");
+  }
+  std::vector<char> owns_cell(mesh.n_cells(), 0);
+  for (const int c : dofs.owned_cells())
+    owns_cell[c] = 1;
+  if (T_slot_ >= 0)
+    setup_thermal(material, thermal, owns_cell, where + "/Thermal");
+  if (u_slot_ >= 0)
+    setup_mechanics(material, mechanics, owns_cell, where + "/Mechanics");
+
+  x_overlap_ = assembler_.make_overlap_vector();
+  b_overlap_ = assembler_.make_overlap_vector();
+  T_state_.assign(overlap_nodes.size(), material.reference_temperature());
+  T_dot_state_.assign(overlap_nodes.size(), 0.0);
+  u_state_.assign(overlap_nodes.size(), Point{});
+  setup_solver_data(material);
+  update_prescribed(0.0);
+}
+
+void CoupledProblem::setup_thermal(const Material &material, const Teuchos::ParameterList &thermal,
+                                   const std::vector<char> &owns_cell, const std::string &where)
+{
+  conduction_.emplace(material.heat_capacity(), material.conductivity());
+  gap_ = GapConductanceKernel(thermal.get<double>("Gap Conductance"));
+  initial_temperature_ = thermal.get<double>("Initial Temperature");
+  KILN_CHECK_INPUT(mesh_.gap_side_set != 0 || !given_in_input(thermal, "Gap Conductance"),
+                   where + "/\"Gap Conductance\"",
+                   "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
+                   "it or name the side set to split at");
+  const std::string bc_where = where + "/Boundary Conditions";
+  const auto &bc_list = thermal.sublist("Boundary Conditions");
+  const InteriorFaceCheck interior(mesh_);
+  for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
+  {
+    bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh_, bc_where);
+    interior.check(bcs_.back().side_sets(), bc_where + "/" + bcs_.back().name() + "/\"Side Sets\"");
+  }
+  for (int b = 0; b < static_cast<int>(bcs_.size()); ++b)
+    for (const int id : bcs_[b].side_sets())
+    {
+      const SideSet &set = *mesh_.find_side_set(id);
+      for (int s = 0; s < set.n_sides(); ++s)
+      {
+        if (bcs_[b].type() == ThermalBoundaryCondition::Type::temperature)
+        {
+          for (const int i : hex_face_nodes[set.faces[s]])
+          {
+            const int node = mesh_.connectivity[set.cells[s]][i];
+            if (dirichlet_bc_[node] < 0)
+              dirichlet_bc_[node] = b;
+          }
+        }
+        else if (owns_cell[set.cells[s]])
+          boundary_faces_.push_back({set.cells[s], set.faces[s], b});
+      }
+    }
+  for (int k = 0; k < static_cast<int>(mesh_.gap_faces.size()); ++k)
+    if (owns_cell[mesh_.gap_faces[k].cell_a])
+      owned_gap_faces_.push_back(k);
+}
+
+void CoupledProblem::setup_mechanics(const Material &material,
+                                     const Teuchos::ParameterList &mechanics,
+                                     const std::vector<char> &owns_cell, const std::string &where)
+{
+  elasticity_.emplace(material.lame_lambda(), material.shear_modulus(),
+                      material.thermal_expansion(), material.reference_temperature());
+  const Point f = internal::read_vector(mechanics, "Body Force", where);
+  const Point g = internal::read_vector(mechanics, "Gravity", where);
+  for (int d = 0; d < 3; ++d)
+    body_force_[d] = f[d] + material.density() * g[d];
+
+  const std::string bc_where = where + "/Boundary Conditions";
+  const auto &bc_list = mechanics.sublist("Boundary Conditions");
+  const InteriorFaceCheck interior(mesh_);
+  for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
+  {
+    mechanical_bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh_,
+                                 bc_where);
+    interior.check(mechanical_bcs_.back().side_sets(),
+                   bc_where + "/" + mechanical_bcs_.back().name() + "/\"Side Sets\"");
+  }
+  for (int b = 0; b < static_cast<int>(mechanical_bcs_.size()); ++b)
+    if (!mechanical_bcs_[b].is_constraint())
+      for (const int id : mechanical_bcs_[b].side_sets())
+      {
+        const SideSet &set = *mesh_.find_side_set(id);
+        for (int s = 0; s < set.n_sides(); ++s)
+          if (owns_cell[set.cells[s]])
+            load_faces_.push_back({set.cells[s], set.faces[s], b});
+      }
+  build_frames();
+}
+
+void CoupledProblem::build_frames()
+{
+  // Per node, the constraint directions in input order: (condition, direction).
+  std::vector<std::vector<std::pair<int, Point>>> directions(mesh_.n_nodes());
+  FaceValues fv;
+  for (int b = 0; b < static_cast<int>(mechanical_bcs_.size()); ++b)
+  {
+    const MechanicalBoundaryCondition &bc = mechanical_bcs_[b];
+    if (bc.type() == MechanicalBoundaryCondition::Type::displacement)
+    {
+      for (const int id : bc.side_sets())
+      {
+        const SideSet &set = *mesh_.find_side_set(id);
+        std::vector<char> seen(mesh_.n_nodes(), 0);
+        for (int s = 0; s < set.n_sides(); ++s)
+          for (const int i : hex_face_nodes[set.faces[s]])
+          {
+            const int node = mesh_.connectivity[set.cells[s]][i];
+            if (seen[node]++)
+              continue;
+            for (const int c : bc.components())
+            {
+              Point e{};
+              e[c] = 1.0;
+              directions[node].emplace_back(b, e);
+            }
+          }
+      }
+    }
+    else if (bc.type() == MechanicalBoundaryCondition::Type::normal_displacement)
+    {
+      // The node's normal of this condition: the area-weighted outward normals of its
+      // faces there (exact on a plane face, the usual average at a crease).
+      std::vector<Point> normal(mesh_.n_nodes(), Point{});
+      std::vector<int> touched;
+      for (const int id : bc.side_sets())
+      {
+        const SideSet &set = *mesh_.find_side_set(id);
+        for (int s = 0; s < set.n_sides(); ++s)
+        {
+          fv.reinit(face_nodes(mesh_, set.cells[s], set.faces[s]));
+          for (int i = 0; i < 4; ++i)
+          {
+            const int node = mesh_.connectivity[set.cells[s]][hex_face_nodes[set.faces[s]][i]];
+            if (dot(normal[node], normal[node]) == 0.0)
+              touched.push_back(node);
+            for (int q = 0; q < fv.n_qpoints(); ++q)
+              for (int d = 0; d < 3; ++d)
+                normal[node][d] += fv.shape(i, q) * fv.normal(q)[d] * fv.JxW(q);
+          }
+        }
+      }
+      for (const int node : touched)
+      {
+        Point n = normal[node];
+        const double length = std::sqrt(dot(n, n));
+        for (double &x : n)
+          x /= length;
+        directions[node].emplace_back(b, n);
+      }
+    }
+  }
+  for (int node = 0; node < mesh_.n_nodes(); ++node)
+  {
+    if (directions[node].empty())
+      continue;
+    NodeFrame frame;
+    std::vector<Point> basis;
+    for (const auto &[b, n] : directions[node])
+      if (basis.size() < 3 && internal::append_orthonormal(basis, n))
+      {
+        frame.bc[frame.n_constrained] = b;
+        frame.n[frame.n_constrained] = n;
+        ++frame.n_constrained;
+      }
+    for (int d = 0; d < 3 && basis.size() < 3; ++d)
+    {
+      Point e{};
+      e[d] = 1.0;
+      internal::append_orthonormal(basis, e);
+    }
+    std::copy(basis.begin(), basis.end(), frame.q.begin());
+    frame_of_node_[node] = static_cast<int>(frames_.size());
+    frames_.push_back(frame);
+  }
+}
+
+std::vector<double> CoupledProblem::stiffness_sums() const
+{
+  std::vector<double> sum(mesh_.n_nodes(), 0.0);
+  ElementValues fe;
+  const auto constrained = [&](const int n)
+  { return dirichlet_bc_[n] >= 0 || frame_of_node_[n] >= 0; };
+  for (int c = 0; c < mesh_.n_cells(); ++c)
+  {
+    const auto &nodes = mesh_.connectivity[c];
+    if (std::none_of(nodes.begin(), nodes.end(), constrained))
+      continue;
+    fe.reinit(cell_nodes(mesh_, c));
+    for (int i = 0; i < n_hex_nodes; ++i)
+      if (constrained(nodes[i]))
+        for (int q = 0; q < fe.n_qpoints(); ++q)
+          sum[nodes[i]] += dot(fe.grad(i, q), fe.grad(i, q)) * fe.JxW(q);
+  }
+  return sum;
+}
+
+void CoupledProblem::setup_solver_data(const Material &material)
+{
+  const std::vector<double> sums = stiffness_sums();
+  const double k0 = T_slot_ >= 0 ? material.conductivity().value(initial_temperature_) : 0.0;
+  const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
+  for (int n = 0; n < mesh_.n_nodes(); ++n)
+  {
+    if (dirichlet_bc_[n] >= 0)
+      temperature_scale_[n] = k0 * sums[n];
+    if (frame_of_node_[n] >= 0)
+      displacement_row_scale_[n] = modulus * sums[n];
+  }
+  // Symmetric scaling: with both fields, displacements by sqrt(k / (lambda + 2G)), so
+  // that the diagonal of the force rows (~ (lambda + 2G) h) becomes that of the heat rows
+  // (~ k h); see doc/mechanics.md.
+  if (T_slot_ >= 0 && u_slot_ >= 0)
+    displacement_scale_ = std::sqrt(k0 / modulus);
+
+  const auto owned_map = dofs_.owned_dof_map();
+  const auto &owned_nodes = dofs_.owned_nodes();
+  coordinates_ = Teuchos::rcp(new Tpetra::MultiVector<double>(dofs_.owned_node_map(), 3));
+  Point centre{};
+  for (const Point &x : mesh_.coordinates)
+    for (int d = 0; d < 3; ++d)
+      centre[d] += x[d] / mesh_.n_nodes();
+  const int n_modes = (T_slot_ >= 0 ? 1 : 0) + (u_slot_ >= 0 ? 6 : 0);
+  near_null_space_ = Teuchos::rcp(new Tpetra::MultiVector<double>(owned_map, n_modes));
+  unknown_scale_ = Teuchos::rcp(new Vector(owned_map));
+  time_error_mask_ = Teuchos::rcp(new Vector(owned_map));
+  for (std::size_t i = 0; i < owned_nodes.size(); ++i)
+  {
+    const int n = owned_nodes[i];
+    const Point &x = mesh_.coordinates[n];
+    for (int d = 0; d < 3; ++d)
+      coordinates_->replaceLocalValue(static_cast<LO>(i), d, x[d]);
+    const LO row = static_cast<LO>(F_ * i);
+    int mode = 0;
+    if (T_slot_ >= 0)
+    {
+      near_null_space_->replaceLocalValue(row + T_slot_, mode++, 1.0);
+      unknown_scale_->replaceLocalValue(row + T_slot_, 1.0);
+      time_error_mask_->replaceLocalValue(row + T_slot_, 1.0);
+    }
+    if (u_slot_ >= 0)
+    {
+      // Rigid-body modes in the node's unknowns (û = Q^T u where it has a frame).
+      const Point r{x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]};
+      const std::array<Point, 6> modes = {Point{1, 0, 0},        Point{0, 1, 0},
+                                          Point{0, 0, 1},        Point{0, -r[2], r[1]},
+                                          Point{r[2], 0, -r[0]}, Point{-r[1], r[0], 0}};
+      const int f = frame_of_node_[n];
+      for (const Point &u : modes)
+      {
+        for (int k = 0; k < 3; ++k)
+          near_null_space_->replaceLocalValue(row + u_slot_ + k, mode,
+                                              f < 0 ? u[k] : dot(frames_[f].q[k], u));
+        ++mode;
+      }
+      for (int k = 0; k < 3; ++k)
+        unknown_scale_->replaceLocalValue(row + u_slot_ + k, displacement_scale_);
+    }
+  }
+}
+
+void CoupledProblem::update_prescribed(const double time)
+{
+  for (int n = 0; n < mesh_.n_nodes(); ++n)
+    if (dirichlet_bc_[n] >= 0)
+      prescribed_temperature_[n] = bcs_[dirichlet_bc_[n]].value(time);
+  for (NodeFrame &frame : frames_)
+  {
+    // n_l . u = g_l with u = sum_k û_k q_k and n_l . q_k = 0 for k > l: forward substitution.
+    for (int l = 0; l < frame.n_constrained; ++l)
+    {
+      double g = mechanical_bcs_[frame.bc[l]].value(time);
+      for (int k = 0; k < l; ++k)
+        g -= dot(frame.n[l], frame.q[k]) * frame.prescribed[k];
+      frame.prescribed[l] = g / dot(frame.n[l], frame.q[l]);
+    }
+  }
+}
+
+void CoupledProblem::set_time_derivative(const double time, const double a, const Vector &b)
+{
+  time_ = time;
+  a_ = a;
+  assembler_.gather(b, *b_overlap_);
+  update_prescribed(time);
+}
+
+void CoupledProblem::initial_condition(const double time, Vector &x) const
+{
+  x.putScalar(0.0);
+  const auto &owned_nodes = dofs_.owned_nodes();
+  for (std::size_t i = 0; i < owned_nodes.size(); ++i)
+  {
+    const int n = owned_nodes[i];
+    const LO row = static_cast<LO>(F_ * i);
+    if (T_slot_ >= 0)
+      x.replaceLocalValue(row + T_slot_, dirichlet_bc_[n] >= 0 ? bcs_[dirichlet_bc_[n]].value(time)
+                                                               : initial_temperature_);
+    if (frame_of_node_[n] >= 0)
+    {
+      NodeFrame frame = frames_[frame_of_node_[n]];
+      for (int l = 0; l < frame.n_constrained; ++l)
+      {
+        double g = mechanical_bcs_[frame.bc[l]].value(time);
+        for (int k = 0; k < l; ++k)
+          g -= dot(frame.n[l], frame.q[k]) * frame.prescribed[k];
+        frame.prescribed[l] = g / dot(frame.n[l], frame.q[l]);
+        x.replaceLocalValue(row + u_slot_ + l, frame.prescribed[l]);
+      }
+    }
+  }
+}
+
+void CoupledProblem::build_state()
+{
+  const auto x = x_overlap_->getData();
+  const auto b = b_overlap_->getData();
+  const auto &overlap_nodes = dofs_.overlap_nodes();
+  const double T_ref = elasticity_ ? elasticity_->reference_temperature() : 0.0;
+  for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
+  {
+    const int n = overlap_nodes[i];
+    const std::size_t row = F_ * i;
+    if (T_slot_ >= 0)
+    {
+      const double T = dirichlet_bc_[n] >= 0 ? prescribed_temperature_[n] : x[row + T_slot_];
+      T_state_[i] = T;
+      T_dot_state_[i] = a_ * T + b[row + T_slot_];
+    }
+    else
+      T_state_[i] = T_ref;
+    if (u_slot_ < 0)
+      continue;
+    Point u_hat{x[row + u_slot_], x[row + u_slot_ + 1], x[row + u_slot_ + 2]};
+    const int f = frame_of_node_[n];
+    if (f < 0)
+    {
+      u_state_[i] = u_hat;
+      continue;
+    }
+    const NodeFrame &frame = frames_[f];
+    for (int k = 0; k < frame.n_constrained; ++k)
+      u_hat[k] = frame.prescribed[k];
+    for (int d = 0; d < 3; ++d)
+      u_state_[i][d] =
+          frame.q[0][d] * u_hat[0] + frame.q[1][d] * u_hat[1] + frame.q[2][d] * u_hat[2];
+  }
+}
+
+void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
+{
+  assembler_.gather(x, *x_overlap_);
+  build_state();
+  assembler_.begin(f != nullptr, J != nullptr);
+  add_cells();
+  add_boundary_faces();
+  add_gap_faces();
+  add_constraint_rows();
+  assembler_.finish(f, J);
+}
+
+void CoupledProblem::finalize(const std::vector<int> &nodes, LocalSystem &local) const
+{
+  const int n_local = local.n_nodes();
+  if (u_slot_ >= 0)
+    for (int i = 0; i < n_local; ++i)
+    {
+      const int f = frame_of_node_[nodes[i]];
+      if (f < 0)
+        continue;
+      const auto &q = frames_[f].q;
+      // Rows: R̂_k = q_k . R; columns: dR/dû_k = dR/du . q_k.
+      Point r{};
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d)
+          r[k] += q[k][d] * local.residual(u_slot_ + d, i);
+      for (int k = 0; k < 3; ++k)
+        local.residual(u_slot_ + k, i) = r[k];
+      for (int j = 0; j < n_local; ++j)
+        for (int fj = 0; fj < F_; ++fj)
+        {
+          Point row{};
+          for (int k = 0; k < 3; ++k)
+            for (int d = 0; d < 3; ++d)
+              row[k] += q[k][d] * local.jacobian(u_slot_ + d, i, fj, j);
+          for (int k = 0; k < 3; ++k)
+            local.jacobian(u_slot_ + k, i, fj, j) = row[k];
+        }
+      for (int j = 0; j < n_local; ++j)
+        for (int fj = 0; fj < F_; ++fj)
+        {
+          Point column{};
+          for (int k = 0; k < 3; ++k)
+            for (int d = 0; d < 3; ++d)
+              column[k] += local.jacobian(fj, j, u_slot_ + d, i) * q[k][d];
+          for (int k = 0; k < 3; ++k)
+            local.jacobian(fj, j, u_slot_ + k, i) = column[k];
+        }
+    }
+  const auto eliminate = [&](const int field, const int i)
+  {
+    local.residual(field, i) = 0.0;
+    for (int j = 0; j < n_local; ++j)
+      for (int fj = 0; fj < F_; ++fj)
+        local.jacobian(field, i, fj, j) = local.jacobian(fj, j, field, i) = 0.0;
+  };
+  for (int i = 0; i < n_local; ++i)
+  {
+    if (T_slot_ >= 0 && dirichlet_bc_[nodes[i]] >= 0)
+      eliminate(T_slot_, i);
+    if (u_slot_ >= 0 && frame_of_node_[nodes[i]] >= 0)
+      for (int k = 0; k < frames_[frame_of_node_[nodes[i]]].n_constrained; ++k)
+        eliminate(u_slot_ + k, i);
+  }
+}
+
+void CoupledProblem::add_cells()
+{
+  ElementValues fe;
+  LocalSystem local(n_hex_nodes, F_);
+  std::vector<int> nodes(n_hex_nodes);
+  HeatConductionKernel::NodalValues T{}, T_dot{};
+  ElasticityKernel::NodalDisplacements u{};
+  for (const int c : dofs_.owned_cells())
+  {
+    for (int i = 0; i < n_hex_nodes; ++i)
+    {
+      nodes[i] = mesh_.connectivity[c][i];
+      const int k = overlap_index_[nodes[i]];
+      T[i] = T_state_[k];
+      T_dot[i] = T_dot_state_[k];
+      u[i] = u_state_[k];
+    }
+    fe.reinit(cell_nodes(mesh_, c));
+    local.clear();
+    if (conduction_)
+      conduction_->evaluate(fe, T, T_dot, a_, local);
+    if (elasticity_)
+      elasticity_->evaluate(fe, u, T, body_force_, u_slot_, T_slot_, local);
+    finalize(nodes, local);
+    assembler_.add(assembler_.cell_lids(c), local);
+  }
+}
+
+void CoupledProblem::add_boundary_faces()
+{
+  FaceValues fv;
+  LocalSystem local(4, F_);
+  std::vector<int> nodes(4);
+  std::array<double, 4> T{};
+  for (const auto &face : boundary_faces_)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      nodes[i] = mesh_.connectivity[face.cell][hex_face_nodes[face.face][i]];
+      T[i] = T_state_[overlap_index_[nodes[i]]];
+    }
+    fv.reinit(face_nodes(mesh_, face.cell, face.face));
+    local.clear();
+    const ThermalBoundaryCondition &bc = bcs_[face.bc];
+    if (bc.type() == ThermalBoundaryCondition::Type::convection)
+      ConvectionKernel(bc.coefficient()).evaluate(fv, T, bc.value(time_), local);
+    else
+      HeatFluxKernel::evaluate(fv, bc.value(time_), local);
+    finalize(nodes, local);
+    assembler_.add(assembler_.face_lids(face.cell, face.face), local);
+  }
+  for (const auto &face : load_faces_)
+  {
+    for (int i = 0; i < 4; ++i)
+      nodes[i] = mesh_.connectivity[face.cell][hex_face_nodes[face.face][i]];
+    fv.reinit(face_nodes(mesh_, face.cell, face.face));
+    local.clear();
+    const MechanicalBoundaryCondition &bc = mechanical_bcs_[face.bc];
+    if (bc.type() == MechanicalBoundaryCondition::Type::traction)
+      TractionKernel::evaluate(fv, bc.traction(), u_slot_, local);
+    else
+      TractionKernel::evaluate_pressure(fv, bc.value(time_), u_slot_, local);
+    finalize(nodes, local);
+    assembler_.add(assembler_.face_lids(face.cell, face.face), local);
+  }
+}
+
+void CoupledProblem::add_gap_faces()
+{
+  if (T_slot_ < 0)
+    return;
+  FaceValues fv;
+  LocalSystem local(8, F_);
+  std::vector<int> nodes(8);
+  std::array<double, 4> T_a{}, T_b{};
+  for (const int k : owned_gap_faces_)
+  {
+    const GapFace &face = mesh_.gap_faces[k];
+    for (int i = 0; i < 4; ++i)
+    {
+      nodes[i] = mesh_.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]];
+      nodes[4 + i] = face.node_b[i];
+      T_a[i] = T_state_[overlap_index_[nodes[i]]];
+      T_b[i] = T_state_[overlap_index_[nodes[4 + i]]];
+    }
+    fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
+    local.clear();
+    gap_.evaluate(fv, T_a, T_b, local);
+    finalize(nodes, local);
+    assembler_.add(assembler_.gap_face_lids(k), local);
+  }
+}
+
+void CoupledProblem::add_constraint_rows()
+{
+  const auto x = x_overlap_->getData();
+  LocalSystem local(1, 1);
+  for (const int n : dofs_.owned_nodes())
+  {
+    if (T_slot_ >= 0 && dirichlet_bc_[n] >= 0)
+    {
+      const LO lid = assembler_.lid(dofs_.dof(n, Field::T));
+      local.clear();
+      local.residual(0, 0) = temperature_scale_[n] * (x[lid] - prescribed_temperature_[n]);
+      local.jacobian(0, 0, 0, 0) = temperature_scale_[n];
+      assembler_.add({lid}, local);
+    }
+    if (u_slot_ < 0 || frame_of_node_[n] < 0)
+      continue;
+    const NodeFrame &frame = frames_[frame_of_node_[n]];
+    for (int k = 0; k < frame.n_constrained; ++k)
+    {
+      const LO lid = assembler_.lid(dofs_.node_dof(n, u_slot_ + k));
+      local.clear();
+      local.residual(0, 0) = displacement_row_scale_[n] * (x[lid] - frame.prescribed[k]);
+      local.jacobian(0, 0, 0, 0) = displacement_row_scale_[n];
+      assembler_.add({lid}, local);
+    }
+  }
+}
+
+std::vector<double> CoupledProblem::node_temperatures(const Vector &x)
+{
+  assembler_.gather(x, *x_overlap_);
+  build_state();
+  std::vector<double> T;
+  for (const int n : dofs_.owned_nodes())
+    T.push_back(T_state_[overlap_index_[n]]);
+  return T;
+}
+
+std::vector<Point> CoupledProblem::node_displacements(const Vector &x)
+{
+  assembler_.gather(x, *x_overlap_);
+  build_state();
+  std::vector<Point> u;
+  for (const int n : dofs_.owned_nodes())
+    u.push_back(u_state_[overlap_index_[n]]);
+  return u;
+}
+
+std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const Vector &x)
+{
+  KILN_ASSERT(elasticity_, "cell_averages() needs the displacement");
+  assembler_.gather(x, *x_overlap_);
+  build_state();
+  std::vector<ElasticityKernel::CellAverages> result;
+  ElementValues fe;
+  HeatConductionKernel::NodalValues T{};
+  ElasticityKernel::NodalDisplacements u{};
+  for (const int c : dofs_.owned_cells())
+  {
+    for (int i = 0; i < n_hex_nodes; ++i)
+    {
+      const int k = overlap_index_[mesh_.connectivity[c][i]];
+      T[i] = T_state_[k];
+      u[i] = u_state_[k];
+    }
+    fe.reinit(cell_nodes(mesh_, c));
+    result.push_back(elasticity_->cell_averages(fe, u, T));
+  }
+  return result;
+}
+} // namespace kiln

@@ -1,0 +1,73 @@
+#pragma once
+/// The volume kernel of small-strain isotropic linear thermo-elasticity on one Q1 cell.
+#include "discretization/element_values.hpp"
+#include "discretization/local_system.hpp"
+
+#include <array>
+
+namespace kiln
+{
+/// Voigt order used everywhere: xx, yy, zz, xy, xz, yz; strains are TENSOR components
+/// (eps_xy, not gamma_xy = 2 eps_xy).
+using Voigt = std::array<double, 6>;
+
+/// Static equilibrium of a linear thermo-elastic solid:  -div σ(u, T) = b.
+///
+///   ε = sym ∇u,   σ = λ tr(ε) I + 2G ε − β (T − T_ref) I,   β = (3λ + 2G) α
+///   R_{i,d}              = ∫ (σ : sym(e_d ⊗ ∇φ_i) − b_d φ_i) dΩ = ∫ (σ_dk ∂_k φ_i − b_d φ_i) dΩ
+///   dR_{i,d}/du_{j,e}    = ∫ (λ ∂_d φ_i ∂_e φ_j + G (δ_de ∇φ_i·∇φ_j + ∂_e φ_i ∂_d φ_j)) dΩ
+///   dR_{i,d}/dT_j        = −∫ β φ_j ∂_d φ_i dΩ
+///
+/// u, ∇u and T are interpolated from the nodal values at the 2x2x2 Gauss points; the
+/// boundary terms are the BC kernels' (none: traction free). The residual is linear in u and
+/// T, so the Jacobian is exact. The u–u block is symmetric. Only the displacement rows
+/// (fields u_slot .. u_slot + 2) are touched, and the temperature columns (field T_slot) only
+/// when T_slot >= 0, so the kernel serves the mechanical system (3 unknowns per node, T given)
+/// and the coupled one (4 per node) alike.
+class ElasticityKernel final
+{
+public:
+  /// u at the 8 nodes [m].
+  using NodalDisplacements = std::array<Point, n_hex_nodes>;
+  /// T at the 8 nodes [K].
+  using NodalValues = std::array<double, n_hex_nodes>;
+
+  /// lambda, G [Pa]; alpha [1/K]; T_ref [K] (the temperature of zero thermal strain).
+  ElasticityKernel(double lambda, double G, double alpha, double T_ref);
+
+  /// Adds to `local` (8 nodes) the residual [N] at local field index u_slot + d (d = 0, 1, 2)
+  /// of local node i, the Jacobian d/du_{j,e} [N/m] (field u_slot + e) and, if T_slot >= 0,
+  /// d/dT_j [N/K] (field T_slot). body_force b [N/m^3] is constant over the cell.
+  void evaluate(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
+                const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
+
+  /// Volume averages over the cell: stress [Pa], total strain ε [-] and thermal strain
+  /// α (T − T_ref) I [-].
+  struct CellAverages
+  {
+    Voigt stress;
+    Voigt strain;
+    Voigt thermal_strain;
+  };
+  /// ∫ (.) dΩ / ∫ dΩ, both by the 2x2x2 Gauss rule of `fe`.
+  CellAverages cell_averages(const ElementValues &fe, const NodalDisplacements &u,
+                             const NodalValues &T) const;
+
+  /// λ [Pa].
+  double lambda() const { return lambda_; }
+  /// G [Pa].
+  double shear_modulus() const { return G_; }
+  /// α [1/K].
+  double alpha() const { return alpha_; }
+  /// T_ref [K].
+  double reference_temperature() const { return T_ref_; }
+
+private:
+  double lambda_;
+  double G_;
+  double alpha_;
+  double T_ref_;
+  /// β = (3λ + 2G) α [Pa/K]: the stress of a blocked unit temperature rise.
+  double thermal_modulus_;
+};
+} // namespace kiln

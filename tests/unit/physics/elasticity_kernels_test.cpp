@@ -1,0 +1,695 @@
+// Tests src/physics/mechanics/{elasticity,traction}_kernel.cpp on one cell or one face: the
+// Jacobian (displacement and temperature columns) against central finite differences of the
+// residual on a distorted, rotated cell; the u-u block against closed-form integrals on an
+// affine cell; patch tests with affine displacements (exact strain and Hooke stress, a rigid
+// motion and a free thermal expansion give zero residual, a uniform stress gives the boundary
+// integral of σn φ_i); the body-force and traction/pressure loads against V and A; and the
+// slot arguments (3-field system without temperature, 4-field system with it).
+// KILN_TEST_NP: 1
+#include "physics/mechanics/elasticity_kernel.hpp"
+#include "physics/mechanics/traction_kernel.hpp"
+
+#include "discretization/element_values.hpp"
+#include "discretization/face_values.hpp"
+#include "discretization/local_system.hpp"
+#include "mesh/hex_geometry.hpp"
+#include "mesh/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+using kiln::Point;
+using Edges = std::array<Point, 3>;
+using Dense = std::vector<std::vector<double>>;
+using Matrix = std::array<std::array<double, 3>, 3>;
+using NodalDisplacements = kiln::ElasticityKernel::NodalDisplacements;
+using NodalValues = kiln::ElasticityKernel::NodalValues;
+
+/// HEX8 (Exodus) corner i at (ξ, η, ζ) in {0, 1}^3; face (quad) corner i counterclockwise.
+constexpr int hex_corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                  {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+constexpr int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+/// Voigt index of tensor component (d, k): xx, yy, zz, xy, xz, yz.
+constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+
+/// Steel-like constants: E = 200 GPa, nu = 0.3.
+const double youngs = 200.0e9, poisson = 0.3;
+const double lambda = youngs * poisson / ((1 + poisson) * (1 - 2 * poisson));
+const double G = youngs / (2 * (1 + poisson));
+const double alpha = 1.2e-5, T_ref = 293.15;
+/// β = (3λ + 2G) α = E α / (1 − 2ν) [Pa/K].
+const double beta = youngs * alpha / (1 - 2 * poisson);
+
+double dot(const Point &a, const Point &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Point cross(const Point &a, const Point &b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+double norm(const Point &a)
+{
+  return std::sqrt(dot(a, a));
+}
+
+Point times(const Matrix &A, const Point &x)
+{
+  return {dot(A[0], x), dot(A[1], x), dot(A[2], x)};
+}
+
+/// ±1: the sign of ∂ℓ/∂ξ of the 1D linear function of corner coordinate c (ξ or 1 - ξ).
+double sign(const int c)
+{
+  return c == 1 ? 1.0 : -1.0;
+}
+
+/// ∫_0^1 ℓ_a ℓ_b dξ for the corner coordinates a, b: 1/3 if equal, 1/6 if not.
+double mass_1d(const int a, const int b)
+{
+  return a == b ? 1.0 / 3.0 : 1.0 / 6.0;
+}
+
+/// The cell x = origin + Σ_d ξ_d edges[d], ξ in [0, 1]^3, in HEX8 order.
+kiln::HexNodes parallelepiped(const Edges &edges, const Point &origin)
+{
+  kiln::HexNodes x;
+  for (int i = 0; i < 8; ++i)
+    for (int d = 0; d < 3; ++d)
+    {
+      x[i][d] = origin[d];
+      for (int e = 0; e < 3; ++e)
+        x[i][d] += hex_corner[i][e] * edges[e][d];
+    }
+  return x;
+}
+
+/// The face x = origin + s e1 + t e2, (s, t) in [0, 1]^2, counterclockwise about e1 x e2.
+kiln::QuadNodes parallelogram(const Point &e1, const Point &e2, const Point &origin)
+{
+  kiln::QuadNodes x;
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      x[i][d] = origin[d] + quad_corner[i][0] * e1[d] + quad_corner[i][1] * e2[d];
+  return x;
+}
+
+/// The columns of cof(A) = det(A) A^{-T} for A = [a1 a2 a3]: a2 x a3, a3 x a1, a1 x a2.
+Edges cofactor_columns(const Edges &a)
+{
+  return {cross(a[1], a[2]), cross(a[2], a[0]), cross(a[0], a[1])};
+}
+
+double volume(const Edges &a)
+{
+  return dot(a[0], cross(a[1], a[2]));
+}
+
+/// ∫ ∂_k φ_i ∂_l φ_j dΩ on a parallelepiped: with ∂_k φ = Σ_d cof_d[k] ∂_d φ̂ / V and
+/// dΩ = V dξ, it is (1/V) Σ_{d,e} cof_d[k] cof_e[l] ∫ ∂_d φ̂_i ∂_e φ̂_j dξ, the reference
+/// integral a product of ∫ℓ'ℓ' = sign sign, ∫ℓ'ℓ = sign/2 and mass_1d.
+double grad_grad_integral(const Edges &a, const int i, const int k, const int j, const int l)
+{
+  const Edges c = cofactor_columns(a);
+  double value = 0.0;
+  for (int d = 0; d < 3; ++d)
+    for (int e = 0; e < 3; ++e)
+    {
+      double reference = 1.0;
+      for (int f = 0; f < 3; ++f)
+      {
+        const int ci = hex_corner[i][f], cj = hex_corner[j][f];
+        if (f == d && f == e)
+          reference *= sign(ci) * sign(cj);
+        else if (f == d)
+          reference *= 0.5 * sign(ci);
+        else if (f == e)
+          reference *= 0.5 * sign(cj);
+        else
+          reference *= mass_1d(ci, cj);
+      }
+      value += c[d][k] * c[e][l] * reference / volume(a);
+    }
+  return value;
+}
+
+/// ∫ φ_j ∂_k φ_i dΩ on a parallelepiped: Σ_e cof_e[k] ∫ φ̂_j ∂_e φ̂_i dξ.
+double shape_grad_integral(const Edges &a, const int i, const int k, const int j)
+{
+  const Edges c = cofactor_columns(a);
+  double value = 0.0;
+  for (int e = 0; e < 3; ++e)
+  {
+    double reference = 1.0;
+    for (int f = 0; f < 3; ++f)
+      reference *=
+          f == e ? 0.5 * sign(hex_corner[i][f]) : mass_1d(hex_corner[i][f], hex_corner[j][f]);
+    value += c[e][k] * reference;
+  }
+  return value;
+}
+
+double max_abs(const Dense &m)
+{
+  double v = 0.0;
+  for (const auto &row : m)
+    for (const double x : row)
+      v = std::max(v, std::abs(x));
+  return v;
+}
+
+double max_abs(const std::vector<double> &values)
+{
+  double v = 0.0;
+  for (const double x : values)
+    v = std::max(v, std::abs(x));
+  return v;
+}
+
+Dense jacobian_of(const kiln::LocalSystem &local)
+{
+  const int n = local.size();
+  Dense j(n, std::vector<double>(n));
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      j[r][c] = local.jacobian_values()[r * n + c];
+  return j;
+}
+
+/// A sheared, stretched and rotated cell (volume checked in the tests).
+const Edges skew_edges = {{{1.2, 0.3, -0.2}, {-0.4, 0.9, 0.25}, {0.3, -0.1, 0.7}}};
+const Point skew_origin{0.5, -1.0, 2.0};
+
+/// The skew cell with every node moved by up to ~0.1 (a non-affine, warped cell), then
+/// rotated by Rx(40°) Ry(25°) and scaled to millimetres.
+kiln::HexNodes distorted_cell()
+{
+  const kiln::HexNodes affine = parallelepiped(skew_edges, skew_origin);
+  const auto rotation = kiln::rotation_matrix(25.0, 40.0);
+  kiln::HexNodes x;
+  for (int i = 0; i < 8; ++i)
+  {
+    Point moved;
+    for (int d = 0; d < 3; ++d)
+      moved[d] = affine[i][d] + 0.1 * std::sin(1.7 * i + 2.3 * d + 0.5);
+    for (int d = 0; d < 3; ++d)
+      x[i][d] = 1e-3 * dot(rotation[d], moved);
+  }
+  return x;
+}
+
+/// u = E x + c at the nodes.
+NodalDisplacements affine_displacement(const kiln::HexNodes &x, const Matrix &E, const Point &c)
+{
+  NodalDisplacements u;
+  for (int i = 0; i < 8; ++i)
+  {
+    const Point Ex = times(E, x[i]);
+    for (int d = 0; d < 3; ++d)
+      u[i][d] = Ex[d] + c[d];
+  }
+  return u;
+}
+
+/// The cell's residual in a fresh local system, its values in local-index order.
+std::vector<double> residual_of(const kiln::ElasticityKernel &kernel, const kiln::ElementValues &fe,
+                                const NodalDisplacements &u, const NodalValues &T, const Point &b,
+                                const int u_slot, const int T_slot, const int n_fields)
+{
+  kiln::LocalSystem local(8, n_fields);
+  kernel.evaluate(fe, u, T, b, u_slot, T_slot, local);
+  return local.residual_values();
+}
+
+/// A non-symmetric displacement gradient of order 1e-3.
+const Matrix gradient_E = {
+    {{1.0e-3, -4.0e-4, 2.5e-4}, {6.0e-4, -7.0e-4, 3.0e-4}, {-2.0e-4, 9.0e-4, 5.0e-4}}};
+
+const kiln::ElasticityKernel kernel(lambda, G, alpha, T_ref);
+} // namespace
+
+TEST(ElasticityKernel, ConstructorKeepsTheConstants)
+{
+  EXPECT_EQ(kernel.lambda(), lambda);
+  EXPECT_EQ(kernel.shear_modulus(), G);
+  EXPECT_EQ(kernel.alpha(), alpha);
+  EXPECT_EQ(kernel.reference_temperature(), T_ref);
+}
+
+TEST(ElasticityKernel, JacobianMatchesFiniteDifferencesOnADistortedCell)
+{
+  // 4-field local system, T in field 0 and u in fields 1-3 as in the coupled problem. The
+  // residual is linear in (u, T), so central differences are exact up to rounding.
+  const kiln::HexNodes x = distorted_cell();
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  std::vector<double> state(32);
+  for (int i = 0; i < 8; ++i)
+  {
+    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
+    for (int d = 0; d < 3; ++d)
+      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + 1e-3 * dot(gradient_E[d], x[i]);
+  }
+  const Point b{1.0e4, -2.0e4, 7.8e4};
+  const auto unpack = [](const std::vector<double> &s, NodalDisplacements &u, NodalValues &T)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      T[i] = s[4 * i];
+      for (int d = 0; d < 3; ++d)
+        u[i][d] = s[4 * i + 1 + d];
+    }
+  };
+  const auto residual = [&](const std::vector<double> &s)
+  {
+    NodalDisplacements u;
+    NodalValues T;
+    unpack(s, u, T);
+    return residual_of(kernel, fe, u, T, b, 1, 0, 4);
+  };
+
+  NodalDisplacements u;
+  NodalValues T;
+  unpack(state, u, T);
+  kiln::LocalSystem local(8, 4);
+  kernel.evaluate(fe, u, T, b, 1, 0, local);
+  const Dense J = jacobian_of(local);
+
+  Dense fd(32, std::vector<double>(32));
+  for (int c = 0; c < 32; ++c)
+  {
+    const double eps = c % 4 == 0 ? 1e-1 : 1e-7; // [K] or [m]
+    std::vector<double> plus = state, minus = state;
+    plus[c] += eps;
+    minus[c] -= eps;
+    const std::vector<double> r_plus = residual(plus), r_minus = residual(minus);
+    for (int r = 0; r < 32; ++r)
+      fd[r][c] = (r_plus[r] - r_minus[r]) / (2 * eps);
+  }
+
+  // Relative errors of the u-u and the u-T blocks, each against its own size; the T rows are
+  // the heat kernels' and must stay zero.
+  double scale_u = 0.0, scale_T = 0.0, error_u = 0.0, error_T = 0.0;
+  for (int r = 0; r < 32; ++r)
+    for (int c = 0; c < 32; ++c)
+    {
+      if (r % 4 == 0)
+      {
+        EXPECT_EQ(J[r][c], 0.0) << "(" << r << ", " << c << ")";
+        EXPECT_EQ(fd[r][c], 0.0) << "(" << r << ", " << c << ")";
+        continue;
+      }
+      const double difference = std::abs(J[r][c] - fd[r][c]);
+      if (c % 4 == 0)
+      {
+        scale_T = std::max(scale_T, std::abs(J[r][c]));
+        error_T = std::max(error_T, difference);
+      }
+      else
+      {
+        scale_u = std::max(scale_u, std::abs(J[r][c]));
+        error_u = std::max(error_u, difference);
+      }
+    }
+  ASSERT_GT(scale_u, 0.0);
+  ASSERT_GT(scale_T, 0.0);
+  EXPECT_LT(error_u, 1e-8 * scale_u);
+  EXPECT_LT(error_T, 1e-8 * scale_T);
+  std::cout << "ElasticityKernel: max |J - J_fd| / max |J|: u columns " << error_u / scale_u
+            << ", T columns " << error_T / scale_T << "\n";
+
+  // The u-u block is symmetric.
+  double asymmetry = 0.0;
+  for (int r = 0; r < 32; ++r)
+    for (int c = 0; c < 32; ++c)
+      if (r % 4 != 0 && c % 4 != 0)
+        asymmetry = std::max(asymmetry, std::abs(J[r][c] - J[c][r]));
+  EXPECT_LT(asymmetry, 1e-14 * scale_u);
+}
+
+TEST(ElasticityKernel, JacobianEqualsClosedFormIntegralsOnAnAffineCell)
+{
+  //   dR_{i,d}/du_{j,e} = λ ∫∂_dφ_i ∂_eφ_j + G (δ_de ∫∇φ_i·∇φ_j + ∫∂_eφ_i ∂_dφ_j)
+  //   dR_{i,d}/dT_j     = −β ∫ φ_j ∂_dφ_i
+  // with the exact integrals of the parallelepiped (2x2x2 Gauss is exact there).
+  const double V = volume(skew_edges);
+  ASSERT_GT(V, 0.5);
+  kiln::ElementValues fe;
+  fe.reinit(parallelepiped(skew_edges, skew_origin));
+  NodalDisplacements u{};
+  NodalValues T{};
+  T.fill(T_ref);
+  kiln::LocalSystem local(8, 4);
+  kernel.evaluate(fe, u, T, {0, 0, 0}, 1, 0, local);
+  const double scale = max_abs(jacobian_of(local));
+  double scale_T = 0.0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int d = 0; d < 3; ++d)
+      {
+        for (int e = 0; e < 3; ++e)
+        {
+          double laplace = 0.0;
+          for (int k = 0; k < 3; ++k)
+            laplace += grad_grad_integral(skew_edges, i, k, j, k);
+          const double expected =
+              lambda * grad_grad_integral(skew_edges, i, d, j, e) +
+              G * ((d == e ? laplace : 0.0) + grad_grad_integral(skew_edges, i, e, j, d));
+          EXPECT_NEAR(local.jacobian(1 + d, i, 1 + e, j), expected, 1e-13 * scale)
+              << "(" << i << ", " << d << "; " << j << ", " << e << ")";
+        }
+        const double expected_T = -beta * shape_grad_integral(skew_edges, i, d, j);
+        scale_T = std::max(scale_T, std::abs(expected_T));
+        EXPECT_NEAR(local.jacobian(1 + d, i, 0, j), expected_T, 1e-13 * beta * V)
+            << "(" << i << ", " << d << "; T " << j << ")";
+      }
+  EXPECT_GT(scale_T, 0.0);
+
+  // The unit cube's diagonal in words: (λ + G) ∫(∂_xφ)^2 + G ∫|∇φ|^2 = (λ + G)/9 + G/3.
+  fe.reinit(parallelepiped({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}));
+  kiln::LocalSystem cube(8, 3);
+  kernel.evaluate(fe, u, T, {0, 0, 0}, 0, -1, cube);
+  for (int i = 0; i < 8; ++i)
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(cube.jacobian(d, i, d, i), (lambda + 4 * G) / 9, 1e-13 * (lambda + 4 * G));
+}
+
+TEST(ElasticityKernel, AffineDisplacementGivesExactStrainAndHookeStress)
+{
+  // u = E x + c is in the Q1 space of any trilinear cell, so ε = sym(E) exactly at every
+  // Gauss point; with uniform T the stress is uniform and R_{i,d} = σ_dk ∫∂_kφ_i dΩ, which
+  // the divergence theorem turns into Σ_faces σ_dk ∫ φ_i n_k dA (quad_nodal_areas).
+  const double dT = 35.0;
+  const Point c{2e-4, -1e-4, 3e-4};
+  for (const kiln::HexNodes &x : {parallelepiped(skew_edges, skew_origin), distorted_cell()})
+  {
+    kiln::ElementValues fe;
+    fe.reinit(x);
+    const NodalDisplacements u = affine_displacement(x, gradient_E, c);
+    NodalValues T;
+    T.fill(T_ref + dT);
+    const kiln::ElasticityKernel::CellAverages averages = kernel.cell_averages(fe, u, T);
+
+    Matrix strain, stress;
+    const double trace = gradient_E[0][0] + gradient_E[1][1] + gradient_E[2][2];
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k)
+      {
+        strain[d][k] = 0.5 * (gradient_E[d][k] + gradient_E[k][d]);
+        stress[d][k] = 2 * G * strain[d][k] + (d == k ? lambda * trace - beta * dT : 0.0);
+      }
+    const double stress_scale = G * 1e-3;
+    double strain_error = 0.0;
+    for (int d = 0; d < 3; ++d)
+      for (int k = d; k < 3; ++k)
+      {
+        const int v = voigt_index[d][k];
+        strain_error = std::max(strain_error, std::abs(averages.strain[v] - strain[d][k]));
+        EXPECT_NEAR(averages.stress[v], stress[d][k], 1e-12 * stress_scale) << d << k;
+        EXPECT_NEAR(averages.thermal_strain[v], d == k ? alpha * dT : 0.0, 1e-15 * alpha * dT);
+      }
+    EXPECT_LT(strain_error, 1e-15);
+    std::cout << "ElasticityKernel: affine u, max |mean strain - sym(E)| = " << strain_error
+              << " (|E| ~ 1e-3)\n";
+
+    // Independent of the Lamé form: the compliance of (E, ν) maps the stress back to the
+    // mechanical strain ε − α ΔT I.
+    const double mean_stress_trace = averages.stress[0] + averages.stress[1] + averages.stress[2];
+    for (int d = 0; d < 3; ++d)
+      for (int k = d; k < 3; ++k)
+      {
+        const double mechanical = ((1 + poisson) * averages.stress[voigt_index[d][k]] -
+                                   (d == k ? poisson * mean_stress_trace : 0.0)) /
+                                  youngs;
+        EXPECT_NEAR(mechanical + (d == k ? alpha * dT : 0.0), strain[d][k], 1e-15) << d << k;
+      }
+
+    // The residual is the boundary integral of σ n φ_i.
+    const std::vector<double> R = residual_of(kernel, fe, u, T, {0, 0, 0}, 0, -1, 3);
+    std::array<Point, 8> boundary{};
+    for (int f = 0; f < kiln::n_hex_faces; ++f)
+    {
+      kiln::QuadNodes face;
+      for (int a = 0; a < 4; ++a)
+        face[a] = x[kiln::hex_face_nodes[f][a]];
+      const kiln::QuadNodalAreas areas = kiln::quad_nodal_areas(face);
+      for (int a = 0; a < 4; ++a)
+        for (int d = 0; d < 3; ++d)
+          boundary[kiln::hex_face_nodes[f][a]][d] += dot(stress[d], areas.area_vector[a]);
+    }
+    const double R_scale = max_abs(R);
+    ASSERT_GT(R_scale, 0.0);
+    Point sum{0, 0, 0};
+    for (int i = 0; i < 8; ++i)
+      for (int d = 0; d < 3; ++d)
+      {
+        EXPECT_NEAR(R[3 * i + d], boundary[i][d], 1e-12 * R_scale) << "node " << i << ", " << d;
+        sum[d] += R[3 * i + d];
+      }
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(sum[d], 0.0, 1e-13 * R_scale);
+  }
+}
+
+TEST(ElasticityKernel, RigidMotionGivesZeroStressAndResidual)
+{
+  // u = W x + c with W skew (an infinitesimal rotation) and T = T_ref: no strain.
+  const Matrix W = {{{0.0, -3e-3, 2e-3}, {3e-3, 0.0, -1e-3}, {-2e-3, 1e-3, 0.0}}};
+  const kiln::HexNodes x = distorted_cell();
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  const NodalDisplacements u = affine_displacement(x, W, {1e-4, 2e-4, -5e-5});
+  NodalValues T;
+  T.fill(T_ref);
+  const std::vector<double> R = residual_of(kernel, fe, u, T, {0, 0, 0}, 0, -1, 3);
+  // Scale: one displacement of the same size as a stretch instead, G |W| L^2.
+  const double L = 1e-3, scale = G * 3e-3 * L * L;
+  EXPECT_LT(max_abs(R), 1e-12 * scale);
+  std::cout << "ElasticityKernel: rigid motion, max |R| / (G |W| L^2) = " << max_abs(R) / scale
+            << "\n";
+  const kiln::ElasticityKernel::CellAverages averages = kernel.cell_averages(fe, u, T);
+  for (int v = 0; v < 6; ++v)
+  {
+    EXPECT_NEAR(averages.strain[v], 0.0, 1e-17) << v;
+    EXPECT_NEAR(averages.stress[v], 0.0, 1e-12 * G * 3e-3) << v;
+    EXPECT_EQ(averages.thermal_strain[v], 0.0) << v;
+  }
+}
+
+TEST(ElasticityKernel, FreeThermalExpansionIsStressFree)
+{
+  // u = α ΔT (x − x0), T = T_ref + ΔT: ε = α ΔT I = the thermal strain, σ = 0, R = 0.
+  const double dT = 120.0;
+  const kiln::HexNodes x = distorted_cell();
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  Matrix expansion{};
+  for (int d = 0; d < 3; ++d)
+    expansion[d][d] = alpha * dT;
+  const Point x0 = x[3];
+  const NodalDisplacements u = affine_displacement(x, expansion, times(expansion, x0));
+  NodalValues T;
+  T.fill(T_ref + dT);
+  const std::vector<double> R = residual_of(kernel, fe, u, T, {0, 0, 0}, 1, 0, 4);
+  const double L = 1e-3, scale = beta * dT * L * L; // the residual of the blocked expansion
+  EXPECT_LT(max_abs(R), 1e-12 * scale);
+  std::cout << "ElasticityKernel: free expansion, max |R| / (β ΔT L^2) = " << max_abs(R) / scale
+            << "\n";
+  const kiln::ElasticityKernel::CellAverages averages = kernel.cell_averages(fe, u, T);
+  for (int v = 0; v < 6; ++v)
+  {
+    const double expected = v < 3 ? alpha * dT : 0.0;
+    EXPECT_NEAR(averages.strain[v], expected, 1e-15 * alpha * dT) << v;
+    EXPECT_NEAR(averages.thermal_strain[v], expected, 1e-15 * alpha * dT) << v;
+    EXPECT_NEAR(averages.stress[v], 0.0, 1e-12 * beta * dT) << v;
+  }
+
+  // The same cell with u = 0 (blocked): σ = −β ΔT I and the residual is −β ΔT ∫∇φ_i.
+  const NodalDisplacements zero{};
+  const kiln::ElasticityKernel::CellAverages blocked = kernel.cell_averages(fe, zero, T);
+  for (int v = 0; v < 6; ++v)
+    EXPECT_NEAR(blocked.stress[v], v < 3 ? -beta * dT : 0.0, 1e-13 * beta * dT) << v;
+}
+
+TEST(ElasticityKernel, ThermalStrainAverageOfAVaryingTemperature)
+{
+  // On a parallelepiped ∫φ_i = V/8, so the mean of α (T − T_ref) is α (mean of T_i − T_ref).
+  kiln::ElementValues fe;
+  fe.reinit(parallelepiped(skew_edges, skew_origin));
+  NodalValues T;
+  double mean = 0.0;
+  for (int i = 0; i < 8; ++i)
+  {
+    T[i] = T_ref + 10.0 * i - 3.0 * i * i;
+    mean += T[i] / 8;
+  }
+  const kiln::ElasticityKernel::CellAverages averages = kernel.cell_averages(fe, {}, T);
+  for (int v = 0; v < 6; ++v)
+  {
+    const double expected = v < 3 ? alpha * (mean - T_ref) : 0.0;
+    EXPECT_NEAR(averages.thermal_strain[v], expected, 1e-13 * alpha * 100) << v;
+    EXPECT_NEAR(averages.stress[v], v < 3 ? -beta * (mean - T_ref) : 0.0, 1e-12 * beta * 100) << v;
+  }
+}
+
+TEST(ElasticityKernel, BodyForceGivesMinusBTimesTheShapeIntegrals)
+{
+  // u = 0, T = T_ref: R_{i,d} = −b_d ∫φ_i, = −b_d V / 8 on a parallelepiped; Σ_i = −b_d V.
+  const Point b{2.6e4, -9.81 * 7.8e3, 1.0e3};
+  NodalValues T;
+  T.fill(T_ref);
+  const NodalDisplacements u{};
+  {
+    const double V = volume(skew_edges);
+    kiln::ElementValues fe;
+    fe.reinit(parallelepiped(skew_edges, skew_origin));
+    kiln::LocalSystem local(8, 4);
+    kernel.evaluate(fe, u, T, b, 1, 0, local);
+    for (int i = 0; i < 8; ++i)
+    {
+      EXPECT_EQ(local.residual(0, i), 0.0);
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(local.residual(1 + d, i), -b[d] * V / 8, 1e-13 * norm(b) * V)
+            << "node " << i << ", " << d;
+    }
+  }
+  const kiln::HexNodes x = distorted_cell();
+  const double V = kiln::hex_volume(x);
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  const std::vector<double> R = residual_of(kernel, fe, u, T, b, 0, -1, 3);
+  for (int d = 0; d < 3; ++d)
+  {
+    double sum = 0.0;
+    for (int i = 0; i < 8; ++i)
+      sum += R[3 * i + d];
+    EXPECT_NEAR(sum, -b[d] * V, 1e-13 * norm(b) * V) << d;
+  }
+}
+
+TEST(ElasticityKernel, SlotsSelectTheFieldsWritten)
+{
+  // T_slot = −1, u_slot = 0: a 3-field system equal to the u rows and columns of the coupled
+  // one (T_slot = 0, u_slot = 1); in a 4-field system field 3 is then left untouched.
+  const kiln::HexNodes x = distorted_cell();
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  NodalDisplacements u = affine_displacement(x, gradient_E, {0, 0, 0});
+  NodalValues T;
+  for (int i = 0; i < 8; ++i)
+  {
+    T[i] = T_ref + 5.0 * i;
+    u[i][1] += 1e-7 * i;
+  }
+  const Point b{1e3, 2e3, 3e3};
+  kiln::LocalSystem coupled(8, 4), mechanical(8, 3), padded(8, 4);
+  kernel.evaluate(fe, u, T, b, 1, 0, coupled);
+  kernel.evaluate(fe, u, T, b, 0, -1, mechanical);
+  kernel.evaluate(fe, u, T, b, 0, -1, padded);
+  for (int i = 0; i < 8; ++i)
+  {
+    EXPECT_EQ(padded.residual(3, i), 0.0);
+    for (int d = 0; d < 3; ++d)
+    {
+      EXPECT_EQ(mechanical.residual(d, i), coupled.residual(1 + d, i));
+      EXPECT_EQ(padded.residual(d, i), coupled.residual(1 + d, i));
+    }
+    for (int j = 0; j < 8; ++j)
+    {
+      for (int f = 0; f < 4; ++f)
+      {
+        EXPECT_EQ(padded.jacobian(3, i, f, j), 0.0);
+        EXPECT_EQ(padded.jacobian(f, i, 3, j), 0.0);
+      }
+      for (int d = 0; d < 3; ++d)
+        for (int e = 0; e < 3; ++e)
+        {
+          EXPECT_EQ(mechanical.jacobian(d, i, e, j), coupled.jacobian(1 + d, i, 1 + e, j));
+          EXPECT_EQ(padded.jacobian(d, i, e, j), coupled.jacobian(1 + d, i, 1 + e, j));
+        }
+    }
+  }
+
+  // T in the last slot (u_slot = 0, T_slot = 3): the same coupling block, moved.
+  kiln::LocalSystem last(8, 4);
+  kernel.evaluate(fe, u, T, b, 0, 3, last);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int d = 0; d < 3; ++d)
+        EXPECT_EQ(last.jacobian(d, i, 3, j), coupled.jacobian(1 + d, i, 0, j));
+}
+
+TEST(TractionKernel, TotalIsMinusTractionTimesArea)
+{
+  // A parallelogram with sides e1 and e2: area |e1 x e2|, a quarter of −t A per node; the
+  // load does not depend on u: no Jacobian. Field 0 (T) of the 4-field system stays zero.
+  const Point e1{0.3, 0.0, 0.1}, e2{0.05, 0.2, -0.1};
+  const double area = norm(cross(e1, e2));
+  const Point t{1.0e6, -2.5e6, 4.0e5};
+  kiln::FaceValues fv;
+  fv.reinit(parallelogram(e1, e2, {0.0, 1.0, 0.0}));
+  kiln::LocalSystem local(4, 4);
+  kiln::TractionKernel::evaluate(fv, t, 1, local);
+  Point sum{0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+  {
+    EXPECT_EQ(local.residual(0, i), 0.0);
+    for (int d = 0; d < 3; ++d)
+    {
+      EXPECT_NEAR(local.residual(1 + d, i), -t[d] * area / 4, 1e-12 * norm(t) * area);
+      sum[d] += local.residual(1 + d, i);
+    }
+  }
+  for (int d = 0; d < 3; ++d)
+    EXPECT_NEAR(sum[d], -t[d] * area, 1e-12 * norm(t) * area);
+  for (const double v : local.jacobian_values())
+    EXPECT_EQ(v, 0.0);
+}
+
+TEST(TractionKernel, PressurePushesAgainstTheOutwardNormal)
+{
+  // Flat face: t = −p n, so Σ_i R_i = −(−p n) A = p n A with n = e1 x e2 / |e1 x e2|.
+  const double p = 3.0e7;
+  const Point e1{0.3, 0.0, 0.1}, e2{0.05, 0.2, -0.1};
+  const Point area_vector = cross(e1, e2);
+  const double area = norm(area_vector);
+  kiln::FaceValues fv;
+  fv.reinit(parallelogram(e1, e2, {0.0, 1.0, 0.0}));
+  kiln::LocalSystem local(4, 3);
+  kiln::TractionKernel::evaluate_pressure(fv, p, 0, local);
+  for (int d = 0; d < 3; ++d)
+  {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i)
+    {
+      EXPECT_NEAR(local.residual(d, i), p * area_vector[d] / 4, 1e-12 * p * area);
+      sum += local.residual(d, i);
+    }
+    EXPECT_NEAR(sum, p * area_vector[d], 1e-12 * p * area) << d;
+  }
+  for (const double v : local.jacobian_values())
+    EXPECT_EQ(v, 0.0);
+
+  // A warped face: per node R_i = p ∫ φ_i n dA, the node's share of the area vector.
+  const kiln::QuadNodes warped{
+      {{0.0, 0.0, 0.0}, {1.0, 0.1, 0.2}, {1.2, 0.9, -0.1}, {-0.1, 1.0, 0.3}}};
+  fv.reinit(warped);
+  const kiln::QuadNodalAreas shares = kiln::quad_nodal_areas(warped);
+  kiln::LocalSystem bent(4, 3);
+  kiln::TractionKernel::evaluate_pressure(fv, p, 0, bent);
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(bent.residual(d, i), p * shares.area_vector[i][d], 1e-12 * p)
+          << "node " << i << ", " << d;
+}
