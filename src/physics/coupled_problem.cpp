@@ -227,12 +227,13 @@ void CoupledProblem::build_frames()
     }
     else if (bc.type() == MechanicalBoundaryCondition::Type::normal_displacement)
     {
-      // The node's normal of this condition: the area-weighted outward normals of its
-      // faces there (exact on a plane face, the usual average at a crease).
-      std::vector<Point> normal(mesh_.n_nodes(), Point{});
-      std::vector<int> touched;
+      // The node's normal on each side set of this condition: the area-weighted outward
+      // normals of the set's faces there (exact on a plane face, the usual average at a
+      // crease within one set). Side sets meeting at an edge give one constraint each.
       for (const int id : bc.side_sets())
       {
+        std::vector<Point> normal(mesh_.n_nodes(), Point{});
+        std::vector<int> touched;
         const SideSet &set = *mesh_.find_side_set(id);
         for (int s = 0; s < set.n_sides(); ++s)
         {
@@ -247,14 +248,14 @@ void CoupledProblem::build_frames()
                 normal[node][d] += fv.shape(i, q) * fv.normal(q)[d] * fv.JxW(q);
           }
         }
-      }
-      for (const int node : touched)
-      {
-        Point n = normal[node];
-        const double length = std::sqrt(dot(n, n));
-        for (double &x : n)
-          x /= length;
-        directions[node].emplace_back(b, n);
+        for (const int node : touched)
+        {
+          Point n = normal[node];
+          const double length = std::sqrt(dot(n, n));
+          for (double &x : n)
+            x /= length;
+          directions[node].emplace_back(b, n);
+        }
       }
     }
   }
