@@ -14,11 +14,11 @@ using MEB = Thyra::ModelEvaluatorBase;
 using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
 
 ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
+                               RCP<const NonlinearProblem::Vector> scale,
                                RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory)
-    : problem_(std::move(problem)), W_factory_(std::move(W_factory)),
+    : problem_(std::move(problem)), scale_(std::move(scale)), W_factory_(std::move(W_factory)),
       space_(Thyra::createVectorSpace<double>(problem_->solution_map()))
 {
-  scale_ = problem_->unknown_scale();
   if (!scale_.is_null())
     x_unscaled_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
   MEB::InArgsSetup<double> in_args;

@@ -3,7 +3,7 @@
 /// NonlinearProblem. x and f live on solution_map(); W is a Tpetra::CrsMatrix
 /// on jacobian_graph() (static graph), wrapped by Thyra::tpetraLinearOp and
 /// solved with the Stratimikos factory given at construction. With the
-/// problem's unknown_scale() c, NOX sees the scaled system: x̂ = x / c,
+/// unknown scale c (the problem's unknown_scale()), NOX sees the scaled system: x̂ = x / c,
 /// F̂(x̂) = c F(c x̂), Ŵ = diag(c) J diag(c).
 #include "discretization/nonlinear_problem.hpp"
 
@@ -17,7 +17,9 @@ namespace internal
 class ModelEvaluator final : public Thyra::StateFuncModelEvaluatorBase<double>
 {
 public:
+  /// `scale`: c, or null for none.
   ModelEvaluator(Teuchos::RCP<NonlinearProblem> problem,
+                 Teuchos::RCP<const NonlinearProblem::Vector> scale,
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory);
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override;

@@ -240,7 +240,8 @@ void check_muelu_parameters(const ParameterList &stratimikos,
 /// and repartitioning; the number of unknowns per node is the ratio of owned
 /// rows to owned nodes, the same on every rank.
 void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem,
-                     const Teuchos::Comm<int> &comm)
+                     const Teuchos::Comm<int> &comm, const bool near_null_space,
+                     const RCP<const NonlinearProblem::Vector> &scale)
 {
   const RCP<const Tpetra::MultiVector<double>> coordinates = problem.node_coordinates();
   if (coordinates.is_null() || !uses_muelu(stratimikos))
@@ -260,10 +261,9 @@ void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem
     muelu.set("number of equations", static_cast<int>(global[0]));
   // The near-null space, divided by the unknown scale as the solver sees it.
   const RCP<const Tpetra::MultiVector<double>> modes = problem.near_null_space();
-  if (!modes.is_null() && !muelu.isParameter("Nullspace"))
+  if (near_null_space && !modes.is_null() && !muelu.isParameter("Nullspace"))
   {
     auto scaled = Teuchos::rcp(new Tpetra::MultiVector<double>(*modes, Teuchos::Copy));
-    const RCP<const NonlinearProblem::Vector> scale = problem.unknown_scale();
     if (!scale.is_null())
     {
       NonlinearProblem::Vector inverse(scale->getMap());
@@ -291,6 +291,13 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
   p.set("Relative Tolerance", 1e-8,
         "Converged when ||F||_2 <= this * ||F(x0)||_2 [dimensionless], must be > 0",
         positive_double_validator());
+  p.set("Scale Unknowns", true,
+        "solve for x / c with rows times c, c the problem's scale of each unknown (with "
+        "temperature and displacement: 1 for T, sqrt(k / (lambda + 2G)) for u; see "
+        "doc/mechanics.md); the tolerances above then apply to the scaled residual [-]");
+  p.set("Near-Null Space", true,
+        "hand MueLu the problem's near-null space (the constant temperature and the six "
+        "rigid-body modes) instead of MueLu's default (a constant per unknown of a node) [-]");
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
         positive_int_validator());
@@ -324,6 +331,8 @@ struct NewtonSolver::Impl
   ParameterList nonlinear;
   RCP<Stratimikos::DefaultLinearSolverBuilder> builder;
   RCP<internal::ModelEvaluator> model;
+  /// The unknowns' scale c (NOX sees x / c), or null.
+  RCP<const NonlinearProblem::Vector> scale;
   /// Kept between solves: it owns the Jacobian and the linear solver.
   RCP<NOX::Thyra::Group> group;
 
@@ -367,7 +376,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
       "Ifpack2");
   internal::add_smoother_defaults(*linear);
   internal::check_muelu_parameters(*linear, s.comm);
-  internal::add_coordinates(*linear, *problem, *s.comm);
+  const RCP<const NonlinearProblem::Vector> scale =
+      p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;
+  internal::add_coordinates(*linear, *problem, *s.comm, p.get<bool>("Near-Null Space"), scale);
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory;
   internal::as_input_error(*s.comm, linear_name,
                            [&]
@@ -376,7 +387,8 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
                              lows_factory = Thyra::createLinearSolveStrategy(*s.builder);
                            });
   lows_factory->setOStream(s.out);
-  s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, lows_factory));
+  s.scale = scale;
+  s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, scale, lows_factory));
 
   // NOX: build a solver once, so that a wrong option is an input error now.
   const NOX::Thyra::Vector x0(s.model->getNominalValues().get_x()->clone_v());
@@ -405,7 +417,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
 
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
   // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
-  const RCP<const NonlinearProblem::Vector> scale = s.problem->unknown_scale();
+  const RCP<const NonlinearProblem::Vector> scale = s.scale;
   auto x_hat = Teuchos::rcp(new NonlinearProblem::Vector(x, Teuchos::Copy));
   if (!scale.is_null())
   {

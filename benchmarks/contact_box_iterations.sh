@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Benchmark: Belos iterations per linear solve (MueLu preconditioner) and wall time of
-# the heat conduction in the contact box (inputs/contact-box-close.xml) on refined
-# meshes, the first three steps (t = 0..11 s: dt 1, 5, 5 s).
-# usage: benchmarks/thermal_iterations.sh [NP] [CELLS...]     (default: 2  8 16 32 64)
+# the contact box (inputs/contact-box-close.xml, thermo-elastic) on refined meshes, the
+# first three steps (t = 0..11 s: dt 1, 5, 5 s).
+# usage: benchmarks/contact_box_iterations.sh [NP] [CELLS...]     (default: 2  8 16 32 64)
+# KILN_PHYSICS="Heat Conduction" runs the heat conduction alone (the Mechanics block is
+# dropped).
 # Prints one line per mesh: cells, unknowns, Newton and linear iterations, linear per
 # solve, wall time. Extra Solver options: KILN_SOLVER_XML=file.xml (a <ParameterList
 # name="Solver"> block that replaces the deck's).
@@ -21,6 +23,10 @@ for n in ${cells[@]}; do
   sed -e "s/value=\"{4, 4, 4}\"/value=\"{$n, $n, $n}\"/" \
       -e "s#<Parameter name=\"Times\" type=\"Array(double)\" value=\"{0, 50, 53, 150}\"/>#<Parameter name=\"Times\" type=\"Array(double)\" value=\"{11}\"/><Parameter name=\"File Base\" type=\"string\" value=\"$work/out$n\"/>#" \
       "$here/inputs/contact-box-close.xml" > "$deck"
+  if [ "${KILN_PHYSICS:-}" = "Heat Conduction" ]; then
+    sed -i -e 's/value="Thermo-Elasticity"/value="Heat Conduction"/' \
+        -e '/<ParameterList name="Mechanics">/,/^  <\/ParameterList>/d' "$deck"
+  fi
   if [ -n "${KILN_SOLVER_XML:-}" ]; then
     sed -i "s#<ParameterList name=\"Time Stepping\">#$(tr -d '\n' < "$KILN_SOLVER_XML" | sed 's/[&#]/\\&/g')&#" "$deck"
   fi
