@@ -11,6 +11,7 @@
 #include "physics/mechanics/traction_kernel.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -458,6 +459,8 @@ void CoupledProblem::build_state()
 
 void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
 {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer(
+      J != nullptr ? "Kiln: 5 assembly (residual and Jacobian)" : "Kiln: 5 assembly (residual)"));
   assembler_.gather(x, *x_overlap_);
   build_state();
   assembler_.begin(f != nullptr, J != nullptr);

@@ -1,4 +1,5 @@
-// Tests src/physics/heat/thermal_problem.cpp and thermal_boundary_condition.cpp on a small
+// Tests the heat conduction of src/physics/coupled_problem.cpp (temperature-only layout) and
+// thermal_boundary_condition.cpp on a small
 // rotated box split at its mid-plane: the assembled Jacobian against central differences of
 // the residual with every boundary-condition type, a table k(T), the gap and a BDF2-like time
 // derivative; the scaled identity rows of prescribed temperatures; the global heat balance at
