@@ -3,81 +3,121 @@
 #include "base/errors.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace kiln
 {
 namespace internal
 {
-/// The global ids of each coupling block: the unknowns of a cell's nodes, of a
-/// gap face's 8 nodes, and of a gap pair's 2 nodes plus its contact unknown.
-/// Every unknown of a block couples with every other one.
-template <typename Callback>
-void for_each_block(const Mesh &mesh, const DofManager &dofs, const std::vector<char> &use_cell,
-                    const std::vector<char> &use_face, const std::vector<char> &use_pair,
-                    Callback &&callback)
+/// The coupling blocks, as entities: node n is entity n (its F unknowns), gap pair k is
+/// entity N + k (its contact unknown). A block is a cell's 8 nodes, a gap face's 8 nodes,
+/// or (with contact) a pair's two nodes and the pair; every unknown of a block couples
+/// with every other one. Returns, for each entity e with row[e] >= 0, the sorted entities
+/// it couples with, at index row[e].
+std::vector<std::vector<int>> entity_couplings(const Mesh &mesh, const DofManager &dofs,
+                                               const std::vector<int> &row,
+                                               const std::vector<char> &use_cell,
+                                               const std::vector<char> &use_face,
+                                               const std::vector<char> &use_pair, const int n_rows)
 {
-  const int F = dofs.n_node_fields();
-  std::vector<GO> gids;
-  const auto add_node = [&](const int n)
+  std::vector<std::vector<int>> couplings(n_rows);
+  std::array<int, 8> block{};
+  const auto add_block = [&](const int size)
   {
-    for (int f = 0; f < F; ++f)
-      gids.push_back(dofs.node_dof(n, f));
+    for (int i = 0; i < size; ++i)
+      if (row[block[i]] >= 0)
+        couplings[row[block[i]]].insert(couplings[row[block[i]]].end(), block.begin(),
+                                        block.begin() + size);
   };
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (use_cell[c])
     {
-      gids.clear();
-      for (const int n : mesh.connectivity[c])
-        add_node(n);
-      callback(gids);
+      std::copy(mesh.connectivity[c].begin(), mesh.connectivity[c].end(), block.begin());
+      add_block(8);
     }
   for (std::size_t k = 0; k < mesh.gap_faces.size(); ++k)
     if (use_face[k])
     {
       const GapFace &face = mesh.gap_faces[k];
-      gids.clear();
       for (int i = 0; i < 4; ++i)
-        add_node(mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]]);
-      for (const int n : face.node_b)
-        add_node(n);
-      callback(gids);
+      {
+        block[i] = mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]];
+        block[4 + i] = face.node_b[i];
+      }
+      add_block(8);
     }
-  if (!dofs.layout().contact)
-    return;
-  for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
-    if (use_pair[k])
-    {
-      gids.clear();
-      add_node(mesh.gap_pairs[k].node_a);
-      add_node(mesh.gap_pairs[k].node_b);
-      gids.push_back(dofs.contact_dof(static_cast<int>(k)));
-      callback(gids);
-    }
+  if (dofs.layout().contact)
+    for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
+      if (use_pair[k])
+      {
+        block[0] = mesh.gap_pairs[k].node_a;
+        block[1] = mesh.gap_pairs[k].node_b;
+        block[2] = mesh.n_nodes() + static_cast<int>(k);
+        add_block(3);
+      }
+  for (auto &c : couplings)
+  {
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+  }
+  return couplings;
 }
 
-/// A fill-complete graph with `rows[i]` (global column ids) in row i of `row_map`;
-/// with `col_map`, local column ids are that map's local ids.
-Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const Teuchos::RCP<const Map> &row_map,
-                                            std::vector<std::vector<GO>> &rows,
+/// A fill-complete graph on `row_map` whose rows are the unknowns of `entities` (entity e's
+/// couplings at couplings[i] for entities[i]); with `col_map`, its local column ids are that
+/// map's local ids.
+Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const Mesh &mesh, const DofManager &dofs,
+                                            const Teuchos::RCP<const Map> &row_map,
+                                            const std::vector<int> &entities,
+                                            const std::vector<std::vector<int>> &couplings,
                                             const Teuchos::RCP<const Map> &domain_range,
                                             const Teuchos::RCP<const Map> &col_map = Teuchos::null)
 {
-  std::vector<std::size_t> counts(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i)
+  const int F = dofs.n_node_fields();
+  const int n_nodes = mesh.n_nodes();
+  const auto n_unknowns = [&](const int e) { return e < n_nodes ? F : 1; };
+  const auto first_gid = [&](const int e)
+  { return e < n_nodes ? dofs.node_dof(e, 0) : dofs.contact_dof(e - n_nodes); };
+  std::vector<std::size_t> counts(row_map->getNodeNumElements(), 0);
+  for (std::size_t i = 0; i < entities.size(); ++i)
   {
-    std::sort(rows[i].begin(), rows[i].end());
-    rows[i].erase(std::unique(rows[i].begin(), rows[i].end()), rows[i].end());
-    counts[i] = rows[i].size();
+    std::size_t count = 0;
+    for (const int e : couplings[i])
+      count += n_unknowns(e);
+    for (int s = 0; s < n_unknowns(entities[i]); ++s)
+      counts[row_map->getLocalElement(first_gid(entities[i]) + s)] = count;
   }
   const Teuchos::ArrayView<const std::size_t> row_counts(counts.data(), counts.size());
   auto graph = col_map.is_null()
                    ? Teuchos::rcp(new Tpetra::CrsGraph<>(row_map, row_counts))
                    : Teuchos::rcp(new Tpetra::CrsGraph<>(row_map, col_map, row_counts));
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    graph->insertGlobalIndices(row_map->getGlobalElement(static_cast<LO>(i)),
-                               Teuchos::ArrayView<const GO>(rows[i].data(), rows[i].size()));
+  std::vector<GO> columns;
+  for (std::size_t i = 0; i < entities.size(); ++i)
+  {
+    columns.clear();
+    for (const int e : couplings[i]) // sorted entities give sorted ids
+      for (int s = 0; s < n_unknowns(e); ++s)
+        columns.push_back(first_gid(e) + s);
+    for (int s = 0; s < n_unknowns(entities[i]); ++s)
+      graph->insertGlobalIndices(first_gid(entities[i]) + s,
+                                 Teuchos::ArrayView<const GO>(columns.data(), columns.size()));
+  }
   graph->fillComplete(domain_range, domain_range);
   return graph;
+}
+
+/// The entities (nodes, then pairs N + k) of the given nodes and pairs, and the row index of
+/// every entity (-1 for the others).
+std::vector<int> entity_rows(const Mesh &mesh, const std::vector<int> &nodes,
+                             const std::vector<int> &pairs, std::vector<int> &row)
+{
+  row.assign(mesh.n_nodes() + mesh.gap_pairs.size(), -1);
+  std::vector<int> entities(nodes);
+  for (const int k : pairs)
+    entities.push_back(mesh.n_nodes() + k);
+  for (std::size_t i = 0; i < entities.size(); ++i)
+    row[entities[i]] = static_cast<int>(i);
+  return entities;
 }
 } // namespace internal
 
@@ -96,35 +136,32 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs) : mesh_(mesh), do
   for (const int k : dofs.owned_pairs())
     my_pairs[k] = 1;
 
-  std::vector<std::vector<GO>> overlap_rows(overlap->getNodeNumElements());
-  internal::for_each_block(mesh, dofs, my_cells, my_faces, my_pairs,
-                           [&](const auto &gids)
-                           {
-                             for (const GO row : gids)
-                               overlap_rows[overlap->getLocalElement(row)].insert(
-                                   overlap_rows[overlap->getLocalElement(row)].end(), gids.begin(),
-                                   gids.end());
-                           });
-  // Its column map is the overlap map, so add() can use overlap local ids.
-  overlap_graph_ = internal::make_graph(overlap, overlap_rows, owned, overlap);
-
-  // The owned rows get every block that touches them, from any rank: the mesh
-  // is replicated, so each rank finds its rows' columns without communication.
-  std::vector<char> all_cells(mesh.n_cells(), 1), all_faces(mesh.gap_faces.size(), 1),
-      all_pairs(mesh.gap_pairs.size(), 1);
-  std::vector<std::vector<GO>> owned_rows(owned->getNodeNumElements());
-  internal::for_each_block(mesh, dofs, all_cells, all_faces, all_pairs,
-                           [&](const auto &gids)
-                           {
-                             for (const GO row : gids)
-                             {
-                               const LO i = owned->getLocalElement(row);
-                               if (i != Teuchos::OrdinalTraits<LO>::invalid())
-                                 owned_rows[i].insert(owned_rows[i].end(), gids.begin(),
-                                                      gids.end());
-                             }
-                           });
-  owned_graph_ = internal::make_graph(owned, owned_rows, owned);
+  // The overlap rows hold what this rank assembles; the column map is the overlap map, so
+  // that add() can use overlap local ids.
+  std::vector<int> overlap_pairs;
+  for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
+    if (dofs.layout().contact && overlap->getLocalElement(dofs.contact_dof(static_cast<int>(k))) !=
+                                     Teuchos::OrdinalTraits<LO>::invalid())
+      overlap_pairs.push_back(static_cast<int>(k));
+  std::vector<int> row;
+  {
+    const std::vector<int> entities =
+        internal::entity_rows(mesh, dofs.overlap_nodes(), overlap_pairs, row);
+    const auto couplings = internal::entity_couplings(mesh, dofs, row, my_cells, my_faces, my_pairs,
+                                                      static_cast<int>(entities.size()));
+    overlap_graph_ = internal::make_graph(mesh, dofs, overlap, entities, couplings, owned, overlap);
+  }
+  // The owned rows get every block that touches them, from any rank: the mesh is
+  // replicated, so each rank finds its rows' columns without communication.
+  {
+    const std::vector<char> all_cells(mesh.n_cells(), 1), all_faces(mesh.gap_faces.size(), 1),
+        all_pairs(mesh.gap_pairs.size(), 1);
+    const std::vector<int> entities =
+        internal::entity_rows(mesh, dofs.owned_nodes(), dofs.owned_pairs(), row);
+    const auto couplings = internal::entity_couplings(mesh, dofs, row, all_cells, all_faces,
+                                                      all_pairs, static_cast<int>(entities.size()));
+    owned_graph_ = internal::make_graph(mesh, dofs, owned, entities, couplings, owned);
+  }
 
   overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));
   overlap_residual_ = Teuchos::rcp(new Vector(overlap));
