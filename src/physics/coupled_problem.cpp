@@ -375,16 +375,22 @@ void CoupledProblem::update_prescribed(const double time)
     if (dirichlet_bc_[n] >= 0)
       prescribed_temperature_[n] = bcs_[dirichlet_bc_[n]].value(time);
   for (NodeFrame &frame : frames_)
+    frame.prescribed = prescribed_components(frame, time);
+}
+
+std::array<double, 3> CoupledProblem::prescribed_components(const NodeFrame &frame,
+                                                            const double time) const
+{
+  // n_l . u = g_l with u = sum_k û_k q_k and n_l . q_k = 0 for k > l: forward substitution.
+  std::array<double, 3> u_hat{};
+  for (int l = 0; l < frame.n_constrained; ++l)
   {
-    // n_l . u = g_l with u = sum_k û_k q_k and n_l . q_k = 0 for k > l: forward substitution.
-    for (int l = 0; l < frame.n_constrained; ++l)
-    {
-      double g = mechanical_bcs_[frame.bc[l]].value(time);
-      for (int k = 0; k < l; ++k)
-        g -= dot(frame.n[l], frame.q[k]) * frame.prescribed[k];
-      frame.prescribed[l] = g / dot(frame.n[l], frame.q[l]);
-    }
+    double g = mechanical_bcs_[frame.bc[l]].value(time);
+    for (int k = 0; k < l; ++k)
+      g -= dot(frame.n[l], frame.q[k]) * u_hat[k];
+    u_hat[l] = g / dot(frame.n[l], frame.q[l]);
   }
+  return u_hat;
 }
 
 void CoupledProblem::set_time_derivative(const double time, const double a, const Vector &b)
@@ -408,15 +414,10 @@ void CoupledProblem::initial_condition(const double time, Vector &x) const
                                                                : initial_temperature_);
     if (frame_of_node_[n] >= 0)
     {
-      NodeFrame frame = frames_[frame_of_node_[n]];
+      const NodeFrame &frame = frames_[frame_of_node_[n]];
+      const std::array<double, 3> u_hat = prescribed_components(frame, time);
       for (int l = 0; l < frame.n_constrained; ++l)
-      {
-        double g = mechanical_bcs_[frame.bc[l]].value(time);
-        for (int k = 0; k < l; ++k)
-          g -= dot(frame.n[l], frame.q[k]) * frame.prescribed[k];
-        frame.prescribed[l] = g / dot(frame.n[l], frame.q[l]);
-        x.replaceLocalValue(row + u_slot_ + l, frame.prescribed[l]);
-      }
+        x.replaceLocalValue(row + u_slot_ + l, u_hat[l]);
     }
   }
 }

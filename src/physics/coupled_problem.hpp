@@ -120,6 +120,8 @@ private:
   std::vector<double> stiffness_sums() const;
   /// The prescribed values of every constraint at time t.
   void update_prescribed(double time);
+  /// û_0..û_{m-1} of a frame's constraints at time t [m].
+  std::array<double, 3> prescribed_components(const NodeFrame &frame, double time) const;
 
   /// T, Tdot and u of every overlap node from x_overlap_ (x~: constrained unknowns replaced).
   void build_state();
