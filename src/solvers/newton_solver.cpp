@@ -285,7 +285,8 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
 {
   ParameterList p(internal::solver_block);
   p.set("Absolute Tolerance", 1e-8,
-        "Converged when ||F||_2 <= this [units of the residual F, e.g. W for heat, N for "
+        "Converged when ||F||_2 <= this [units of the residual F as the solver sees it: W for "
+        "heat; with Scale Unknowns and a displacement, N times sqrt(k / (lambda + 2G)) for "
         "force balance], must be > 0",
         positive_double_validator());
   p.set("Relative Tolerance", 1e-8,

@@ -73,7 +73,8 @@ Teuchos::ParameterList TimeStepper::valid_parameters()
   p.set("Relative Error Tolerance", 1.0e-3, "rtol of the error estimate, must be > 0 [-]",
         positive_double_validator());
   p.set("Absolute Error Tolerance", 1.0e-2,
-        "atol of the error estimate, must be > 0 [unit of the unknowns: K]",
+        "atol of the error estimate, must be > 0 [unit of the unknowns: K; the estimate counts "
+        "the temperature only, the displacement being quasi-static]",
         positive_double_validator());
   p.set("Maximum Steps", 100000, "steps (accepted and repeated) before the run stops [count]",
         positive_int_validator());
