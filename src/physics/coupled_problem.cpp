@@ -108,10 +108,11 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   std::vector<char> owns_cell(mesh.n_cells(), 0);
   for (const int c : dofs.owned_cells())
     owns_cell[c] = 1;
+  const InteriorFaceCheck interior(mesh);
   if (T_slot_ >= 0)
-    setup_thermal(material, thermal, owns_cell, where + "/Thermal");
+    setup_thermal(material, thermal, owns_cell, interior, where + "/Thermal");
   if (u_slot_ >= 0)
-    setup_mechanics(material, mechanics, owns_cell, where + "/Mechanics");
+    setup_mechanics(material, mechanics, owns_cell, interior, where + "/Mechanics");
 
   x_overlap_ = assembler_.make_overlap_vector();
   b_overlap_ = assembler_.make_overlap_vector();
@@ -123,7 +124,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 }
 
 void CoupledProblem::setup_thermal(const Material &material, const Teuchos::ParameterList &thermal,
-                                   const std::vector<char> &owns_cell, const std::string &where)
+                                   const std::vector<char> &owns_cell,
+                                   const InteriorFaceCheck &interior, const std::string &where)
 {
   conduction_.emplace(material.heat_capacity(), material.conductivity());
   gap_ = GapConductanceKernel(thermal.get<double>("Gap Conductance"));
@@ -134,7 +136,6 @@ void CoupledProblem::setup_thermal(const Material &material, const Teuchos::Para
                    "it or name the side set to split at");
   const std::string bc_where = where + "/Boundary Conditions";
   const auto &bc_list = thermal.sublist("Boundary Conditions");
-  const InteriorFaceCheck interior(mesh_);
   for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
   {
     bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh_, bc_where);
@@ -166,7 +167,8 @@ void CoupledProblem::setup_thermal(const Material &material, const Teuchos::Para
 
 void CoupledProblem::setup_mechanics(const Material &material,
                                      const Teuchos::ParameterList &mechanics,
-                                     const std::vector<char> &owns_cell, const std::string &where)
+                                     const std::vector<char> &owns_cell,
+                                     const InteriorFaceCheck &interior, const std::string &where)
 {
   elasticity_.emplace(material.lame_lambda(), material.shear_modulus(),
                       material.thermal_expansion(), material.reference_temperature());
@@ -177,7 +179,6 @@ void CoupledProblem::setup_mechanics(const Material &material,
 
   const std::string bc_where = where + "/Boundary Conditions";
   const auto &bc_list = mechanics.sublist("Boundary Conditions");
-  const InteriorFaceCheck interior(mesh_);
   for (auto it = bc_list.begin(); it != bc_list.end(); ++it)
   {
     mechanical_bcs_.emplace_back(bc_list.name(it), bc_list.sublist(bc_list.name(it)), mesh_,

@@ -5,6 +5,7 @@
 #include "discretization/dof_manager.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/boundary_input.hpp"
 #include "physics/heat/gap_conductance_kernel.hpp"
 #include "physics/heat/heat_conduction_kernel.hpp"
 #include "physics/heat/thermal_boundary_condition.hpp"
@@ -110,9 +111,11 @@ private:
   };
 
   void setup_thermal(const Material &material, const Teuchos::ParameterList &thermal,
-                     const std::vector<char> &owns_cell, const std::string &where);
+                     const std::vector<char> &owns_cell, const InteriorFaceCheck &interior,
+                     const std::string &where);
   void setup_mechanics(const Material &material, const Teuchos::ParameterList &mechanics,
-                       const std::vector<char> &owns_cell, const std::string &where);
+                       const std::vector<char> &owns_cell, const InteriorFaceCheck &interior,
+                       const std::string &where);
   void setup_solver_data(const Material &material);
   /// Normal-displacement and component constraints of every mesh node.
   void build_frames();
