@@ -4,7 +4,8 @@
 # first three steps (t = 0..11 s: dt 1, 5, 5 s).
 # usage: benchmarks/contact_box_iterations.sh [NP] [CELLS...]     (default: 2  8 16 32 64)
 # KILN_PHYSICS="Heat Conduction" runs the heat conduction alone (the Mechanics block is
-# dropped).
+# dropped). KILN_DECK=open runs inputs/contact-box-open.xml instead, whose gap is closed
+# (every pair in contact) over these steps; the close deck's gap is open then.
 # Prints one line per mesh: cells, unknowns, Newton and linear iterations, linear per
 # solve, wall time. Extra Solver options: KILN_SOLVER_XML=file.xml (a <ParameterList
 # name="Solver"> block that replaces the deck's).
@@ -22,7 +23,7 @@ for n in ${cells[@]}; do
   deck=$work/box$n.xml
   sed -e "s/value=\"{4, 4, 4}\"/value=\"{$n, $n, $n}\"/" \
       -e "s#<Parameter name=\"Times\" type=\"Array(double)\" value=\"{0, 50, 53, 150}\"/>#<Parameter name=\"Times\" type=\"Array(double)\" value=\"{11}\"/><Parameter name=\"File Base\" type=\"string\" value=\"$work/out$n\"/>#" \
-      "$here/inputs/contact-box-close.xml" > "$deck"
+      "$here/inputs/contact-box-${KILN_DECK:-close}.xml" > "$deck"
   if [ "${KILN_PHYSICS:-}" = "Heat Conduction" ]; then
     sed -i -e 's/value="Thermo-Elasticity"/value="Heat Conduction"/' \
         -e '/<ParameterList name="Mechanics">/,/^  <\/ParameterList>/d' "$deck"

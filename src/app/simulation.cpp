@@ -103,7 +103,9 @@ Simulation::Simulation(const Teuchos::ParameterList &input, const std::string &i
                                                          << "\", which has no displacement; "
                                                             "remove it or set Physics to "
                                                             "\"Thermo-Elasticity\"");
-  layout_ = DofLayout{thermal, mechanics, false};
+  const bool contact =
+      mechanics && params_.sublist("Mechanics").sublist("Contact").get<bool>("Enabled");
+  layout_ = DofLayout{thermal, mechanics, contact};
 }
 
 Simulation::~Simulation() = default;
@@ -129,6 +131,7 @@ void Simulation::setup()
     problem_ =
         Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
                                         params_.sublist("Mechanics"), input_path_ + ": Kiln"));
+    problem_->set_log(out_);
     newton_ = std::make_unique<NewtonSolver>(params_.sublist("Solver"), problem_, out_);
     stepper_ = std::make_unique<TimeStepper>(params_.sublist("Time Stepping"),
                                              input_path_ + ": Kiln/Time Stepping", out_);
@@ -155,6 +158,8 @@ void Simulation::run()
     writer_ = std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
                                                dofs_->owned_cells(), cell_rank_);
   }
+  if (layout_.displacement)
+    equilibrate();
   const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
   const TimeStepper::Statistics stats =
       stepper_->run(*problem_, *newton_, *solution_, 0.0, {times.begin(), times.end()},
@@ -165,6 +170,29 @@ void Simulation::run()
         << stats.newton_iterations << " Newton and " << stats.linear_iterations
         << " linear iterations; results in " << output_base() << ".h5 and " << output_base()
         << ".xmf\n";
+}
+
+void Simulation::equilibrate()
+{
+  // Quasi-static: the displacement at t = 0 is in equilibrium with the initial
+  // temperature (and, with contact, decides which pairs start in contact).
+  NonlinearProblem::Vector b(problem_->solution_map());
+  problem_->set_time_derivative(0.0, 0.0, b);
+  problem_->freeze_temperature(solution_.get());
+  const NewtonSolver::Result r = newton_->solve(*solution_);
+  problem_->freeze_temperature(nullptr);
+  if (!r.converged)
+    throw RunError(input_path_ +
+                   ": the initial equilibrium of the displacement (t = 0, at the "
+                   "initial temperature) did not converge (|F| " +
+                   std::to_string(r.initial_residual_norm) + " -> " +
+                   std::to_string(r.final_residual_norm) +
+                   "); check Kiln/Mechanics/Boundary Conditions (is every rigid-body motion "
+                   "held?) and Kiln/Solver");
+  *out_ << "initial equilibrium: Newton " << r.newton_iterations << " (" << r.linear_iterations
+        << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
+        << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
+  problem_->step_accepted(0.0);
 }
 
 std::string Simulation::output_base() const
@@ -258,6 +286,18 @@ void Simulation::output(const double time, const int cycle, const double dt,
     writer_->write_cell_field("thermal_strain", 6, thermal_strain);
   }
   writer_->write_node_field("gap_opening", 1, gap_opening(u));
+  if (problem_->has_contact())
+  {
+    const CoupledProblem::ContactOutput contact = problem_->contact_output(x);
+    std::vector<double> traction, active;
+    for (const int n : dofs_->owned_nodes())
+    {
+      traction.push_back(contact.traction[n]);
+      active.push_back(contact.active[n]);
+    }
+    writer_->write_node_field("gap_normal_traction", 1, traction);
+    writer_->write_node_field("contact_active", 1, active);
+  }
   writer_->end_step();
   *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
 }

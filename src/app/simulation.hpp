@@ -58,6 +58,8 @@ public:
 private:
   void print_header() const;
   void output(double time, int cycle, double dt, const NonlinearProblem::Vector &x);
+  /// Solves for the displacement at t = 0 with the temperature held at its initial value.
+  void equilibrate();
   /// n . (x_b + u_b - x_a - u_a) [m] at the owned nodes (NaN off the gap); u_owned: the
   /// displacement of the owned nodes (ignored without displacement).
   std::vector<double> gap_opening(const std::vector<Point> &u_owned) const;

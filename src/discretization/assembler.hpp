@@ -3,8 +3,8 @@
 ///
 /// The sparsity graph is built once, on the overlap map: every unknown of a
 /// cell's nodes couples with every other, every unknown of a gap face's side-a
-/// nodes with those of its twins, and (with contact) each contact unknown with
-/// the unknowns of its pair's two nodes. A rank assembles its own cells and the
+/// nodes with those of its twins, and (with contact) every block also holds the
+/// twins of its gap nodes, and a gap face both of its cells. A rank assembles its own cells and the
 /// gap faces whose side-a cell it owns into an overlap residual and matrix,
 /// then exports them (ADD) to the owned residual and Jacobian (DEVELOPERS.md:
 /// overlap-to-owned Export).
@@ -49,8 +49,15 @@ public:
   std::vector<LO> cell_lids(int cell) const;
   /// Overlap local ids of the unknowns of a cell face's 4 nodes (hex_face_nodes order).
   std::vector<LO> face_lids(int cell, int face) const;
-  /// Overlap local ids of a gap face's 4 side-a nodes then its 4 twins.
+  /// The nodes of a gap face's block: its 4 side-a nodes, their 4 twins, and (with contact
+  /// and displacement) the other nodes of its two cells, then with_twins().
+  std::vector<int> gap_face_nodes(int gap_face) const;
+  /// Overlap local ids of gap_face_nodes() (node-major).
   std::vector<LO> gap_face_lids(int gap_face) const;
+  /// `nodes` followed by the twins of its gap nodes that it lacks (with contact; else as is).
+  std::vector<int> with_twins(std::vector<int> nodes) const;
+  /// Overlap local ids of the unknowns of `nodes` (node-major, n_node_fields each).
+  std::vector<LO> node_lids(const std::vector<int> &nodes) const;
   /// Overlap local id of an unknown.
   LO lid(GO gid) const;
 

@@ -18,7 +18,7 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
 
 DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
                        const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const DofLayout layout)
-    : layout_(layout), n_node_fields_(layout.n_node_fields()), n_nodes_(mesh.n_nodes())
+    : layout_(layout), n_node_fields_(layout.n_node_fields())
 {
   const int rank = comm->getRank();
   node_owner_ = node_owners(mesh, cell_rank);
@@ -32,15 +32,31 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
         touched[n] = 1;
     }
   // Gap faces are assembled by the owner of their side-a cell: it needs the twins.
+  // With contact and displacement, it needs all nodes of the side-b cell (whose stress
+  // gives the contact pressure of the gap conductance; Assembler::gap_face_nodes).
   for (const GapFace &face : mesh.gap_faces)
     if (cell_rank[face.cell_a] == rank)
+    {
       for (const int n : face.node_b)
         touched[n] = 1;
-  // The owner of a pair (the owner of its node_a) assembles it: it needs node_b.
+      if (layout_.contact && layout_.displacement)
+        for (const int n : mesh.connectivity[face.cell_b])
+          touched[n] = 1;
+    }
+  twin_.assign(mesh.n_nodes(), -1);
+  for (const GapPair &p : mesh.gap_pairs)
+  {
+    twin_[p.node_a] = p.node_b;
+    twin_[p.node_b] = p.node_a;
+  }
+  // With contact, a local system that holds a gap node holds its twin too.
   if (layout_.contact)
+  {
+    const std::vector<char> touched_before = touched;
     for (const GapPair &p : mesh.gap_pairs)
-      if (node_owner_[p.node_a] == rank)
-        touched[p.node_b] = 1;
+      if (touched_before[p.node_a] || touched_before[p.node_b])
+        touched[p.node_a] = touched[p.node_b] = 1;
+  }
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {
     if (node_owner_[n] == rank)
@@ -48,34 +64,22 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
     if (touched[n])
       overlap_nodes_.push_back(n);
   }
-  std::vector<int> overlap_pairs;
-  const int n_pairs = layout_.contact ? static_cast<int>(mesh.gap_pairs.size()) : 0;
-  for (int k = 0; k < n_pairs; ++k)
-  {
-    const GapPair &p = mesh.gap_pairs[k];
-    if (node_owner_[p.node_a] == rank)
-      owned_pairs_.push_back(k);
-    if (touched[p.node_a] || touched[p.node_b])
-      overlap_pairs.push_back(k);
-  }
 
   const auto node_gids = [](const std::vector<int> &nodes)
   { return std::vector<GO>(nodes.begin(), nodes.end()); };
-  const auto dof_gids = [&](const std::vector<int> &nodes, const std::vector<int> &pairs)
+  const auto dof_gids = [&](const std::vector<int> &nodes)
   {
     std::vector<GO> gids;
-    gids.reserve(nodes.size() * n_node_fields_ + pairs.size());
+    gids.reserve(nodes.size() * n_node_fields_);
     for (const int n : nodes)
       for (int s = 0; s < n_node_fields_; ++s)
         gids.push_back(node_dof(n, s));
-    for (const int k : pairs)
-      gids.push_back(contact_dof(k));
     return gids;
   };
   owned_node_map_ = make_map(node_gids(owned_nodes_), comm);
   overlap_node_map_ = make_map(node_gids(overlap_nodes_), comm);
-  owned_dof_map_ = make_map(dof_gids(owned_nodes_, owned_pairs_), comm);
-  overlap_dof_map_ = make_map(dof_gids(overlap_nodes_, overlap_pairs), comm);
+  owned_dof_map_ = make_map(dof_gids(owned_nodes_), comm);
+  overlap_dof_map_ = make_map(dof_gids(overlap_nodes_), comm);
   dof_importer_ = Teuchos::rcp(new Tpetra::Import<>(owned_dof_map_, overlap_dof_map_));
   dof_exporter_ = Teuchos::rcp(new Tpetra::Export<>(overlap_dof_map_, owned_dof_map_));
 }

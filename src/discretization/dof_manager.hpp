@@ -2,16 +2,13 @@
 /// Ownership and Tpetra maps for the unknowns of the monolithic system.
 ///
 /// Cells are owned as the partitioner says; a node is owned by the lowest rank
-/// among its cells; a gap pair (and its contact unknown) by the owner of its
-/// node_a. With F unknowns per node (DofLayout: 1 for heat conduction alone,
-/// 3 for displacement alone, 4 for both), unknowns by global id:
+/// among its cells. With F unknowns per node (DofLayout: 1 for heat conduction
+/// alone, 3 for displacement alone, 4 for both), unknowns by global id:
 ///   F n + s          node n, slot s of the node's fields in the order temperature,
 ///                    displacement x, y, z (the fields the layout has: DofLayout::slot)
-///   F N + k          the contact unknown of gap pair k (N = number of nodes),
-///                    when the layout has contact
 /// Owned maps hold this rank's unknowns; overlap maps add those of every node
-/// (and pair) touched by its cells and by the gap faces whose side-a cell it
-/// owns, for assembly and for gathering.
+/// touched by its cells and by the gap faces whose side-a cell it owns, and (with
+/// contact) the twin of every touched gap node, for assembly and for gathering.
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_Comm.hpp>
@@ -44,7 +41,10 @@ struct DofLayout
 {
   bool temperature = true;  ///< a temperature unknown per node
   bool displacement = true; ///< three displacement unknowns per node
-  bool contact = true;      ///< one contact unknown per gap pair
+  /// Contact across the gap: the pressures are condensed into the pairs' displacement
+  /// unknowns, which mix the two nodes of a pair (CoupledProblem), so every gap node couples
+  /// with its twin's couplings. No unknowns of its own.
+  bool contact = true;
 
   int n_node_fields() const { return (temperature ? 1 : 0) + (displacement ? 3 : 0); }
   /// The index of field f among a node's unknowns, or -1 if the layout lacks it.
@@ -71,7 +71,6 @@ public:
   const std::vector<int> &owned_cells() const { return owned_cells_; }
   const std::vector<int> &owned_nodes() const { return owned_nodes_; }
   const std::vector<int> &overlap_nodes() const { return overlap_nodes_; }
-  const std::vector<int> &owned_pairs() const { return owned_pairs_; }
   const std::vector<int> &node_owner() const { return node_owner_; }
 
   /// The global id of field f of node n; the layout must have f.
@@ -81,7 +80,8 @@ public:
   {
     return static_cast<GO>(n_node_fields_) * node + slot;
   }
-  GO contact_dof(const int pair) const { return static_cast<GO>(n_node_fields_) * n_nodes_ + pair; }
+  /// The twin of node n across the gap, or -1 (every gap node has one).
+  int twin(const int node) const { return twin_[node]; }
 
   Teuchos::RCP<const Map> owned_node_map() const { return owned_node_map_; }
   Teuchos::RCP<const Map> overlap_node_map() const { return overlap_node_map_; }
@@ -98,11 +98,10 @@ public:
 private:
   DofLayout layout_;
   int n_node_fields_;
-  int n_nodes_;
   std::vector<int> owned_cells_;
   std::vector<int> owned_nodes_;
   std::vector<int> overlap_nodes_;
-  std::vector<int> owned_pairs_;
+  std::vector<int> twin_;
   std::vector<int> node_owner_;
   Teuchos::RCP<const Map> owned_node_map_;
   Teuchos::RCP<const Map> overlap_node_map_;

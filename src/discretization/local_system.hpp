@@ -31,8 +31,10 @@ public:
     return jacobian_[index(field_i, i) * size() + index(field_j, j)];
   }
   const std::vector<double> &residual_values() const { return residual_; }
+  std::vector<double> &residual_values() { return residual_; }
   /// Row-major, size() x size().
   const std::vector<double> &jacobian_values() const { return jacobian_; }
+  std::vector<double> &jacobian_values() { return jacobian_; }
 
 private:
   int n_nodes_;

@@ -67,6 +67,20 @@ Teuchos::ParameterList CoupledProblem::valid_thermal_parameters()
         "h, the heat-transfer coefficient between the two sides of the split gap: flux "
         "h (T_a - T_b) from side a to side b; must be >= 0 [W/(m^2 K)]",
         nonnegative_double_validator());
+  p.set("Gap Conductance Model", "Constant",
+        "\"Constant\": h = \"Gap Conductance\" whatever the contact state (as Truchas); "
+        "\"Contact Dependent\": h = h0 L/(L + g) while the gap is open by g, h0 + h_p p "
+        "while pressed together with the normal stress p (h0: \"Gap Conductance\"; needs "
+        "Physics Thermo-Elasticity with Mechanics/Contact enabled; doc/contact.md)",
+        choice_validator({"Constant", "Contact Dependent"}));
+  p.set("Gap Width Scale", 1.0e-5,
+        "L of the Contact Dependent model: the opening at which h has fallen to h0/2, must be "
+        "> 0 [m]",
+        positive_double_validator());
+  p.set("Gap Pressure Coefficient", 1.0e-3,
+        "h_p of the Contact Dependent model: the rise of h per contact pressure, must be >= 0 "
+        "[W/(m^2 K Pa)]",
+        nonnegative_double_validator());
   set_named_sublists(p, "Boundary Conditions",
                      "thermal boundary conditions on side sets; faces in none are insulated",
                      ThermalBoundaryCondition::valid_parameters());
@@ -84,6 +98,28 @@ Teuchos::ParameterList CoupledProblem::valid_mechanics_parameters()
                      "mechanical boundary conditions on side sets; faces in none are free of "
                      "traction",
                      MechanicalBoundaryCondition::valid_parameters());
+  p.set("Contact", valid_contact_parameters(),
+        "frictionless contact across the gap (Kiln/Mesh/\"Gap Side Set\"); doc/contact.md");
+  return p;
+}
+
+Teuchos::ParameterList CoupledProblem::valid_contact_parameters()
+{
+  Teuchos::ParameterList p("Contact");
+  p.set("Enabled", true,
+        "true: the two sides of the gap may separate but not interpenetrate, and carry a "
+        "compressive normal traction when in contact (frictionless); false: they are separate "
+        "bodies that pass through each other [-]");
+  p.set("Complementarity Function", "Min",
+        "how g >= 0, p >= 0, p g = 0 enters the Newton solve: \"Min\", p - max(0, p - c g) "
+        "(semismooth Newton: an active-set method); \"Fischer-Burmeister\", p + c g - "
+        "sqrt(p^2 + (c g)^2). After an active-set cycle a step switches to Fischer-Burmeister "
+        "anyway",
+        choice_validator({"Min", "Fischer-Burmeister"}));
+  p.set("Complementarity Scale", 1.0,
+        "s in c = s (lambda + 2G) / sqrt(A), A the pair's area: weighs the gap against the "
+        "pressure; it changes the Newton path, not the converged answer; must be > 0 [-]",
+        positive_double_validator());
   return p;
 }
 
@@ -94,9 +130,9 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       T_slot_(dofs.layout().slot(Field::T)), u_slot_(dofs.layout().slot(Field::ux)),
       overlap_index_(mesh.n_nodes(), -1), dirichlet_bc_(mesh.n_nodes(), -1),
       temperature_scale_(mesh.n_nodes(), 0.0), prescribed_temperature_(mesh.n_nodes(), 0.0),
-      frame_of_node_(mesh.n_nodes(), -1), displacement_row_scale_(mesh.n_nodes(), 0.0)
+      frame_of_node_(mesh.n_nodes(), -1), displacement_row_scale_(mesh.n_nodes(), 0.0),
+      pair_of_node_(mesh.n_nodes(), -1)
 {
-  KILN_ASSERT(!dofs.layout().contact, "CoupledProblem has no contact unknowns yet");
   KILN_ASSERT(T_slot_ <= 0, "the temperature must be the first unknown of a node");
   const auto &overlap_nodes = dofs.overlap_nodes();
   for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
@@ -116,6 +152,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 
   x_overlap_ = assembler_.make_overlap_vector();
   b_overlap_ = assembler_.make_overlap_vector();
+  f_work_ = Teuchos::rcp(new Vector(dofs.owned_dof_map()));
   T_state_.assign(overlap_nodes.size(), material.reference_temperature());
   T_dot_state_.assign(overlap_nodes.size(), 0.0);
   u_state_.assign(overlap_nodes.size(), Point{});
@@ -129,6 +166,27 @@ void CoupledProblem::setup_thermal(const Material &material, const Teuchos::Para
 {
   conduction_.emplace(material.heat_capacity(), material.conductivity());
   gap_ = GapConductanceKernel(thermal.get<double>("Gap Conductance"));
+  if (thermal.get<std::string>("Gap Conductance Model") == "Contact Dependent")
+  {
+    KILN_CHECK_INPUT(dofs_.layout().contact && u_slot_ >= 0, where + "/\"Gap Conductance Model\"",
+                     "is \"Contact Dependent\", which needs the contact state: set Kiln/"
+                     "\"Physics\" to \"Thermo-Elasticity\" with Mechanics/Contact/\"Enabled\" "
+                     "true, or use \"Constant\"");
+    ContactConductanceKernel::Parameters k;
+    k.h0 = thermal.get<double>("Gap Conductance");
+    k.length = thermal.get<double>("Gap Width Scale");
+    k.pressure_coefficient = thermal.get<double>("Gap Pressure Coefficient");
+    k.lambda = material.lame_lambda();
+    k.shear_modulus = material.shear_modulus();
+    k.beta = (3.0 * k.lambda + 2.0 * k.shear_modulus) * material.thermal_expansion();
+    k.reference_temperature = material.reference_temperature();
+    contact_conductance_.emplace(k);
+  }
+  else
+    for (const char *key : {"Gap Width Scale", "Gap Pressure Coefficient"})
+      KILN_CHECK_INPUT(!given_in_input(thermal, key), where + "/\"" + key + "\"",
+                       "is given but \"Gap Conductance Model\" is \"Constant\"; remove it "
+                       "or set the model to \"Contact Dependent\"");
   initial_temperature_ = thermal.get<double>("Initial Temperature");
   KILN_CHECK_INPUT(mesh_.gap_side_set != 0 || !given_in_input(thermal, "Gap Conductance"),
                    where + "/\"Gap Conductance\"",
@@ -196,6 +254,13 @@ void CoupledProblem::setup_mechanics(const Material &material,
             load_faces_.push_back({set.cells[s], set.faces[s], b});
       }
   build_frames();
+  modulus_ = material.lame_lambda() + 2.0 * material.shear_modulus();
+  KILN_CHECK_INPUT(mesh_.gap_side_set != 0 || !given_in_input(mechanics, "Contact"),
+                   where + "/Contact",
+                   "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
+                   "it or name the side set to split at");
+  if (dofs_.layout().contact)
+    setup_contact(mechanics.sublist("Contact"), where + "/Contact");
 }
 
 void CoupledProblem::build_frames()
@@ -400,6 +465,10 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
   a_ = a;
   assembler_.gather(b, *b_overlap_);
   update_prescribed(time);
+  history_.clear();
+  active_set_changes_ = 0;
+  jacobians_ = 0;
+  cycle_fallback_ = false;
 }
 
 void CoupledProblem::initial_condition(const double time, Vector &x) const
@@ -465,16 +534,52 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
       J != nullptr ? "Kiln: 5 assembly (residual and Jacobian)" : "Kiln: 5 assembly (residual)"));
   assembler_.gather(x, *x_overlap_);
   build_state();
-  assembler_.begin(f != nullptr, J != nullptr);
-  add_cells();
-  add_boundary_faces();
-  add_gap_faces();
-  add_constraint_rows();
-  assembler_.finish(f, J);
+  const auto assemble = [&](Vector *residual, Matrix *jacobian)
+  {
+    assembler_.begin(residual != nullptr, jacobian != nullptr);
+    add_cells();
+    add_boundary_faces();
+    add_gap_faces();
+    add_constraint_rows();
+    assembler_.finish(residual, jacobian);
+  };
+  if (pairs_.empty() && frozen_temperature_.empty())
+  {
+    assemble(f, J);
+    return;
+  }
+  // Contact needs the assembled elastic rows first (the pressure P of every pair), then
+  // combines rows: the residual from the assembled rows, the Jacobian element by element.
+  Vector &residual = f != nullptr ? *f : *f_work_;
+  assemble(&residual, nullptr);
+  update_contact(residual);
+  if (J != nullptr)
+  {
+    combine_rows_ = true;
+    assemble(nullptr, J);
+    combine_rows_ = false;
+    add_contact_jacobian(*J);
+    if (!pairs_.empty())
+      track_active_set();
+  }
 }
 
-void CoupledProblem::finalize(const std::vector<int> &nodes, LocalSystem &local) const
+void CoupledProblem::add_local(const std::vector<int> &element_nodes, const LocalSystem &element)
 {
+  const std::vector<int> nodes =
+      pairs_.empty() ? element_nodes : assembler_.with_twins(element_nodes);
+  LocalSystem local(static_cast<int>(nodes.size()), F_);
+  {
+    const auto &r = element.residual_values();
+    const auto &j = element.jacobian_values();
+    const int m = element.size();
+    for (int a = 0; a < m; ++a)
+    {
+      local.residual(a % F_, a / F_) = r[a];
+      for (int b = 0; b < m; ++b)
+        local.jacobian(a % F_, a / F_, b % F_, b / F_) = j[static_cast<std::size_t>(a) * m + b];
+    }
+  }
   const int n_local = local.n_nodes();
   if (u_slot_ >= 0)
     for (int i = 0; i < n_local; ++i)
@@ -511,6 +616,31 @@ void CoupledProblem::finalize(const std::vector<int> &nodes, LocalSystem &local)
             local.jacobian(fj, j, u_slot_ + k, i) = column[k];
         }
     }
+  // Contact pairs in contact: row a += row b, and row b := 0 ("Min") or
+  // (dP/2)(row b - row a) (Fischer-Burmeister); add_contact_jacobian() adds the rest.
+  if (combine_rows_)
+  {
+    const int m = local.size();
+    auto &jac = local.jacobian_values();
+    for (int i = 0; i < n_local; ++i)
+    {
+      const int k = pair_of_node_[nodes[i]];
+      if (k < 0 || nodes[i] != pairs_[k].a || contact_mode_[k] == ContactMode::open)
+        continue;
+      const int j =
+          static_cast<int>(std::find(nodes.begin(), nodes.end(), pairs_[k].b) - nodes.begin());
+      KILN_ASSERT(j < n_local, "a local system lacks the twin of node " << nodes[i]);
+      const std::size_t ia = local.index(u_slot_ + pairs_[k].slot_a, i);
+      const std::size_t ib = local.index(u_slot_ + pairs_[k].slot_b, j);
+      const double w = contact_mode_[k] == ContactMode::closed ? 0.0 : 0.5 * contact_dP_[k];
+      for (int c = 0; c < m; ++c)
+      {
+        const double va = jac[ia * m + c], vb = jac[ib * m + c];
+        jac[ia * m + c] = va + vb;
+        jac[ib * m + c] = w * (vb - va);
+      }
+    }
+  }
   const auto eliminate = [&](const int field, const int i)
   {
     local.residual(field, i) = 0.0;
@@ -526,6 +656,7 @@ void CoupledProblem::finalize(const std::vector<int> &nodes, LocalSystem &local)
       for (int k = 0; k < frames_[frame_of_node_[nodes[i]]].n_constrained; ++k)
         eliminate(u_slot_ + k, i);
   }
+  assembler_.add(assembler_.node_lids(nodes), local);
 }
 
 void CoupledProblem::add_cells()
@@ -551,8 +682,7 @@ void CoupledProblem::add_cells()
       conduction_->evaluate(fe, T, T_dot, a_, local);
     if (elasticity_)
       elasticity_->evaluate(fe, u, T, body_force_, u_slot_, T_slot_, local);
-    finalize(nodes, local);
-    assembler_.add(assembler_.cell_lids(c), local);
+    add_local(nodes, local);
   }
 }
 
@@ -576,8 +706,7 @@ void CoupledProblem::add_boundary_faces()
       ConvectionKernel(bc.coefficient()).evaluate(fv, T, bc.value(time_), local);
     else
       HeatFluxKernel::evaluate(fv, bc.value(time_), local);
-    finalize(nodes, local);
-    assembler_.add(assembler_.face_lids(face.cell, face.face), local);
+    add_local(nodes, local);
   }
   for (const auto &face : load_faces_)
   {
@@ -590,8 +719,7 @@ void CoupledProblem::add_boundary_faces()
       TractionKernel::evaluate(fv, bc.traction(), u_slot_, local);
     else
       TractionKernel::evaluate_pressure(fv, bc.value(time_), u_slot_, local);
-    finalize(nodes, local);
-    assembler_.add(assembler_.face_lids(face.cell, face.face), local);
+    add_local(nodes, local);
   }
 }
 
@@ -600,6 +728,39 @@ void CoupledProblem::add_gap_faces()
   if (T_slot_ < 0)
     return;
   FaceValues fv;
+  if (contact_conductance_)
+  {
+    ElementValues fe_a, fe_b;
+    std::vector<double> T;
+    std::vector<Point> u;
+    for (const int k : owned_gap_faces_)
+    {
+      const GapFace &face = mesh_.gap_faces[k];
+      const std::vector<int> nodes = assembler_.gap_face_nodes(k);
+      const auto local_of = [&](const int node)
+      { return static_cast<int>(std::find(nodes.begin(), nodes.end(), node) - nodes.begin()); };
+      std::array<int, 8> cell_a{}, cell_b{};
+      for (int i = 0; i < 8; ++i)
+      {
+        cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
+        cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
+      }
+      T.resize(nodes.size());
+      u.resize(nodes.size());
+      for (std::size_t i = 0; i < nodes.size(); ++i)
+      {
+        T[i] = T_state_[overlap_index_[nodes[i]]];
+        u[i] = u_state_[overlap_index_[nodes[i]]];
+      }
+      fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
+      fe_a.reinit(cell_nodes(mesh_, face.cell_a));
+      fe_b.reinit(cell_nodes(mesh_, face.cell_b));
+      LocalSystem local(static_cast<int>(nodes.size()), F_);
+      contact_conductance_->evaluate(fv, fe_a, fe_b, cell_a, cell_b, T, u, T_slot_, u_slot_, local);
+      add_local(nodes, local);
+    }
+    return;
+  }
   LocalSystem local(8, F_);
   std::vector<int> nodes(8);
   std::array<double, 4> T_a{}, T_b{};
@@ -616,8 +777,7 @@ void CoupledProblem::add_gap_faces()
     fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
     local.clear();
     gap_.evaluate(fv, T_a, T_b, local);
-    finalize(nodes, local);
-    assembler_.add(assembler_.gap_face_lids(k), local);
+    add_local(nodes, local);
   }
 }
 

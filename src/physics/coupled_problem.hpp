@@ -6,6 +6,7 @@
 #include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/boundary_input.hpp"
+#include "physics/heat/contact_conductance_kernel.hpp"
 #include "physics/heat/gap_conductance_kernel.hpp"
 #include "physics/heat/heat_conduction_kernel.hpp"
 #include "physics/heat/thermal_boundary_condition.hpp"
@@ -13,6 +14,7 @@
 #include "physics/mechanics/elasticity_kernel.hpp"
 #include "physics/mechanics/mechanical_boundary_condition.hpp"
 
+#include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_ParameterList.hpp>
 
 #include <array>
@@ -29,8 +31,16 @@ namespace kiln
 /// - every owned cell: HeatConductionKernel (rows T) and ElasticityKernel (rows u, with the
 ///   thermal-expansion block dR_u/dT), body force rho g + f;
 /// - owned faces of "Heat Flux", "Convection", "Traction" and "Pressure" conditions;
-/// - gap faces whose side-a cell is owned: GapConductanceKernel. The gap is open: the two
-///   halves are separate bodies for the mechanics (no contact yet).
+/// - gap faces whose side-a cell is owned: GapConductanceKernel;
+/// - frictionless contact across the gap (Mechanics/Contact, doc/contact.md): per node pair
+///   (a, b) with normal n (from a to b) and area A, the gap g = n.(u_b - u_a) and the
+///   pressure p satisfy g >= 0, p >= 0, p g = 0, with the force -p A n on a and p A n on b.
+///   The pressure is condensed: n.u is an unknown of each gap node (its frame has n after
+///   its constraints); P = (R_b - R_a)/(2A) of the assembled normal rows without contact is
+///   the pressure that balances the pair, and C(P, g) = P - max(0, P - c g) ("Min") or
+///   Fischer-Burmeister decides. An open pair (P - c g <= 0) keeps its rows (p = 0); a
+///   closed one has rows R_a + R_b (no p) and A c g. The Jacobian is the exact generalized
+///   derivative of this F, row by row.
 ///
 /// Exact constraints (temperature on "Temperature" side sets; u.n or u_c on "Normal
 /// Displacement" and "Displacement" side sets, including edges and corners where several
@@ -50,6 +60,8 @@ class CoupledProblem final : public TransientProblem
 public:
   /// The "Mechanics" block: Body Force, Gravity, Boundary Conditions.
   static Teuchos::ParameterList valid_mechanics_parameters();
+  /// The "Contact" sublist of "Mechanics".
+  static Teuchos::ParameterList valid_contact_parameters();
   /// The "Thermal" block: Initial Temperature, Gap Conductance, Boundary Conditions.
   static Teuchos::ParameterList valid_thermal_parameters();
 
@@ -73,6 +85,28 @@ public:
   Teuchos::RCP<const Vector> time_error_mask() const override { return time_error_mask_; }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   void set_time_derivative(double time, double a, const Vector &b) override;
+  void step_accepted(double time) override;
+
+  /// Log lines (active-set changes, the gap closing or opening) go to `out`.
+  void set_log(Teuchos::RCP<Teuchos::FancyOStream> out) { out_ = std::move(out); }
+  /// With a state x, holds every temperature at its value in x (rows s (T - T_x)) for an
+  /// equilibrium solve of the displacement at fixed temperature; with nullptr, releases it.
+  void freeze_temperature(const Vector *x);
+
+  /// Contact per mesh node, on every rank (collective): the normal traction across the gap
+  /// (-p, negative in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap.
+  struct ContactOutput
+  {
+    std::vector<double> traction;
+    std::vector<double> active;
+  };
+  ContactOutput contact_output(const Vector &x);
+  /// Pairs in contact at the last evaluation (global, collective), and of all pairs.
+  int n_active_pairs() const;
+  int n_pairs() const { return static_cast<int>(pairs_.size()); }
+  /// Active-set changes between Jacobian evaluations since the last set_time_derivative.
+  int active_set_changes() const { return active_set_changes_; }
+  bool has_contact() const { return !pairs_.empty(); }
 
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
@@ -128,13 +162,23 @@ private:
 
   /// T, Tdot and u of every overlap node from x_overlap_ (x~: constrained unknowns replaced).
   void build_state();
-  /// Rotates the displacement rows and columns of framed nodes, then zeroes the rows and
-  /// columns of constrained unknowns (nodes[i]: the mesh node of local node i).
-  void finalize(const std::vector<int> &nodes, LocalSystem &local) const;
   void add_cells();
   void add_boundary_faces();
   void add_gap_faces();
   void add_constraint_rows();
+
+  /// Rotates the displacement rows and columns of framed nodes, mixes those of contact
+  /// pairs, zeroes the rows and columns of constrained unknowns in `local` (nodes[i]: the mesh
+  /// node of local node i), then adds it; adds the missing twins of gap nodes first.
+  void add_local(const std::vector<int> &nodes, const LocalSystem &local);
+  void setup_contact(const Teuchos::ParameterList &contact, const std::string &where);
+  /// From the assembled rows f (no contact): each pair's P, state and the contact rows of
+  /// f; the frozen temperature rows.
+  void update_contact(Vector &f);
+  /// The parts of the contact (and frozen temperature) rows that are not element sums.
+  void add_contact_jacobian(Matrix &J);
+  /// Logs and counts a change of the active set at a Jacobian evaluation; detects cycles.
+  void track_active_set();
 
   const Mesh &mesh_;
   const DofManager &dofs_;
@@ -147,6 +191,7 @@ private:
   // Heat conduction.
   std::optional<HeatConductionKernel> conduction_;
   GapConductanceKernel gap_{0.0};
+  std::optional<ContactConductanceKernel> contact_conductance_; ///< "Contact Dependent" model
   double initial_temperature_ = 0.0;
   std::vector<ThermalBoundaryCondition> bcs_;
   std::vector<BoundaryFace> boundary_faces_;   ///< flux and convection faces of owned cells
@@ -163,6 +208,43 @@ private:
   std::vector<int> frame_of_node_;       ///< per mesh node: index into frames_, or -1
   std::vector<NodeFrame> frames_;
   std::vector<double> displacement_row_scale_; ///< per mesh node [N/m] (0 if unframed)
+
+  // Contact.
+  struct ContactPair
+  {
+    int a = -1, b = -1; ///< mesh nodes
+    double area = 0.0;  ///< A [m^2]
+    double c = 0.0;     ///< complementarity constant [Pa/m]
+    int slot_a = 0;     ///< the slot of n.u among the node's û (after its constraints)
+    int slot_b = 0;
+  };
+  std::vector<ContactPair> pairs_;
+  enum class ContactMode : char
+  {
+    open,
+    closed,
+    fischer_burmeister
+  };
+  std::vector<ContactMode> contact_mode_; ///< per pair (those in the overlap), this evaluation
+  std::vector<double> contact_dP_;        ///< Fischer-Burmeister: dC/dP per pair
+  std::vector<double> contact_dg_;        ///< Fischer-Burmeister: dC/d(c g) per pair
+  bool combine_rows_ = false;             ///< add_local() combines the rows of pairs
+  Teuchos::RCP<Vector> f_overlap_;
+  std::vector<int> pair_of_node_;          ///< per mesh node: index into pairs_, or -1
+  std::vector<int> owned_pairs_;           ///< pairs whose node b this rank owns
+  bool fischer_burmeister_ = false;        ///< the input's choice
+  bool cycle_fallback_ = false;            ///< Fischer-Burmeister after a cycle, this solve
+  std::vector<char> active_;               ///< per pair (owned_pairs_), at the last evaluation
+  std::vector<double> pressure_;           ///< P per pair (owned_pairs_) at the last evaluation
+  std::vector<std::vector<char>> history_; ///< active sets at this solve's Jacobians
+  std::vector<char> last_jacobian_active_;
+  int active_set_changes_ = 0;
+  int jacobians_ = 0;       ///< Jacobian evaluations since set_time_derivative
+  int accepted_active_ = 0; ///< pairs in contact after the last accepted step
+  Teuchos::RCP<Vector> f_work_;
+  std::vector<double> frozen_temperature_; ///< per owned node; empty when not frozen
+  Teuchos::RCP<Teuchos::FancyOStream> out_;
+  double modulus_ = 0.0; ///< lambda + 2G [Pa]
 
   double time_ = 0.0;
   double a_ = 0.0;

@@ -280,6 +280,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
       if (error >= 0.0)
         line << ", error " << std::defaultfloat << std::setprecision(3) << error;
       *out_ << line.str() << "\n";
+      problem.step_accepted(t);
     }
     output(t, stats.steps, k, x);
   }

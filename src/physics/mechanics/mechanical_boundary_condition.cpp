@@ -63,7 +63,7 @@ MechanicalBoundaryCondition::MechanicalBoundaryCondition(const std::string &name
   check_parameters_of_type(p, type, internal::mechanical_bc_parameters, path);
   side_sets_ = read_boundary_side_sets(
       p, mesh, path,
-      "its two sides are separate bodies, free to move apart (contact is not modelled yet)");
+      "its two sides touch through frictionless contact (Mechanics/Contact), not a boundary condition");
 
   switch (type_)
   {

@@ -1,0 +1,130 @@
+#include "physics/heat/contact_conductance_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kiln
+{
+namespace
+{
+double dot3(const Point &a, const Point &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+} // namespace
+
+double ContactConductanceKernel::conductance(const double g, const double p) const
+{
+  return p_.h0 * p_.length / (p_.length + std::max(g, 0.0)) +
+         p_.pressure_coefficient * std::max(p, 0.0);
+}
+
+void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValues &fe_a,
+                                        const ElementValues &fe_b, const std::array<int, 8> &cell_a,
+                                        const std::array<int, 8> &cell_b,
+                                        const std::vector<double> &T, const std::vector<Point> &u,
+                                        const int T_slot, const int u_slot,
+                                        LocalSystem &local) const
+{
+  const int n_local = local.n_nodes();
+  // The face's mean normal (a plane face: its normal).
+  Point n{};
+  for (int q = 0; q < fv.n_qpoints(); ++q)
+    for (int d = 0; d < 3; ++d)
+      n[d] += fv.normal(q)[d] * fv.JxW(q);
+  const double length = std::sqrt(dot3(n, n));
+  for (double &x : n)
+    x /= length;
+
+  // p = (p_a + p_b)/2, p_X = -[lambda tr ε̄ + 2G n.ε̄ n - beta (T̄ - T_ref)], linear in u
+  // and T: dp/du_j (a vector) and dp/dT_j per local node.
+  std::vector<Point> dp_du(n_local, Point{});
+  std::vector<double> dp_dT(n_local, 0.0);
+  double p = 0.0;
+  const auto add_cell = [&](const ElementValues &fe, const std::array<int, 8> &cell)
+  {
+    double volume = 0.0;
+    for (int q = 0; q < fe.n_qpoints(); ++q)
+      volume += fe.JxW(q);
+    for (int j = 0; j < 8; ++j)
+    {
+      Point B{};
+      double w = 0.0;
+      for (int q = 0; q < fe.n_qpoints(); ++q)
+      {
+        for (int d = 0; d < 3; ++d)
+          B[d] += fe.grad(j, q)[d] * fe.JxW(q) / volume;
+        w += fe.shape(j, q) * fe.JxW(q) / volume;
+      }
+      const int l = cell[j];
+      const double nB = dot3(n, B);
+      Point d_u{};
+      for (int d = 0; d < 3; ++d)
+        d_u[d] = -0.5 * (p_.lambda * B[d] + 2.0 * p_.shear_modulus * nB * n[d]);
+      const double d_T = 0.5 * p_.beta * w;
+      for (int d = 0; d < 3; ++d)
+        dp_du[l][d] += d_u[d];
+      dp_dT[l] += d_T;
+      p += dot3(d_u, u[l]) + d_T * (T[l] - p_.reference_temperature);
+    }
+  };
+  add_cell(fe_a, cell_a);
+  add_cell(fe_b, cell_b);
+  const double dh_dp = p > 0.0 ? p_.pressure_coefficient : 0.0;
+
+  for (int q = 0; q < fv.n_qpoints(); ++q)
+  {
+    double jump = 0.0;
+    Point du{}; // u_b - u_a
+    for (int j = 0; j < 4; ++j)
+    {
+      jump += fv.shape(j, q) * (T[j] - T[4 + j]);
+      for (int d = 0; d < 3; ++d)
+        du[d] += fv.shape(j, q) * (u[4 + j][d] - u[j][d]);
+    }
+    const double g = dot3(fv.normal(q), du);
+    const double h = conductance(g, p);
+    const double dh_dg = g > 0.0 ? -p_.h0 * p_.length / ((p_.length + g) * (p_.length + g)) : 0.0;
+    const double JxW = fv.JxW(q);
+    for (int i = 0; i < 4; ++i)
+    {
+      const double phi = fv.shape(i, q) * JxW;
+      local.residual(T_slot, i) += h * jump * phi;
+      local.residual(T_slot, 4 + i) -= h * jump * phi;
+      // d/dT of the jump.
+      for (int j = 0; j < 4; ++j)
+      {
+        const double m = h * fv.shape(j, q) * phi;
+        local.jacobian(T_slot, i, T_slot, j) += m;
+        local.jacobian(T_slot, i, T_slot, 4 + j) -= m;
+        local.jacobian(T_slot, 4 + i, T_slot, j) -= m;
+        local.jacobian(T_slot, 4 + i, T_slot, 4 + j) += m;
+      }
+      // dh/dg dg/du: g depends on the face nodes' u.
+      if (dh_dg != 0.0)
+        for (int j = 0; j < 4; ++j)
+          for (int d = 0; d < 3; ++d)
+          {
+            const double v = jump * phi * dh_dg * fv.shape(j, q) * fv.normal(q)[d];
+            local.jacobian(T_slot, i, u_slot + d, 4 + j) += v;
+            local.jacobian(T_slot, i, u_slot + d, j) -= v;
+            local.jacobian(T_slot, 4 + i, u_slot + d, 4 + j) -= v;
+            local.jacobian(T_slot, 4 + i, u_slot + d, j) += v;
+          }
+      // dh/dp dp/d(u, T): p depends on both cells' nodes.
+      if (dh_dp != 0.0)
+        for (int l = 0; l < n_local; ++l)
+        {
+          const double s = jump * phi * dh_dp;
+          for (int d = 0; d < 3; ++d)
+          {
+            local.jacobian(T_slot, i, u_slot + d, l) += s * dp_du[l][d];
+            local.jacobian(T_slot, 4 + i, u_slot + d, l) -= s * dp_du[l][d];
+          }
+          local.jacobian(T_slot, i, T_slot, l) += s * dp_dT[l];
+          local.jacobian(T_slot, 4 + i, T_slot, l) -= s * dp_dT[l];
+        }
+    }
+  }
+}
+} // namespace kiln
