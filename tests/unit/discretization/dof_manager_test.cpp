@@ -1,5 +1,6 @@
-// Tests src/discretization/dof_manager.cpp: ownership of nodes, pairs and unknowns on the split
-// contact box, the owned and overlap Tpetra maps, and the importer and exporter between them.
+// Tests src/discretization/dof_manager.cpp: ownership of nodes and unknowns on the split
+// contact box, the twins across the gap, the owned and overlap Tpetra maps (with and without
+// the twin closure of contact), and the importer and exporter between them.
 // KILN_TEST_NP: 1 2 3
 #include "discretization/dof_manager.hpp"
 
@@ -50,15 +51,18 @@ protected:
     for (int c = 0; c < mesh.n_cells(); ++c)
       for (const int n : mesh.connectivity[c])
         node_ranks[n].insert(cell_rank[c]);
-    // The ranks that hold each node in their overlap: those of its cells, the
-    // rank of each gap face's side-a cell (for the twins), and the owner of
-    // each pair's node_a (for node_b).
-    overlap_ranks = node_ranks;
-    for (const auto &face : mesh.gap_faces)
-      for (const int n : face.node_b)
-        overlap_ranks[n].insert(cell_rank[face.cell_a]);
+    // The twins, from the pairs.
+    twins.assign(mesh.n_nodes(), -1);
     for (const auto &pair : mesh.gap_pairs)
-      overlap_ranks[pair.node_b].insert(owner(pair.node_a));
+    {
+      twins[pair.node_a] = pair.node_b;
+      twins[pair.node_b] = pair.node_a;
+    }
+    // The ranks that hold each node in their overlap (default layout, with contact).
+    overlap_ranks.resize(mesh.n_nodes());
+    for (int r = 0; r < np; ++r)
+      for (const int n : expected_overlap(cell_rank, r, kiln::DofLayout{}))
+        overlap_ranks[n].insert(r);
   }
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm;
@@ -67,6 +71,7 @@ protected:
   std::vector<int> cell_rank;
   kiln::DofManager dofs;
   std::vector<std::set<int>> node_ranks;
+  std::vector<int> twins;
   std::vector<std::set<int>> overlap_ranks;
 
   int owner(const int node) const { return *node_ranks[node].begin(); }
@@ -75,69 +80,190 @@ protected:
   {
     return {4 * GO(node), 4 * GO(node) + 1, 4 * GO(node) + 2, 4 * GO(node) + 3};
   }
+
+  /// Cells dealt round-robin to the ranks: unlike the METIS partition on two ranks (which
+  /// gives each rank both sides of its part of the gap), the twins of some touched gap
+  /// nodes are then on other ranks, so the twin closure changes the overlap.
+  std::vector<int> round_robin() const
+  {
+    std::vector<int> ranks(mesh.n_cells());
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      ranks[c] = c % np;
+    return ranks;
+  }
+
+  /// Under `partition`: the nodes of rank r's cells and, for every gap face whose side-a
+  /// cell r owns, the face's side-b nodes (and with contact and displacement all nodes of
+  /// its side-b cell).
+  std::set<int> cell_and_gap_nodes(const std::vector<int> &partition, const int r,
+                                   const kiln::DofLayout &layout) const
+  {
+    std::set<int> nodes;
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      if (partition[c] == r)
+        nodes.insert(mesh.connectivity[c].begin(), mesh.connectivity[c].end());
+    for (const auto &face : mesh.gap_faces)
+      if (partition[face.cell_a] == r)
+      {
+        nodes.insert(face.node_b.begin(), face.node_b.end());
+        if (layout.contact && layout.displacement)
+          nodes.insert(mesh.connectivity[face.cell_b].begin(),
+                       mesh.connectivity[face.cell_b].end());
+      }
+    return nodes;
+  }
+
+  /// The same, closed once under twins.
+  std::set<int> with_twins(const std::set<int> &nodes) const
+  {
+    std::set<int> closed = nodes;
+    for (const int n : nodes)
+      if (twins[n] >= 0)
+        closed.insert(twins[n]);
+    return closed;
+  }
+
+  /// The overlap nodes of rank r under `partition`: the above and, with contact, the
+  /// twins of those nodes.
+  std::set<int> expected_overlap(const std::vector<int> &partition, const int r,
+                                 const kiln::DofLayout &layout) const
+  {
+    const std::set<int> base = cell_and_gap_nodes(partition, r, layout);
+    return layout.contact ? with_twins(base) : base;
+  }
+
+  /// The owner of each node under `partition`: the lowest rank among its cells.
+  std::vector<int> owners(const std::vector<int> &partition) const
+  {
+    std::vector<int> result(mesh.n_nodes(), np);
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      for (const int n : mesh.connectivity[c])
+        result[n] = std::min(result[n], partition[c]);
+    return result;
+  }
+
+  /// The number of nodes, summed over ranks, that the twin closure adds to the overlap
+  /// without contact under `partition`.
+  int closure_size(const std::vector<int> &partition, const kiln::DofLayout &layout) const
+  {
+    const std::set<int> base = cell_and_gap_nodes(partition, rank, layout);
+    const int local = static_cast<int>(with_twins(base).size() - base.size());
+    int sum = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
+    return sum;
+  }
 };
 
 TEST_F(DofManagerTest, DofNumbering)
 {
   ASSERT_EQ(mesh.n_nodes(), n_nodes);
   ASSERT_EQ(static_cast<int>(mesh.gap_pairs.size()), n_pairs);
+  EXPECT_EQ(dofs.n_node_fields(), 4);
   EXPECT_EQ(dofs.dof(0, kiln::Field::T), 0);
   EXPECT_EQ(dofs.dof(7, kiln::Field::ux), 29);
   EXPECT_EQ(dofs.dof(7, kiln::Field::uy), 30);
   EXPECT_EQ(dofs.dof(149, kiln::Field::uz), 599);
-  EXPECT_EQ(dofs.contact_dof(0), 600);
-  EXPECT_EQ(dofs.contact_dof(24), 624);
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    for (int s = 0; s < 4; ++s)
+      EXPECT_EQ(dofs.node_dof(n, s), 4 * GO(n) + s) << "node " << n << " slot " << s;
+  // No unknowns beyond the nodes' (no contact unknowns).
+  EXPECT_EQ(dofs.n_global_dofs(), 4 * n_nodes);
 }
 
-TEST_F(DofManagerTest, OwnedCellsNodesAndPairs)
+TEST_F(DofManagerTest, Twins)
 {
-  std::vector<int> cells, nodes, overlap, pairs;
+  // Every gap pair, both ways.
+  std::set<int> gap_nodes;
+  for (const auto &pair : mesh.gap_pairs)
+  {
+    EXPECT_EQ(dofs.twin(pair.node_a), pair.node_b) << "node " << pair.node_a;
+    EXPECT_EQ(dofs.twin(pair.node_b), pair.node_a) << "node " << pair.node_b;
+    gap_nodes.insert(pair.node_a);
+    gap_nodes.insert(pair.node_b);
+  }
+  EXPECT_EQ(gap_nodes.size(), static_cast<std::size_t>(2 * n_pairs)) << "pairs are disjoint";
+  // -1 for every other node.
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    if (gap_nodes.count(n) == 0)
+    {
+      EXPECT_EQ(dofs.twin(n), -1) << "node " << n;
+    }
+  // The side-b nodes of every gap face are the twins of its side-a cell's face nodes.
+  for (const auto &face : mesh.gap_faces)
+    for (const int nb : face.node_b)
+    {
+      const int na = dofs.twin(nb);
+      ASSERT_GE(na, 0) << "side-b node " << nb << " has a twin";
+      const auto &cell = mesh.connectivity[face.cell_a];
+      EXPECT_NE(std::find(cell.begin(), cell.end(), na), cell.end())
+          << "twin " << na << " of " << nb << " in side-a cell " << face.cell_a;
+    }
+}
+
+TEST_F(DofManagerTest, OwnedCellsAndNodes)
+{
+  std::vector<int> cells, nodes;
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (cell_rank[c] == rank)
       cells.push_back(c);
   for (int n = 0; n < mesh.n_nodes(); ++n)
-  {
     if (owner(n) == rank)
       nodes.push_back(n);
-    if (touched_here(n))
-      overlap.push_back(n);
-  }
-  for (int k = 0; k < n_pairs; ++k)
-    if (owner(mesh.gap_pairs[k].node_a) == rank)
-      pairs.push_back(k);
   EXPECT_EQ(dofs.owned_cells(), cells);
   EXPECT_EQ(dofs.owned_nodes(), nodes);
-  EXPECT_EQ(dofs.overlap_nodes(), overlap);
-  EXPECT_EQ(dofs.owned_pairs(), pairs);
   for (int n = 0; n < mesh.n_nodes(); ++n)
     EXPECT_EQ(dofs.node_owner()[n], owner(n)) << "node " << n;
+}
+
+TEST_F(DofManagerTest, OverlapNodes)
+{
+  const std::set<int> expected = expected_overlap(cell_rank, rank, kiln::DofLayout{});
+  EXPECT_EQ(dofs.overlap_nodes(), std::vector<int>(expected.begin(), expected.end()));
+  // Closed under twins: a touched gap node comes with its twin.
+  for (const int n : dofs.overlap_nodes())
+    if (dofs.twin(n) >= 0)
+    {
+      EXPECT_TRUE(std::binary_search(dofs.overlap_nodes().begin(), dofs.overlap_nodes().end(),
+                                     dofs.twin(n)))
+          << "twin " << dofs.twin(n) << " of overlap node " << n;
+    }
+  // Every owned node is in the overlap too.
+  for (const int n : dofs.owned_nodes())
+    EXPECT_TRUE(touched_here(n)) << "owned node " << n;
+  // Every node is in its owner's overlap.
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    EXPECT_GT(overlap_ranks[n].count(owner(n)), 0u) << "node " << n;
+
+  // Round-robin cells, where the twin closure adds nodes on several ranks.
+  const std::vector<int> partition = round_robin();
+  const kiln::DofManager rr(mesh, partition, comm);
+  const std::set<int> rr_expected = expected_overlap(partition, rank, kiln::DofLayout{});
+  EXPECT_EQ(rr.overlap_nodes(), std::vector<int>(rr_expected.begin(), rr_expected.end()));
+  EXPECT_EQ(closure_size(partition, kiln::DofLayout{}) > 0, np > 1);
 }
 
 TEST_F(DofManagerTest, OwnedDofMap)
 {
   const auto owned = dofs.owned_dof_map();
-  EXPECT_EQ(dofs.n_global_dofs(), 4 * n_nodes + n_pairs);
-  EXPECT_EQ(owned->getGlobalNumElements(), static_cast<Tpetra::global_size_t>(4 * 150 + 25));
+  EXPECT_EQ(dofs.n_global_dofs(), 4 * n_nodes);
+  EXPECT_EQ(owned->getGlobalNumElements(), static_cast<Tpetra::global_size_t>(4 * n_nodes));
   EXPECT_TRUE(owned->isOneToOne());
   EXPECT_EQ(owned->getIndexBase(), 0);
   EXPECT_EQ(owned->getMinAllGlobalIndex(), 0);
-  EXPECT_EQ(owned->getMaxAllGlobalIndex(), 4 * n_nodes + n_pairs - 1);
+  EXPECT_EQ(owned->getMaxAllGlobalIndex(), 4 * n_nodes - 1);
 
   // The owned counts add up to the global count.
   const long local = static_cast<long>(dofs.n_owned_dofs());
   long sum = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
-  EXPECT_EQ(sum, 4 * n_nodes + n_pairs);
+  EXPECT_EQ(sum, 4 * n_nodes);
 
-  // Exactly the owned nodes' 4 unknowns and the owned pairs' contact unknowns.
+  // Exactly the owned nodes' 4 unknowns.
   std::set<GO> expected;
   for (int n = 0; n < mesh.n_nodes(); ++n)
     if (owner(n) == rank)
       for (const GO g : node_dofs(n))
         expected.insert(g);
-  for (int k = 0; k < n_pairs; ++k)
-    if (owner(mesh.gap_pairs[k].node_a) == rank)
-      expected.insert(4 * GO(n_nodes) + k);
   EXPECT_EQ(dofs.n_owned_dofs(), expected.size());
   for (const GO g : expected)
     EXPECT_TRUE(owned->isNodeGlobalElement(g)) << "unknown " << g << " not owned by " << rank;
@@ -165,18 +291,12 @@ TEST_F(DofManagerTest, OverlapDofMap)
     for (const int n : mesh.connectivity[c])
       for (const GO g : node_dofs(n))
         EXPECT_TRUE(overlap->isNodeGlobalElement(g)) << "cell " << c << " unknown " << g;
-  // The contact unknown of every pair one of whose nodes is touched, and nothing else.
+  // The 4 unknowns of every overlap node, and nothing else.
   std::set<GO> expected;
   for (int n = 0; n < mesh.n_nodes(); ++n)
     if (touched_here(n))
       for (const GO g : node_dofs(n))
         expected.insert(g);
-  for (int k = 0; k < n_pairs; ++k)
-  {
-    const kiln::GapPair &pair = mesh.gap_pairs[k];
-    if (touched_here(pair.node_a) || touched_here(pair.node_b))
-      expected.insert(4 * GO(n_nodes) + k);
-  }
   const auto elements = overlap->getNodeElementList();
   EXPECT_EQ(std::set<GO>(elements.begin(), elements.end()), expected);
   EXPECT_EQ(elements.size(), expected.size()) << "no unknown listed twice";
@@ -219,18 +339,9 @@ TEST_F(DofManagerTest, ExportSumsOverRanks)
   for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
   {
     const GO g = map->getGlobalElement(static_cast<kiln::LO>(i));
-    double expected = 0;
-    if (g < 4 * GO(n_nodes))
-      expected = static_cast<double>(overlap_ranks[g / 4].size());
-    else
-    {
-      // A contact unknown is in the overlap of every rank touching either node of its pair.
-      const kiln::GapPair &pair = mesh.gap_pairs[g - 4 * GO(n_nodes)];
-      std::set<int> ranks = overlap_ranks[pair.node_a];
-      ranks.insert(overlap_ranks[pair.node_b].begin(), overlap_ranks[pair.node_b].end());
-      expected = static_cast<double>(ranks.size());
-    }
-    EXPECT_EQ(values[i], expected) << "unknown " << g;
+    ASSERT_LT(g, 4 * GO(n_nodes));
+    // The number of ranks whose overlap holds the node.
+    EXPECT_EQ(values[i], static_cast<double>(overlap_ranks[g / 4].size())) << "unknown " << g;
   }
   // The sum over all owned entries is the global size of the overlap.
   const double local_sum = std::accumulate(values.begin(), values.end(), 0.0);
@@ -245,5 +356,68 @@ TEST_F(DofManagerTest, ExportSumsOverRanks)
   double max = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, local_max, Teuchos::outArg(max));
   EXPECT_EQ(max > 1, np > 1);
+}
+
+TEST_F(DofManagerTest, WithoutContactNoTwinClosure)
+{
+  // Temperature only, no contact: one unknown per node, and the overlap is the cell nodes
+  // and the side-b nodes of the owned side-a gap faces, without the twins. Checked under
+  // the METIS partition and under round-robin cells (where the closure would add nodes).
+  const kiln::DofLayout layout{true, false, false};
+  for (const std::vector<int> &partition : {cell_rank, round_robin()})
+  {
+    const kiln::DofManager heat(mesh, partition, comm, layout);
+    EXPECT_EQ(heat.n_node_fields(), 1);
+    EXPECT_EQ(heat.n_global_dofs(), n_nodes);
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+      EXPECT_EQ(heat.dof(n, kiln::Field::T), n) << "node " << n;
+    const std::vector<int> owner_of = owners(partition);
+    std::vector<int> owned;
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+      if (owner_of[n] == rank)
+        owned.push_back(n);
+    EXPECT_EQ(heat.owned_nodes(), owned);
+    for (const auto &pair : mesh.gap_pairs)
+    {
+      EXPECT_EQ(heat.twin(pair.node_a), pair.node_b);
+      EXPECT_EQ(heat.twin(pair.node_b), pair.node_a);
+    }
+
+    const std::set<int> expected = cell_and_gap_nodes(partition, rank, layout);
+    EXPECT_EQ(heat.overlap_nodes(), std::vector<int>(expected.begin(), expected.end()));
+    const auto elements = heat.overlap_dof_map()->getNodeElementList();
+    EXPECT_EQ(std::set<GO>(elements.begin(), elements.end()),
+              std::set<GO>(expected.begin(), expected.end()));
+    EXPECT_EQ(elements.size(), expected.size());
+    // The twins the closure would add are not there.
+    for (const int n : with_twins(expected))
+      if (expected.count(n) == 0)
+      {
+        EXPECT_FALSE(heat.overlap_node_map()->isNodeGlobalElement(n))
+            << "twin " << n << " of a touched node in the overlap without contact";
+      }
+
+    // The export sums count the ranks whose overlap (without closure) holds the node.
+    std::vector<int> holders(mesh.n_nodes(), 0);
+    for (int r = 0; r < np; ++r)
+      for (const int n : cell_and_gap_nodes(partition, r, layout))
+        ++holders[n];
+    using Vector = Tpetra::Vector<>;
+    Vector overlap(heat.overlap_dof_map());
+    overlap.putScalar(1.0);
+    Vector owned_sums(heat.owned_dof_map());
+    owned_sums.putScalar(0.0);
+    owned_sums.doExport(overlap, *heat.dof_exporter(), Tpetra::ADD);
+    const auto map = heat.owned_dof_map();
+    const auto values = owned_sums.getData();
+    for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    {
+      const GO g = map->getGlobalElement(static_cast<kiln::LO>(i));
+      EXPECT_EQ(values[i], static_cast<double>(holders[g])) << "node " << g;
+    }
+  }
+  // Under round-robin cells on several ranks the closure would have added nodes, so the
+  // check above tells a closed overlap from an open one.
+  EXPECT_EQ(closure_size(round_robin(), layout) > 0, np > 1);
 }
 } // namespace
