@@ -122,7 +122,10 @@ void Simulation::setup()
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
-    cell_rank_ = partition_cells(mesh_, *comm_, input_path_ + ": Kiln/Mesh");
+    const std::string where = input_path_ + ": Kiln/Mesh";
+    cell_rank_ = params_.sublist("Mesh").get<std::string>("Partition") == "By Block"
+                     ? partition_cells_by_block(mesh_, *comm_, where)
+                     : partition_cells(mesh_, *comm_, where);
     dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_);
   }
   {
@@ -248,8 +251,11 @@ void Simulation::print_header() const
       << std::setprecision(2) << *std::max_element(v.begin(), v.end()) / mean;
     return s.str();
   };
-  out << "partition (METIS k-way): cells per rank " << balance(cells) << "; owned nodes per rank "
-      << balance(nodes) << "\n";
+  out << "partition ("
+      << (params_.sublist("Mesh").get<std::string>("Partition") == "By Block" ? "by block"
+                                                                              : "METIS k-way")
+      << "): cells per rank " << balance(cells) << "; owned nodes per rank " << balance(nodes)
+      << "\n";
   out << "unknowns: " << dofs_->n_global_dofs() << " ("
       << (layout_.temperature && layout_.displacement ? "temperature and displacement"
           : layout_.temperature                       ? "temperature"

@@ -21,6 +21,13 @@ Teuchos::ParameterList MeshFactory::valid_parameters()
         "id of the interior side set at which the mesh is split into a gap of zero width; "
         "0 for no gap [-]",
         nonnegative_int_validator());
+  p.set("Partition", "METIS",
+        "how the cells are shared among the MPI ranks: \"METIS\" (k-way, balanced, few cut "
+        "faces); \"By Block\": the element blocks in increasing id go to the ranks in order, "
+        "block i to rank i np / n_blocks (needs at most as many ranks as blocks; for tests "
+        "and studies, e.g. the two halves of the contact box on two ranks, the partition "
+        "boundary on the gap)",
+        choice_validator({"METIS", "By Block"}));
   p.sublist("Box", false, "the generated block; see BoxMeshGenerator")
       .setParameters(BoxMeshGenerator::valid_parameters());
   Teuchos::ParameterList &exodus = p.sublist("Exodus", false, "an Exodus II mesh (Cubit)");

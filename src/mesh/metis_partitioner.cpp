@@ -82,6 +82,26 @@ std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &com
   return cell_rank;
 }
 
+std::vector<int> partition_cells_by_block(const Mesh &mesh, const Teuchos::Comm<int> &comm,
+                                          const std::string &where)
+{
+  const std::vector<int> ids = mesh.block_ids();
+  const int n_ranks = comm.getSize();
+  const int n_blocks = static_cast<int>(ids.size());
+  KILN_CHECK_INPUT(n_ranks <= n_blocks, where + "/\"Partition\"",
+                   "is \"By Block\" but the mesh has " << n_blocks << " element blocks for "
+                                                       << n_ranks << " MPI ranks; run on at most "
+                                                       << n_blocks << " ranks or use \"METIS\"");
+  std::vector<int> cell_rank(mesh.n_cells(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+  {
+    const int i =
+        static_cast<int>(std::find(ids.begin(), ids.end(), mesh.block_id[c]) - ids.begin());
+    cell_rank[c] = i * n_ranks / n_blocks;
+  }
+  return cell_rank;
+}
+
 std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank)
 {
   std::vector<int> owner(mesh.n_nodes(), INT_MAX);

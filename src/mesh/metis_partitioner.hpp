@@ -16,6 +16,10 @@ namespace kiln
 /// than ranks.
 std::vector<int> partition_cells(const Mesh &mesh, const Teuchos::Comm<int> &comm,
                                  const std::string &where);
+/// Element block i (of the mesh's block ids, increasing) to rank i np / n_blocks. Throws
+/// InputError (naming `where`) if there are more ranks than blocks.
+std::vector<int> partition_cells_by_block(const Mesh &mesh, const Teuchos::Comm<int> &comm,
+                                          const std::string &where);
 
 /// The owner of each node: the lowest rank among the cells around it.
 std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank);

@@ -1,9 +1,10 @@
 // The mechanics of the contact box against the analytic open-gap state of
 // ../shared/spec/contact-box.md, and the elastic-cube benchmark:
-// - uniform temperature, open gap (no contact yet): every cell's stress, strain and thermal
-//   strain, every node's displacement and the gap opening at every gap node (read back from
-//   the HDF5 output) are the spec's uniform state to 1e-9 relative, on the generated rotated
-//   box, on the Cubit mesh rotated-cube.exo and on another rotation, size, cell count and
+// - uniform temperature, open gap (contact on, as by default): every cell's stress, strain and
+//   thermal strain, every node's displacement and the gap opening at every gap node (read back
+//   from the HDF5 output) are the spec's uniform state to 1e-9 relative, and every gap node is
+//   out of contact (contact_active 0, gap_normal_traction 0; NaN off the gap), on the generated
+//   rotated box, on the Cubit mesh rotated-cube.exo and on another rotation, size, cell count and
 //   material; the spec's table (7 digits) agrees to 1e-6;
 // - inputs/contact-box-open.xml as it is ends at 150 s in that state, to the accuracy its
 //   temperature (not quite uniform at 150 s) allows;
@@ -11,266 +12,36 @@
 // - np 1 and np 2 give the same contact-box-open states at every output time.
 // KILN_TEST_NP: 1 2
 #include "io/input_reader.hpp"
-#include "unit/physics/heat_test_support.hpp"
+#include "unit/app/contact_box_support.hpp"
 
 #include <Teuchos_Array.hpp>
-#include <Teuchos_oblackholestream.hpp>
-#include <gtest/gtest.h>
-#include <hdf5.h>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <iomanip>
-#include <sstream>
 
 namespace
 {
-using Matrix3 = std::array<std::array<double, 3>, 3>;
+using namespace kiln_test;
 using kiln::Point;
-using kiln::Voigt;
-
-const std::string inputs = std::string(KILN_SOURCE_DIR) + "/inputs/";
-
-/// std::cout on rank 0, a black hole elsewhere (measured figures are printed once).
-std::ostream &rank0_out()
-{
-  static Teuchos::oblackholestream black_hole;
-  return Teuchos::DefaultComm<int>::getComm()->getRank() == 0 ? std::cout : black_hole;
-}
-
-/// Voigt index of (i, j): xx, yy, zz, xy, xz, yz.
-constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
-const char *const voigt_name[6] = {"xx", "yy", "zz", "xy", "xz", "yz"};
-
-/// A = Rx(theta) Ry(phi) as the spec writes it (built here, not by kiln::rotation_matrix,
-/// so that the test does not share the code under test).
-Matrix3 spec_rotation(const double phi_degrees, const double theta_degrees)
-{
-  const double pi = std::acos(-1.0);
-  const double cp = std::cos(phi_degrees * pi / 180), sp = std::sin(phi_degrees * pi / 180);
-  const double ct = std::cos(theta_degrees * pi / 180), st = std::sin(theta_degrees * pi / 180);
-  const Matrix3 Ry{{{cp, 0, sp}, {0, 1, 0}, {-sp, 0, cp}}};
-  const Matrix3 Rx{{{1, 0, 0}, {0, ct, -st}, {0, st, ct}}};
-  Matrix3 A{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        A[i][j] += Rx[i][k] * Ry[k][j];
-  return A;
-}
-
-/// A t A^T in Voigt order, t diagonal (t_xx, t_yy, t_zz) in the box frame.
-Voigt rotate_diagonal(const Matrix3 &A, const Point &t)
-{
-  Voigt v{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j)
-    {
-      double s = 0.0;
-      for (int k = 0; k < 3; ++k)
-        s += A[i][k] * t[k] * A[j][k];
-      v[voigt_index[i][j]] = s;
-    }
-  return v;
-}
-
-/// The open-gap uniform state of the spec in the mesh frame.
-struct OpenGapState
-{
-  Voigt stress{};
-  Voigt strain{};
-  Voigt thermal_strain{};
-  double gap_opening = 0.0; ///< [m]
-  // For the displacement field: the box-frame strains and the rotation.
-  double eps_xx = 0.0;
-  double eps_yy = 0.0;
-  Matrix3 A{};
-};
-
-/// sigma_xx = sigma_yy = 0, eps_zz = 0, sigma_zz = -E alpha dT, eps_xx = eps_yy =
-/// (1 + nu) alpha dT, gap opening = -2 (half width) eps_xx; rotated by A = Rx(theta) Ry(phi).
-OpenGapState open_gap_state(const double E, const double nu, const double alpha, const double dT,
-                            const double half_width, const double phi, const double theta)
-{
-  OpenGapState s;
-  s.A = spec_rotation(phi, theta);
-  s.eps_xx = s.eps_yy = (1 + nu) * alpha * dT;
-  s.stress = rotate_diagonal(s.A, {0.0, 0.0, -E * alpha * dT});
-  s.strain = rotate_diagonal(s.A, {s.eps_xx, s.eps_yy, 0.0});
-  s.thermal_strain = {alpha * dT, alpha * dT, alpha * dT, 0.0, 0.0, 0.0}; // isotropic
-  s.gap_opening = -2 * half_width * s.eps_xx;
-  return s;
-}
 
 /// The spec's material (lambda 5.2e10, G 2.6e10, alpha 2.2e-5, T_ref 298) at 288 K, phi 45,
 /// theta -30, half width 2 cm, by the formulas.
-OpenGapState spec_open_gap_state()
+UniformState spec_open_gap_state()
 {
-  const double lambda = 5.2e10, G = 2.6e10;
-  const double E = G * (3 * lambda + 2 * G) / (lambda + G), nu = lambda / (2 * (lambda + G));
-  return open_gap_state(E, nu, 2.2e-5, 288.0 - 298.0, 0.02, 45.0, -30.0);
+  return open_gap_state(spec_E, spec_nu, spec_alpha, 288.0 - spec_T_ref, 0.02, 45.0, -30.0);
 }
 
 /// The "open, dT = -10" column of the spec's table (7 significant digits). The thermal
 /// strain (alpha dT) and the displacement field are not in the table: the formula's.
-OpenGapState spec_table_open_gap_state()
+UniformState spec_table_open_gap_state()
 {
-  OpenGapState s = spec_open_gap_state(); // A and the box-frame strains
+  UniformState s = spec_open_gap_state(); // A and the box-frame strains
   s.stress = {7.626667e6, 1.906667e6, 5.72e6, 3.813333e6, 6.604887e6, 3.302444e6};
   s.strain = {-1.466667e-4, -2.566667e-4, -1.833333e-4, 7.333333e-5, 1.270171e-4, 6.350853e-5};
   s.thermal_strain = {-2.2e-4, -2.2e-4, -2.2e-4, 0.0, 0.0, 0.0};
   s.gap_opening = 1.173333e-5;
   return s;
-}
-
-/// A reference state and the relative tolerance to hold the results to; where the reference
-/// value is 0, absolute tolerances of 1e-3 Pa (stress) and 1e-13 (strains) apply.
-struct Reference
-{
-  std::string name;
-  OpenGapState state;
-  double tolerance;
-};
-constexpr double zero_stress_tolerance = 1e-3; // [Pa]
-constexpr double zero_strain_tolerance = 1e-13;
-
-/// The largest relative (or, at zero reference values, absolute) difference seen.
-struct Deviation
-{
-  double relative = 0.0;
-  double absolute_at_zero = 0.0;
-  /// Records `actual` against `exact`: true if |actual - exact| <= rel |exact|, or <= zero_tol
-  /// where exact is 0.
-  bool check(const double actual, const double exact, const double rel, const double zero_tol)
-  {
-    const double error = std::abs(actual - exact);
-    if (exact == 0.0)
-    {
-      absolute_at_zero = std::max(absolute_at_zero, error);
-      return error <= zero_tol;
-    }
-    relative = std::max(relative, error / std::abs(exact));
-    return error <= rel * std::abs(exact);
-  }
-  void reduce(const Teuchos::Comm<int> &comm)
-  {
-    double local[2] = {relative, absolute_at_zero}, global[2] = {0.0, 0.0};
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, local, global);
-    relative = global[0];
-    absolute_at_zero = global[1];
-  }
-};
-
-std::string number(const double value)
-{
-  std::ostringstream s;
-  s << std::setprecision(17) << value;
-  return s.str();
-}
-
-/// A results path that no other test (or the same test at another np) uses: in the temp
-/// folder, with rank 0's process id.
-std::string temporary_base(const std::string &name, const Teuchos::Comm<int> &comm)
-{
-  int pid = static_cast<int>(getpid());
-  Teuchos::broadcast(comm, 0, Teuchos::outArg(pid));
-  return (std::filesystem::temp_directory_path() /
-          ("kiln_contact_box_mechanics_" + name + "_np" + std::to_string(comm.getSize()) + "_" +
-           std::to_string(pid)))
-      .string();
-}
-
-void remove_results(const std::string &base, const Teuchos::Comm<int> &comm)
-{
-  comm.barrier();
-  if (comm.getRank() == 0)
-  {
-    std::remove((base + ".h5").c_str());
-    std::remove((base + ".xmf").c_str());
-  }
-}
-
-/// The last output step of BASE.h5: its time and one node or cell field (rows in global id
-/// order, components interleaved). Serial read on the calling rank.
-std::vector<double> read_last_step(const std::string &h5_path, const std::string &field,
-                                   double &time)
-{
-  std::vector<double> values;
-  const hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  EXPECT_GE(file, 0) << h5_path;
-  if (file < 0)
-    return values;
-  H5G_info_t steps{};
-  EXPECT_GE(H5Gget_info_by_name(file, "/steps", &steps, H5P_DEFAULT), 0) << h5_path;
-  char group[32];
-  std::snprintf(group, sizeof group, "/steps/%06d", static_cast<int>(steps.nlinks) - 1);
-  const hid_t attribute = H5Aopen_by_name(file, group, "time", H5P_DEFAULT, H5P_DEFAULT);
-  EXPECT_GE(H5Aread(attribute, H5T_NATIVE_DOUBLE, &time), 0);
-  H5Aclose(attribute);
-  const hid_t dataset = H5Dopen2(file, (std::string(group) + "/" + field).c_str(), H5P_DEFAULT);
-  EXPECT_GE(dataset, 0) << group << "/" << field;
-  if (dataset >= 0)
-  {
-    const hid_t space = H5Dget_space(dataset);
-    values.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-    H5Sclose(space);
-    EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
-    H5Dclose(dataset);
-  }
-  H5Fclose(file);
-  return values;
-}
-
-/// The exact displacement of every node in the open-gap state: in the box frame (x' = A^T
-/// (x - centre)), u'_x = eps_xx (x' - x'_end) with x'_end the fixed end face of the node's
-/// half (x' = -/+ half width), u'_y = eps_yy (y' - y'_3) with y'_3 the plane of side set 3
-/// (the y roller), u'_z = 0 (rollers on both z faces); u = A u'.
-std::vector<Point> exact_displacements(const kiln::Mesh &mesh, const OpenGapState &s)
-{
-  const int n_nodes = mesh.n_nodes();
-  Point centre{};
-  for (const Point &x : mesh.coordinates)
-    for (int d = 0; d < 3; ++d)
-      centre[d] += x[d] / n_nodes;
-  const auto box_frame = [&](const int n)
-  {
-    Point xp{};
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i)
-        xp[j] += s.A[i][j] * (mesh.coordinates[n][i] - centre[i]);
-    return xp;
-  };
-  // The half of each node: the sign of x' at the centroids of its cells (twin nodes on the
-  // gap belong to the other half than the nodes they copy).
-  std::vector<double> side(n_nodes, 0.0);
-  for (int c = 0; c < mesh.n_cells(); ++c)
-  {
-    double x_centroid = 0.0;
-    for (const int n : mesh.connectivity[c])
-      x_centroid += box_frame(n)[0] / kiln::n_hex_nodes;
-    for (const int n : mesh.connectivity[c])
-      side[n] = x_centroid < 0 ? -1.0 : 1.0;
-  }
-  double half_width = 0.0;
-  for (int n = 0; n < n_nodes; ++n)
-    half_width = std::max(half_width, std::abs(box_frame(n)[0]));
-  const kiln::SideSet *rollers_y = mesh.find_side_set(3);
-  EXPECT_NE(rollers_y, nullptr);
-  const double y_fixed = box_frame(
-      mesh.connectivity[rollers_y->cells[0]][kiln::hex_face_nodes[rollers_y->faces[0]][0]])[1];
-  std::vector<Point> u(n_nodes);
-  for (int n = 0; n < n_nodes; ++n)
-  {
-    const Point xp = box_frame(n);
-    const Point up{s.eps_xx * (xp[0] - side[n] * half_width), s.eps_yy * (xp[1] - y_fixed), 0.0};
-    for (int i = 0; i < 3; ++i)
-      u[n][i] = s.A[i][0] * up[0] + s.A[i][1] * up[1] + s.A[i][2] * up[2];
-  }
-  return u;
 }
 
 /// Runs the input (a Thermo-Elasticity deck whose results go to `base`) and checks the
@@ -385,83 +156,33 @@ void run_and_check_open_gap(const std::string &label, const Teuchos::ParameterLi
                   << n_gap_nodes << " gap nodes, max relative deviation of the gap opening "
                   << gap.relative << "\n";
     }
+    // Contact is on (the default): every pair is open, without traction; NaN off the gap.
+    const auto traction = read_last_step(base + ".h5", "gap_normal_traction", time);
+    const auto active = read_last_step(base + ".h5", "contact_active", time);
+    ASSERT_EQ(traction.size(), opening.size()) << label;
+    ASSERT_EQ(active.size(), opening.size()) << label;
+    for (std::size_t n = 0; n < opening.size(); ++n)
+    {
+      if (std::isnan(opening[n]))
+      {
+        EXPECT_TRUE(std::isnan(traction[n])) << label << ": node " << n << " off the gap";
+        EXPECT_TRUE(std::isnan(active[n])) << label << ": node " << n << " off the gap";
+      }
+      else
+      {
+        EXPECT_EQ(traction[n], 0.0) << label << ": gap node " << n << " normal traction";
+        EXPECT_EQ(active[n], 0.0) << label << ": gap node " << n << " contact_active";
+      }
+    }
   }
   remove_results(base, *comm);
 }
-
-/// A Thermo-Elasticity deck at uniform temperature T (initial and on side sets 1, 2), rollers
-/// on 1, 2, 3, 5, 6, one steady solve with tight tolerances.
-Teuchos::ParameterList uniform_temperature_deck(const std::string &mesh_xml,
-                                                const std::string &material_xml, const double T,
-                                                const std::string &base)
-{
-  std::string xml = R"xml(
-<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">MESH</ParameterList>
-  <ParameterList name="Material">MATERIAL</ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="TEMPERATURE"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="ends">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1, 2}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Type" type="string" value="Constant"/>
-          <Parameter name="Value" type="double" value="TEMPERATURE"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="rollers">
-        <Parameter name="Type" type="string" value="Normal Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1, 2, 3, 5, 6}"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
-    <ParameterList name="Linear Solver">
-      <ParameterList name="Linear Solver Types">
-        <ParameterList name="Belos">
-          <ParameterList name="Solver Types">
-            <ParameterList name="Pseudo Block GMRES">
-              <Parameter name="Convergence Tolerance" type="double" value="1e-13"/>
-            </ParameterList>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="BASE"/>
-    <Parameter name="Times" type="Array(double)" value="{0}"/>
-  </ParameterList>
-</ParameterList>)xml";
-  kiln_test::replace(xml, "MESH", mesh_xml);
-  kiln_test::replace(xml, "MATERIAL", material_xml);
-  kiln_test::replace(xml, "TEMPERATURE", number(T));
-  kiln_test::replace(xml, "BASE", base);
-  return *Teuchos::getParametersFromXmlString(xml);
-}
-
-/// The material of the spec (aluminium) as inputs/contact-box-*.xml give it.
-const std::string spec_material = R"xml(
-    <Parameter name="Lame Lambda" type="double" value="5.2e10"/>
-    <Parameter name="Shear Modulus" type="double" value="2.6e10"/>
-    <Parameter name="Thermal Expansion" type="double" value="2.2e-5"/>
-    <Parameter name="Reference Temperature" type="double" value="298"/>)xml";
 } // namespace
 
 TEST(ContactBoxMechanics, SpecTableIsTheOpenGapFormula)
 {
   // The table has 7 significant digits: it and the formulas agree to its precision.
-  const OpenGapState formula = spec_open_gap_state(), table = spec_table_open_gap_state();
+  const UniformState formula = spec_open_gap_state(), table = spec_table_open_gap_state();
   for (int k = 0; k < 6; ++k)
   {
     EXPECT_NEAR(formula.stress[k], table.stress[k], 1e-6 * std::abs(table.stress[k]))
@@ -476,16 +197,8 @@ TEST(ContactBoxMechanics, SpecTableIsTheOpenGapFormula)
 TEST(ContactBoxMechanics, OpenGapUniformStateOnGeneratedBox)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string base = temporary_base("generated", *comm);
-  const std::string mesh = R"xml(
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{0.04, 0.04, 0.04}"/>
-      <Parameter name="Cells" type="Array(int)" value="{4, 4, 4}"/>
-      <Parameter name="Phi" type="double" value="45"/>
-      <Parameter name="Theta" type="double" value="-30"/>
-    </ParameterList>)xml";
+  const std::string base = temporary_base("mechanics_generated", *comm);
+  const std::string &mesh = generated_box_mesh;
   run_and_check_open_gap("generated box", uniform_temperature_deck(mesh, spec_material, 288, base),
                          base, 288, 1e-9 * 288,
                          {{"formula", spec_open_gap_state(), 1e-9},
@@ -497,16 +210,8 @@ TEST(ContactBoxMechanics, OpenGapUniformStateOnGeneratedBox)
 TEST(ContactBoxMechanics, OpenGapUniformStateUnscaledWithoutRigidBodyModes)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string base = temporary_base("unscaled", *comm);
-  const std::string mesh = R"xml(
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{0.04, 0.04, 0.04}"/>
-      <Parameter name="Cells" type="Array(int)" value="{4, 4, 4}"/>
-      <Parameter name="Phi" type="double" value="45"/>
-      <Parameter name="Theta" type="double" value="-30"/>
-    </ParameterList>)xml";
+  const std::string base = temporary_base("mechanics_unscaled", *comm);
+  const std::string &mesh = generated_box_mesh;
   Teuchos::ParameterList input = uniform_temperature_deck(mesh, spec_material, 288, base);
   input.sublist("Solver").set("Scale Unknowns", false).set("Near-Null Space", false);
   run_and_check_open_gap("unscaled, no rigid-body modes", input, base, 288, 1e-9 * 288,
@@ -516,15 +221,8 @@ TEST(ContactBoxMechanics, OpenGapUniformStateUnscaledWithoutRigidBodyModes)
 TEST(ContactBoxMechanics, OpenGapUniformStateOnCubitMesh)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string base = temporary_base("cubit", *comm);
-  const std::string mesh = R"xml(
-    <Parameter name="Type" type="string" value="Exodus"/>
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Exodus">
-      <Parameter name="File" type="string" value=")xml" +
-                           std::string(KILN_SHARED_DIR) + R"xml(/meshes/rotated-cube.exo"/>
-      <Parameter name="Coordinate Scale" type="double" value="0.01"/>
-    </ParameterList>)xml";
+  const std::string base = temporary_base("mechanics_cubit", *comm);
+  const std::string &mesh = cubit_mesh;
   run_and_check_open_gap("rotated-cube.exo",
                          uniform_temperature_deck(mesh, spec_material, 288, base), base, 288,
                          1e-9 * 288,
@@ -537,7 +235,7 @@ TEST(ContactBoxMechanics, OpenGapUniformStateOtherRotationSizeAndMaterial)
   // phi 20, theta 35, a 6 x 3 x 5 cm box of 6 x 2 x 4 cells moved off the origin; a steel-like
   // material given by E and nu, cooled by 40 K.
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string base = temporary_base("other", *comm);
+  const std::string base = temporary_base("mechanics_other", *comm);
   const double E = 2.1e11, nu = 0.3, alpha = 1.2e-5, T_ref = 300, T = 260;
   const std::string mesh = R"xml(
     <Parameter name="Type" type="string" value="Box"/>
@@ -579,7 +277,7 @@ TEST(ContactBoxMechanics, OpenInputEndsInOpenGapState)
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string path = inputs + "contact-box-open.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  const std::string base = temporary_base("open_input", *comm);
+  const std::string base = temporary_base("mechanics_open_input", *comm);
   input.sublist("Output").set("File Base", base);
   run_and_check_open_gap("contact-box-open.xml at 150 s", input, base, 288, 3e-6,
                          {{"formula", spec_open_gap_state(), 1e-6},
