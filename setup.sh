@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Kiln set-up on a fresh Debian 12 machine.
-#   ./setup.sh run    install what is missing, build, run the contact box on 2 MPI ranks
+#   ./setup.sh run    install what is missing, build, run the contact box on 2 MPI ranks and
+#                     print its final state against the analytic solution of the spec
 #   ./setup.sh test   install what is missing, build, run the whole ctest suite
 # Environment: BUILD_DIR (default build), JOBS (default nproc).
 set -euo pipefail
@@ -20,6 +21,7 @@ cmake --build "$build" -j "$jobs"
 if [ "$mode" = run ]; then
   mkdir -p results
   mpirun -np 2 "$build/src/app/kiln" inputs/contact-box-close.xml
+  "$build/tools/kiln_contact_box_report" inputs/contact-box-close.xml results/contact-box-close.h5
 else
   ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 fi

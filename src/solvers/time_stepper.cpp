@@ -135,6 +135,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
             << r.newton_iterations << " (" << r.linear_iterations << " linear), |F| "
             << std::scientific << std::setprecision(3) << r.initial_residual_norm << " -> "
             << r.final_residual_norm << std::defaultfloat << "\n";
+      problem.step_accepted(t);
       output(t, static_cast<int>(next), 0.0, x);
     }
     return stats;
@@ -153,6 +154,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
   int n_past = 0;  // accepted steps so far
   double dt = initial_step_;
   int attempts = 0;
+  bool newton_failed = false; // since the last accepted step
 
   for (; next < output_times.size(); ++next)
   {
@@ -194,6 +196,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
       if (!r.converged)
       {
         ++stats.newton_failures;
+        newton_failed = true;
         dt = h * step_reduction_;
         std::ostringstream failure;
         failure << "Newton did not converge in the step from t = " << seconds(t)
@@ -256,8 +259,10 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
         factor =
             std::min(growth_factor_,
                      std::max(0.2, 0.9 * std::pow(std::max(error, 1e-10), -1.0 / (order + 1))));
-      if (2 * r.newton_iterations > newton.max_iterations())
+      // After a hard solve, or one that failed at a larger step, the next step does not grow.
+      if (2 * r.newton_iterations > newton.max_iterations() || newton_failed)
         factor = std::min(factor, 1.0);
+      newton_failed = false;
       Tpetra::deep_copy(x_nm2, x_nm1);
       Tpetra::deep_copy(x_nm1, x_n);
       Tpetra::deep_copy(x_n, x);

@@ -29,7 +29,8 @@ class NewtonSolver;
 /// with e > 1 is repeated with h * max(0.2, 0.9 e^(-1/(p+1))); an accepted one lets the
 /// next grow by min(Growth Factor, 0.9 e^(-1/(p+1))), p the order. A step whose Newton
 /// solve fails is repeated with h * "Step Reduction"; a Newton solve that needed more
-/// than half of its allowed iterations keeps the next step from growing. Steps never
+/// than half of its allowed iterations, or that follows a failed attempt, keeps the next
+/// step from growing. Steps never
 /// exceed Maximum Step nor Growth Factor times the last step; they land exactly on every
 /// output time, and the last two steps before one are split evenly rather than leaving a
 /// sliver. Below Minimum Step the run stops with a RunError.

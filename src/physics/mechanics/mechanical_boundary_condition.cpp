@@ -61,9 +61,9 @@ MechanicalBoundaryCondition::MechanicalBoundaryCondition(const std::string &name
   const std::string type = p.get<std::string>("Type");
   type_ = internal::mechanical_bc_types.at(type);
   check_parameters_of_type(p, type, internal::mechanical_bc_parameters, path);
-  side_sets_ = read_boundary_side_sets(
-      p, mesh, path,
-      "its two sides touch through frictionless contact (Mechanics/Contact), not a boundary condition");
+  side_sets_ = read_boundary_side_sets(p, mesh, path,
+                                       "its two sides touch through frictionless contact "
+                                       "(Mechanics/Contact), not a boundary condition");
 
   switch (type_)
   {
