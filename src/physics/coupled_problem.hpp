@@ -5,6 +5,7 @@
 #include "discretization/dof_manager.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/active_set_history.hpp"
 #include "physics/boundary_input.hpp"
 #include "physics/heat/contact_conductance_kernel.hpp"
 #include "physics/heat/gap_conductance_kernel.hpp"
@@ -230,13 +231,13 @@ private:
   std::vector<double> contact_dg_;        ///< Fischer-Burmeister: dC/d(c g) per pair
   bool combine_rows_ = false;             ///< add_local() combines the rows of pairs
   Teuchos::RCP<Vector> f_overlap_;
-  std::vector<int> pair_of_node_;          ///< per mesh node: index into pairs_, or -1
-  std::vector<int> owned_pairs_;           ///< pairs whose node b this rank owns
-  bool fischer_burmeister_ = false;        ///< the input's choice
-  bool cycle_fallback_ = false;            ///< Fischer-Burmeister after a cycle, this solve
-  std::vector<char> active_;               ///< per pair (owned_pairs_), at the last evaluation
-  std::vector<double> pressure_;           ///< P per pair (owned_pairs_) at the last evaluation
-  std::vector<std::vector<char>> history_; ///< active sets at this solve's Jacobians
+  std::vector<int> pair_of_node_;   ///< per mesh node: index into pairs_, or -1
+  std::vector<int> owned_pairs_;    ///< pairs whose node b this rank owns
+  bool fischer_burmeister_ = false; ///< the input's choice
+  bool cycle_fallback_ = false;     ///< Fischer-Burmeister after a cycle, this solve
+  std::vector<char> active_;        ///< per pair (owned_pairs_), at the last evaluation
+  std::vector<double> pressure_;    ///< P per pair (owned_pairs_) at the last evaluation
+  ActiveSetHistory history_;        ///< active sets at this solve's Jacobians
   std::vector<char> last_jacobian_active_;
   int active_set_changes_ = 0;
   int jacobians_ = 0;       ///< Jacobian evaluations since set_time_derivative

@@ -221,21 +221,15 @@ void CoupledProblem::track_active_set()
             << opened << " opened; " << n_active_pairs() << " of " << pairs_.size()
             << " in contact\n";
   }
-  // A cycle: the set of an earlier iteration (not the last) comes back.
-  for (std::size_t j = 0; j + 1 < history_.size() && !cycle_fallback_; ++j)
+  const int repeated = history_.record(active_, comm);
+  if (repeated > 0 && !cycle_fallback_)
   {
-    int same = history_[j] == active_ ? 1 : 0;
-    same = internal::sum_over_ranks(comm, same);
-    if (same == comm.getSize() && closed + opened > 0)
-    {
-      cycle_fallback_ = true;
-      if (!out_.is_null())
-        *out_ << "  contact: the active set of Newton iteration " << j + 1
-              << " came back at iteration " << jacobians_
-              << " (a cycle); this step goes on with the Fischer-Burmeister function\n";
-    }
+    cycle_fallback_ = true;
+    if (!out_.is_null())
+      *out_ << "  contact: the active set of Newton iteration " << repeated
+            << " came back at iteration " << jacobians_
+            << " (a cycle); this step goes on with the Fischer-Burmeister function\n";
   }
-  history_.push_back(active_);
   last_jacobian_active_ = active_;
 }
 
