@@ -81,6 +81,25 @@ double hex_volume(const HexNodes &x)
   return v;
 }
 
+bool append_orthonormal(std::vector<Point> &basis, Point v)
+{
+  const double length = std::sqrt(dot(v, v));
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Point &q : basis)
+    {
+      const double c = dot(v, q);
+      for (int d = 0; d < 3; ++d)
+        v[d] -= c * q[d];
+    }
+  const double rest = std::sqrt(dot(v, v));
+  if (rest <= 1e-6 * length)
+    return false;
+  for (double &x : v)
+    x /= rest;
+  basis.push_back(v);
+  return true;
+}
+
 QuadNodalAreas quad_nodal_areas(const QuadNodes &x)
 {
   static constexpr double r[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};

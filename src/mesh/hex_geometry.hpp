@@ -11,6 +11,10 @@ using QuadNodes = std::array<Point, 4>;
 
 /// The nodes of a cell.
 HexNodes cell_nodes(const Mesh &mesh, int cell);
+/// Appends `v` to the orthonormal `basis` (Gram-Schmidt, twice for accuracy) unless it is
+/// within 1e-6 of their span; returns whether it was appended.
+bool append_orthonormal(std::vector<Point> &basis, Point v);
+
 /// The nodes of local face `face` of a cell, ordered for an outward normal.
 QuadNodes face_nodes(const Mesh &mesh, int cell, int face);
 

@@ -13,6 +13,11 @@ namespace kiln
 {
 using Point = std::array<double, 3>;
 
+inline double dot(const Point &a, const Point &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 /// Exodus II HEX8 numbering. Nodes 0-3 are the bottom face counterclockwise
 /// (seen from above), 4-7 the top face. Local faces in Exodus side order
 /// (side k+1 is face k), nodes ordered so that the right-hand rule gives the

@@ -20,32 +20,6 @@ namespace kiln
 {
 namespace internal
 {
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/// Appends `v` to the orthonormal `basis` (Gram-Schmidt, twice for accuracy) unless it is
-/// within 1e-6 of their span; returns whether it was appended.
-bool append_orthonormal(std::vector<Point> &basis, Point v)
-{
-  const double length = std::sqrt(dot(v, v));
-  for (int pass = 0; pass < 2; ++pass)
-    for (const Point &q : basis)
-    {
-      const double c = dot(v, q);
-      for (int d = 0; d < 3; ++d)
-        v[d] -= c * q[d];
-    }
-  const double rest = std::sqrt(dot(v, v));
-  if (rest <= 1e-6 * length)
-    return false;
-  for (double &x : v)
-    x /= rest;
-  basis.push_back(v);
-  return true;
-}
-
 Point read_vector(const Teuchos::ParameterList &p, const std::string &name,
                   const std::string &where)
 {
@@ -55,8 +29,6 @@ Point read_vector(const Teuchos::ParameterList &p, const std::string &name,
   return {v[0], v[1], v[2]};
 }
 } // namespace internal
-
-using internal::dot;
 
 Teuchos::ParameterList CoupledProblem::valid_thermal_parameters()
 {
@@ -333,7 +305,7 @@ void CoupledProblem::build_frames()
     NodeFrame frame;
     std::vector<Point> basis;
     for (const auto &[b, n] : directions[node])
-      if (basis.size() < 3 && internal::append_orthonormal(basis, n))
+      if (basis.size() < 3 && append_orthonormal(basis, n))
       {
         frame.bc[frame.n_constrained] = b;
         frame.n[frame.n_constrained] = n;
@@ -343,7 +315,7 @@ void CoupledProblem::build_frames()
     {
       Point e{};
       e[d] = 1.0;
-      internal::append_orthonormal(basis, e);
+      append_orthonormal(basis, e);
     }
     std::copy(basis.begin(), basis.end(), frame.q.begin());
     frame_of_node_[node] = static_cast<int>(frames_.size());
@@ -466,7 +438,6 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
   assembler_.gather(b, *b_overlap_);
   update_prescribed(time);
   history_.clear();
-  active_set_changes_ = 0;
   jacobians_ = 0;
   cycle_fallback_ = false;
 }
@@ -564,22 +535,32 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
   }
 }
 
-void CoupledProblem::add_local(const std::vector<int> &element_nodes, const LocalSystem &element)
+void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local)
 {
-  const std::vector<int> nodes =
-      pairs_.empty() ? element_nodes : assembler_.with_twins(element_nodes);
-  LocalSystem local(static_cast<int>(nodes.size()), F_);
+  if (!pairs_.empty())
   {
-    const auto &r = element.residual_values();
-    const auto &j = element.jacobian_values();
-    const int m = element.size();
-    for (int a = 0; a < m; ++a)
+    // A gap node's twin joins the system (its rows and columns start at zero).
+    const std::vector<int> extended_nodes = assembler_.with_twins(nodes);
+    if (extended_nodes.size() > nodes.size())
     {
-      local.residual(a % F_, a / F_) = r[a];
-      for (int b = 0; b < m; ++b)
-        local.jacobian(a % F_, a / F_, b % F_, b / F_) = j[static_cast<std::size_t>(a) * m + b];
+      LocalSystem extended(static_cast<int>(extended_nodes.size()), F_);
+      const int m = local.size();
+      for (int a = 0; a < m; ++a)
+      {
+        extended.residual(a % F_, a / F_) = local.residual_values()[a];
+        for (int b = 0; b < m; ++b)
+          extended.jacobian(a % F_, a / F_, b % F_, b / F_) =
+              local.jacobian_values()[static_cast<std::size_t>(a) * m + b];
+      }
+      transform_and_add(extended_nodes, extended);
+      return;
     }
   }
+  transform_and_add(nodes, local);
+}
+
+void CoupledProblem::transform_and_add(const std::vector<int> &nodes, LocalSystem &local)
+{
   const int n_local = local.n_nodes();
   if (u_slot_ >= 0)
     for (int i = 0; i < n_local; ++i)

@@ -105,8 +105,6 @@ public:
   /// Pairs in contact at the last evaluation (global, collective), and of all pairs.
   int n_active_pairs() const;
   int n_pairs() const { return static_cast<int>(pairs_.size()); }
-  /// Active-set changes between Jacobian evaluations since the last set_time_derivative.
-  int active_set_changes() const { return active_set_changes_; }
   bool has_contact() const { return !pairs_.empty(); }
 
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
@@ -168,10 +166,13 @@ private:
   void add_gap_faces();
   void add_constraint_rows();
 
-  /// Rotates the displacement rows and columns of framed nodes, mixes those of contact
-  /// pairs, zeroes the rows and columns of constrained unknowns in `local` (nodes[i]: the mesh
-  /// node of local node i), then adds it; adds the missing twins of gap nodes first.
-  void add_local(const std::vector<int> &nodes, const LocalSystem &local);
+  /// Rotates the displacement rows and columns of framed nodes, combines the rows of pairs
+  /// in contact (in the Jacobian pass), zeroes the rows and columns of constrained unknowns
+  /// of `local` (changed; nodes[i]: the mesh node of local node i), then adds it. With
+  /// contact, a copy extended by the missing twins of its gap nodes is used instead.
+  void add_local(const std::vector<int> &nodes, LocalSystem &local);
+  /// add_local() once the system holds every twin it needs.
+  void transform_and_add(const std::vector<int> &nodes, LocalSystem &local);
   void setup_contact(const Teuchos::ParameterList &contact, const std::string &where);
   /// From the assembled rows f (no contact): each pair's P, state and the contact rows of
   /// f; the frozen temperature rows.
@@ -239,7 +240,6 @@ private:
   std::vector<double> pressure_;    ///< P per pair (owned_pairs_) at the last evaluation
   ActiveSetHistory history_;        ///< active sets at this solve's Jacobians
   std::vector<char> last_jacobian_active_;
-  int active_set_changes_ = 0;
   int jacobians_ = 0;       ///< Jacobian evaluations since set_time_derivative
   int accepted_active_ = 0; ///< pairs in contact after the last accepted step
   Teuchos::RCP<Vector> f_work_;

@@ -17,8 +17,6 @@ namespace kiln
 {
 namespace internal
 {
-double dot(const Point &a, const Point &b);
-bool append_orthonormal(std::vector<Point> &basis, Point v);
 
 int sum_over_ranks(const Teuchos::Comm<int> &comm, const int local)
 {
@@ -51,7 +49,7 @@ void CoupledProblem::setup_contact(const Teuchos::ParameterList &contact, const 
       std::vector<Point> basis(frame.q.begin(), frame.q.begin() + frame.n_constrained);
       for (int l = 0; l < frame.n_constrained; ++l)
       {
-        const double cosine = internal::dot(frame.q[l], n);
+        const double cosine = dot(frame.q[l], n);
         const Point &x = mesh_.coordinates[node];
         KILN_CHECK_INPUT(std::abs(cosine) <= 1e-6, where,
                          "cannot hold: the condition \""
@@ -61,7 +59,7 @@ void CoupledProblem::setup_contact(const Teuchos::ParameterList &contact, const 
                              << " to the gap normal, which contact needs free. Apply it on faces "
                                 "perpendicular to the gap, or set \"Enabled\" = false");
       }
-      KILN_CHECK_INPUT(frame.n_constrained < 3 && internal::append_orthonormal(basis, n), where,
+      KILN_CHECK_INPUT(frame.n_constrained < 3 && append_orthonormal(basis, n), where,
                        "cannot hold: gap node " << node
                                                 << " has its displacement fully prescribed; "
                                                    "remove the condition there or set "
@@ -70,7 +68,7 @@ void CoupledProblem::setup_contact(const Teuchos::ParameterList &contact, const 
       {
         Point e{};
         e[d] = 1.0;
-        internal::append_orthonormal(basis, e);
+        append_orthonormal(basis, e);
       }
       std::copy(basis.begin(), basis.end(), frame.q.begin());
       (node == pair.a ? pair.slot_a : pair.slot_b) = frame.n_constrained;
@@ -215,7 +213,6 @@ void CoupledProblem::track_active_set()
   ++jacobians_;
   if (closed + opened > 0)
   {
-    ++active_set_changes_;
     if (!out_.is_null())
       *out_ << "  contact, Newton iteration " << jacobians_ << ": " << closed << " pairs closed, "
             << opened << " opened; " << n_active_pairs() << " of " << pairs_.size()

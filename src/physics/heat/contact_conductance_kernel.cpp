@@ -5,14 +5,6 @@
 
 namespace kiln
 {
-namespace
-{
-double dot3(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-} // namespace
-
 double ContactConductanceKernel::conductance(const double g, const double p) const
 {
   return p_.h0 * p_.length / (p_.length + std::max(g, 0.0)) +
@@ -32,7 +24,7 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
   for (int q = 0; q < fv.n_qpoints(); ++q)
     for (int d = 0; d < 3; ++d)
       n[d] += fv.normal(q)[d] * fv.JxW(q);
-  const double length = std::sqrt(dot3(n, n));
+  const double length = std::sqrt(dot(n, n));
   for (double &x : n)
     x /= length;
 
@@ -57,7 +49,7 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
         w += fe.shape(j, q) * fe.JxW(q) / volume;
       }
       const int l = cell[j];
-      const double nB = dot3(n, B);
+      const double nB = dot(n, B);
       Point d_u{};
       for (int d = 0; d < 3; ++d)
         d_u[d] = -0.5 * (p_.lambda * B[d] + 2.0 * p_.shear_modulus * nB * n[d]);
@@ -65,7 +57,7 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
       for (int d = 0; d < 3; ++d)
         dp_du[l][d] += d_u[d];
       dp_dT[l] += d_T;
-      p += dot3(d_u, u[l]) + d_T * (T[l] - p_.reference_temperature);
+      p += dot(d_u, u[l]) + d_T * (T[l] - p_.reference_temperature);
     }
   };
   add_cell(fe_a, cell_a);
@@ -82,7 +74,7 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
       for (int d = 0; d < 3; ++d)
         du[d] += fv.shape(j, q) * (u[4 + j][d] - u[j][d]);
     }
-    const double g = dot3(fv.normal(q), du);
+    const double g = dot(fv.normal(q), du);
     const double h = conductance(g, p);
     const double dh_dg = g > 0.0 ? -p_.h0 * p_.length / ((p_.length + g) * (p_.length + g)) : 0.0;
     const double JxW = fv.JxW(q);

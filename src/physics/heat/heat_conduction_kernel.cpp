@@ -6,14 +6,6 @@
 
 namespace kiln
 {
-namespace
-{
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-} // namespace
-
 HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel conductivity)
     : rho_c_(rho_c), conductivity_(std::move(conductivity))
 {

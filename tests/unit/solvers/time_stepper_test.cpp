@@ -167,6 +167,10 @@ TEST(TimeStepper, FailedNewtonSolveIsRepeatedWithASmallerStep)
   EXPECT_GT(r.stats.steps, r.stats.newton_failures);
   EXPECT_EQ(r.times, std::vector<double>{2.0});
   EXPECT_LT(r.error, 0.1);
+  // The step after one that followed a failure does not grow: each failure is followed by
+  // at least two accepted steps of 0.25 s (growing right away, every other attempt failed).
+  std::cout << r.stats.steps << " steps, " << r.stats.newton_failures << " Newton failures\n";
+  EXPECT_LE(2 * r.stats.newton_failures, r.stats.steps + 1);
 }
 
 TEST(TimeStepper, StepBelowMinimumIsARunError)
