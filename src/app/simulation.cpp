@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "base/log.hpp"
 #include "base/parameters.hpp"
+#include "io/field_output.hpp"
 #include "io/hdf5_xdmf_writer.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gap_splitter.hpp"
@@ -62,11 +63,11 @@ Teuchos::ParameterList Simulation::valid_parameters()
   p.sublist("Thermal", false,
             "heat conduction: initial state, boundary conditions, gap conductance; see "
             "doc/heat.md")
-      .setParameters(CoupledProblem::valid_thermal_parameters());
+      .setParameters(ThermalPhysics::valid_parameters());
   p.sublist("Mechanics", false,
             "quasi-static small-strain thermo-elasticity: body force, boundary conditions; see "
             "doc/mechanics.md")
-      .setParameters(CoupledProblem::valid_mechanics_parameters());
+      .setParameters(MechanicalPhysics::valid_parameters());
   p.sublist("Time Stepping", false, "implicit time integration; see TimeStepper")
       .setParameters(TimeStepper::valid_parameters());
   p.sublist("Solver", false, "Newton (NOX) and linear solver (Belos, MueLu); see doc/solvers.md")
@@ -160,6 +161,7 @@ void Simulation::run()
         *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
     writer_ = std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
                                                dofs_->owned_cells(), cell_rank_);
+    field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
   }
   if (layout_.displacement)
     equilibrate();
@@ -195,7 +197,7 @@ void Simulation::equilibrate()
   *out_ << "initial equilibrium: Newton " << r.newton_iterations << " (" << r.linear_iterations
         << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
         << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
-  problem_->step_accepted(0.0);
+  problem_->step_accepted(0.0, *solution_);
 }
 
 std::string Simulation::output_base() const
@@ -267,75 +269,8 @@ void Simulation::output(const double time, const int cycle, const double dt,
                         const NonlinearProblem::Vector &x)
 {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-  writer_->begin_step(time, cycle, dt);
-  if (layout_.temperature)
-    writer_->write_node_field("temperature", 1, problem_->node_temperatures(x));
-  std::vector<Point> u(dofs_->owned_nodes().size(), Point{});
-  if (layout_.displacement)
-  {
-    u = problem_->node_displacements(x);
-    std::vector<double> values;
-    values.reserve(3 * u.size());
-    for (const Point &v : u)
-      values.insert(values.end(), v.begin(), v.end());
-    writer_->write_node_field("displacement", 3, values);
-    const auto cells = problem_->cell_averages(x);
-    std::vector<double> stress, strain, thermal_strain;
-    for (const auto &c : cells)
-    {
-      stress.insert(stress.end(), c.stress.begin(), c.stress.end());
-      strain.insert(strain.end(), c.strain.begin(), c.strain.end());
-      thermal_strain.insert(thermal_strain.end(), c.thermal_strain.begin(), c.thermal_strain.end());
-    }
-    writer_->write_cell_field("stress", 6, stress);
-    writer_->write_cell_field("strain", 6, strain);
-    writer_->write_cell_field("thermal_strain", 6, thermal_strain);
-  }
-  writer_->write_node_field("gap_opening", 1, gap_opening(u));
-  if (problem_->has_contact())
-  {
-    const CoupledProblem::ContactOutput contact = problem_->contact_output(x);
-    std::vector<double> traction, active;
-    for (const int n : dofs_->owned_nodes())
-    {
-      traction.push_back(contact.traction[n]);
-      active.push_back(contact.active[n]);
-    }
-    writer_->write_node_field("gap_normal_traction", 1, traction);
-    writer_->write_node_field("contact_active", 1, active);
-  }
-  writer_->end_step();
+  field_output_->write(*writer_, time, cycle, dt, x);
   *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
-}
-
-std::vector<double> Simulation::gap_opening(const std::vector<Point> &u_owned) const
-{
-  // n . (x_b + u_b - x_a - u_a) at both nodes of each pair, NaN off the gap. The mesh is
-  // replicated; the displacement of every node is summed over the ranks.
-  const int n_nodes = mesh_.n_nodes();
-  std::vector<double> local(3 * static_cast<std::size_t>(n_nodes), 0.0), u(local.size(), 0.0);
-  if (layout_.displacement)
-  {
-    const auto &owned = dofs_->owned_nodes();
-    for (std::size_t i = 0; i < owned.size(); ++i)
-      for (int d = 0; d < 3; ++d)
-        local[3 * owned[i] + d] = u_owned[i][d];
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
-                       u.data());
-  }
-  std::vector<double> opening_of_node(n_nodes, std::numeric_limits<double>::quiet_NaN());
-  for (const auto &p : mesh_.gap_pairs)
-  {
-    double g = 0.0;
-    for (int d = 0; d < 3; ++d)
-      g += p.normal[d] * (mesh_.coordinates[p.node_b][d] + u[3 * p.node_b + d] -
-                          mesh_.coordinates[p.node_a][d] - u[3 * p.node_a + d]);
-    opening_of_node[p.node_a] = opening_of_node[p.node_b] = g;
-  }
-  std::vector<double> result;
-  for (const int n : dofs_->owned_nodes())
-    result.push_back(opening_of_node[n]);
-  return result;
 }
 
 void Simulation::write_mesh(const std::string &path) const

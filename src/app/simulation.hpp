@@ -16,6 +16,7 @@
 
 namespace kiln
 {
+class FieldOutput;
 class Hdf5XdmfWriter;
 class NewtonSolver;
 class CoupledProblem;
@@ -60,9 +61,6 @@ private:
   void output(double time, int cycle, double dt, const NonlinearProblem::Vector &x);
   /// Solves for the displacement at t = 0 with the temperature held at its initial value.
   void equilibrate();
-  /// n . (x_b + u_b - x_a - u_a) [m] at the owned nodes (NaN off the gap); u_owned: the
-  /// displacement of the owned nodes (ignored without displacement).
-  std::vector<double> gap_opening(const std::vector<Point> &u_owned) const;
 
   Teuchos::ParameterList params_;
   std::string input_path_;
@@ -77,6 +75,7 @@ private:
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
   std::unique_ptr<Hdf5XdmfWriter> writer_;
+  std::unique_ptr<FieldOutput> field_output_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
 };
 } // namespace kiln

@@ -4,15 +4,16 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 namespace kiln
 {
 namespace internal
 {
 /// The coupling blocks: a cell's 8 nodes, and a gap face's nodes (Assembler::gap_face_nodes);
-/// with contact, each block also holds the twins of its gap nodes. Every unknown of a block
-/// couples with every other one. Returns, for each node n with row[n] >= 0, the sorted
-/// nodes it couples with, at index row[n].
+/// with Couplings::twins, each block also holds the twins of its gap nodes. Every unknown of a
+/// block couples with every other one. Returns, for each node n with row[n] >= 0, the sorted nodes
+/// it couples with, at index row[n].
 std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const Mesh &mesh,
                                              const std::vector<int> &row,
                                              const std::vector<char> &use_cell,
@@ -29,7 +30,7 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
     if (use_cell[c])
       add_block(assembler.with_twins(
           std::vector<int>(mesh.connectivity[c].begin(), mesh.connectivity[c].end())));
-  for (std::size_t k = 0; k < mesh.gap_faces.size(); ++k)
+  for (std::size_t k = 0; k < use_face.size(); ++k)
     if (use_face[k])
       add_block(assembler.gap_face_nodes(static_cast<int>(k)));
   for (auto &c : couplings)
@@ -84,16 +85,38 @@ std::vector<int> node_rows(const Mesh &mesh, const std::vector<int> &nodes)
 }
 } // namespace internal
 
-Assembler::Assembler(const Mesh &mesh, const DofManager &dofs) : mesh_(mesh), dofs_(dofs)
+Couplings Couplings::gap_faces(const Mesh &mesh)
+{
+  Couplings c;
+  c.gap_face_nodes = [&mesh](const int k)
+  {
+    const GapFace &face = mesh.gap_faces[k];
+    std::vector<int> nodes;
+    for (int i = 0; i < 4; ++i)
+      nodes.push_back(mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]]);
+    nodes.insert(nodes.end(), face.node_b.begin(), face.node_b.end());
+    return nodes;
+  };
+  return c;
+}
+
+Assembler::Assembler(const Mesh &mesh, const DofManager &dofs)
+    : Assembler(mesh, dofs, Couplings::gap_faces(mesh))
+{
+}
+
+Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplings)
+    : mesh_(mesh), dofs_(dofs), couplings_(std::move(couplings))
 {
   const auto owned = dofs.owned_dof_map();
   const auto overlap = dofs.overlap_dof_map();
 
   // What this rank assembles: its cells and the gap faces of its side-a cells.
-  std::vector<char> my_cells(mesh.n_cells(), 0), my_faces(mesh.gap_faces.size(), 0);
+  const std::size_t n_faces = couplings_.gap_face_nodes ? mesh.gap_faces.size() : 0;
+  std::vector<char> my_cells(mesh.n_cells(), 0), my_faces(n_faces, 0);
   for (const int c : dofs.owned_cells())
     my_cells[c] = 1;
-  for (std::size_t k = 0; k < mesh.gap_faces.size(); ++k)
+  for (std::size_t k = 0; k < n_faces; ++k)
     my_faces[k] = my_cells[mesh.gap_faces[k].cell_a];
 
   // The overlap rows hold what this rank assembles; the column map is the overlap map, so
@@ -108,7 +131,7 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs) : mesh_(mesh), do
   // The owned rows get every block that touches them, from any rank: the mesh is
   // replicated, so each rank finds its rows' columns without communication.
   {
-    const std::vector<char> all_cells(mesh.n_cells(), 1), all_faces(mesh.gap_faces.size(), 1);
+    const std::vector<char> all_cells(mesh.n_cells(), 1), all_faces(n_faces, 1);
     const std::vector<int> &nodes = dofs.owned_nodes();
     const auto couplings =
         internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes), all_cells,
@@ -156,6 +179,7 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
   }
   if (assembling_jacobian_)
   {
+    KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
     const auto &values = local.jacobian_values();
     for (int i = 0; i < n; ++i)
     {
@@ -228,7 +252,7 @@ std::vector<LO> Assembler::node_lids(const std::vector<int> &nodes) const
 
 std::vector<int> Assembler::with_twins(std::vector<int> nodes) const
 {
-  if (!dofs_.layout().contact)
+  if (!couplings_.twins)
     return nodes;
   const std::size_t n = nodes.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -242,20 +266,8 @@ std::vector<int> Assembler::with_twins(std::vector<int> nodes) const
 
 std::vector<int> Assembler::gap_face_nodes(const int gap_face) const
 {
-  const GapFace &face = mesh_.gap_faces[gap_face];
-  std::vector<int> nodes;
-  for (int i = 0; i < 4; ++i)
-    nodes.push_back(mesh_.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]]);
-  nodes.insert(nodes.end(), face.node_b.begin(), face.node_b.end());
-  if (dofs_.layout().contact && dofs_.layout().displacement)
-  {
-    // The contact pressure of the gap conductance comes from both cells' stress.
-    for (const int c : {face.cell_a, face.cell_b})
-      for (const int n : mesh_.connectivity[c])
-        if (std::find(nodes.begin(), nodes.end(), n) == nodes.end())
-          nodes.push_back(n);
-  }
-  return with_twins(nodes);
+  KILN_ASSERT(couplings_.gap_face_nodes, "gap_face_nodes() without gap-face couplings");
+  return with_twins(couplings_.gap_face_nodes(gap_face));
 }
 
 std::vector<LO> Assembler::gap_face_lids(const int gap_face) const

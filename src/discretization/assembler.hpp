@@ -1,13 +1,12 @@
 #pragma once
 /// Gathers and scatters between the owned system and element-local systems.
 ///
-/// The sparsity graph is built once, on the overlap map: every unknown of a
-/// cell's nodes couples with every other, every unknown of a gap face's side-a
-/// nodes with those of its twins, and (with contact) every block also holds the
-/// twins of its gap nodes, and a gap face both of its cells. A rank assembles its own cells and the
-/// gap faces whose side-a cell it owns into an overlap residual and matrix,
-/// then exports them (ADD) to the owned residual and Jacobian (DEVELOPERS.md:
-/// overlap-to-owned Export).
+/// The sparsity graph is built once, on the overlap map, from coupling blocks: every unknown
+/// of a block's nodes couples with every other. The blocks are the cells and, as the physics
+/// says (Couplings), the nodes of each gap face's terms; with `twins`, every block also holds
+/// the twins of its gap nodes. A rank assembles its own cells and the gap faces whose side-a
+/// cell it owns into an overlap residual and matrix, then exports them (ADD) to the owned
+/// residual and Jacobian (overlap-to-owned Export).
 #include "discretization/dof_manager.hpp"
 #include "discretization/local_system.hpp"
 #include "mesh/mesh.hpp"
@@ -16,10 +15,23 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace kiln
 {
+/// Which nodes couple in the Jacobian beyond each cell's own.
+struct Couplings
+{
+  /// The nodes of gap face k's terms; by default its 4 side-a nodes (hex_face_nodes order)
+  /// and their 4 twins. An empty function: no gap-face terms.
+  std::function<std::vector<int>(int gap_face)> gap_face_nodes;
+  /// Every block that holds a gap node also holds its twin (contact mixes a pair's rows).
+  bool twins = false;
+  /// The default: the side-a nodes and the twins of every gap face, no twin closure.
+  static Couplings gap_faces(const Mesh &mesh);
+};
+
 class Assembler
 {
 public:
@@ -27,7 +39,9 @@ public:
   using Matrix = Tpetra::CrsMatrix<>;
   using Graph = Tpetra::CrsGraph<>;
 
+  /// Builds the graphs; `couplings` defaults to Couplings::gap_faces(mesh).
   Assembler(const Mesh &mesh, const DofManager &dofs);
+  Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplings);
 
   /// The owned Jacobian graph (fill-complete; domain and range: owned map).
   Teuchos::RCP<const Graph> owned_graph() const { return owned_graph_; }
@@ -49,12 +63,12 @@ public:
   std::vector<LO> cell_lids(int cell) const;
   /// Overlap local ids of the unknowns of a cell face's 4 nodes (hex_face_nodes order).
   std::vector<LO> face_lids(int cell, int face) const;
-  /// The nodes of a gap face's block: its 4 side-a nodes, their 4 twins, and (with contact
-  /// and displacement) the other nodes of its two cells, then with_twins().
+  /// The nodes of a gap face's block: Couplings::gap_face_nodes, then with_twins().
   std::vector<int> gap_face_nodes(int gap_face) const;
   /// Overlap local ids of gap_face_nodes() (node-major).
   std::vector<LO> gap_face_lids(int gap_face) const;
-  /// `nodes` followed by the twins of its gap nodes that it lacks (with contact; else as is).
+  /// `nodes` followed by the twins of its gap nodes that it lacks (with Couplings::twins;
+  /// else as is).
   std::vector<int> with_twins(std::vector<int> nodes) const;
   /// Overlap local ids of the unknowns of `nodes` (node-major, n_node_fields each).
   std::vector<LO> node_lids(const std::vector<int> &nodes) const;
@@ -64,6 +78,7 @@ public:
 private:
   const Mesh &mesh_;
   const DofManager &dofs_;
+  Couplings couplings_;
   Teuchos::RCP<Graph> overlap_graph_;
   Teuchos::RCP<Graph> owned_graph_;
   Teuchos::RCP<Matrix> overlap_matrix_;

@@ -61,7 +61,8 @@ public:
   /// displacement); the local error estimate of the time stepper counts the first only.
   /// Default: none (every unknown counts).
   virtual Teuchos::RCP<const Vector> time_error_mask() const { return Teuchos::null; }
-  /// Called once a step ending at `time` is accepted (collective). Default: nothing.
-  virtual void step_accepted(double /*time*/) {}
+  /// Called once a step ending at `time` is accepted with the state x (collective).
+  /// Default: nothing.
+  virtual void step_accepted(double /*time*/, const Vector & /*x*/) {}
 };
 } // namespace kiln

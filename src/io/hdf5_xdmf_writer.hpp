@@ -16,6 +16,7 @@
 /// cannot be created or written, kiln::InternalError for a misuse such as a field
 /// with the wrong number of values), and the destructor closes everything.
 
+#include "io/results_writer.hpp"
 #include "mesh/mesh.hpp"
 
 #include <mpi.h>
@@ -26,7 +27,7 @@
 
 namespace kiln
 {
-class Hdf5XdmfWriter
+class Hdf5XdmfWriter final : public ResultsWriter
 {
 public:
   /// Creates `base_path`.h5 and `base_path`.xmf (collective on `comm`) and
@@ -36,22 +37,22 @@ public:
   Hdf5XdmfWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                  const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
                  const std::vector<int> &cell_rank);
-  ~Hdf5XdmfWriter();
+  ~Hdf5XdmfWriter() override;
   Hdf5XdmfWriter(const Hdf5XdmfWriter &) = delete;
   Hdf5XdmfWriter &operator=(const Hdf5XdmfWriter &) = delete;
 
   /// Starts group /steps/NNNNNN (NNNNNN = number of steps written before).
-  void begin_step(double time, int cycle, double dt);
+  void begin_step(double time, int cycle, double dt) override;
   /// `values` holds n_components values per owned node, node after node. The name
   /// (letters, digits, '_', '-', '.') must be new in this step. In the XDMF file a
   /// field is a Scalar (1 component), Vector (3) or Matrix (others, e.g. Voigt tensors).
   void write_node_field(const std::string &name, int n_components,
-                        const std::vector<double> &values);
+                        const std::vector<double> &values) override;
   /// `values` holds n_components values per owned cell, cell after cell.
   void write_cell_field(const std::string &name, int n_components,
-                        const std::vector<double> &values);
+                        const std::vector<double> &values) override;
   /// Closes the step group, flushes the file and rewrites the XDMF file.
-  void end_step();
+  void end_step() override;
 
   std::string h5_path() const;
   std::string xdmf_path() const;

@@ -135,7 +135,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
             << r.newton_iterations << " (" << r.linear_iterations << " linear), |F| "
             << std::scientific << std::setprecision(3) << r.initial_residual_norm << " -> "
             << r.final_residual_norm << std::defaultfloat << "\n";
-      problem.step_accepted(t);
+      problem.step_accepted(t, x);
       output(t, static_cast<int>(next), 0.0, x);
     }
     return stats;
@@ -285,7 +285,7 @@ TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver
       if (error >= 0.0)
         line << ", error " << std::defaultfloat << std::setprecision(3) << error;
       *out_ << line.str() << "\n";
-      problem.step_accepted(t);
+      problem.step_accepted(t, x);
     }
     output(t, stats.steps, k, x);
   }

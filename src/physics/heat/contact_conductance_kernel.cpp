@@ -1,10 +1,28 @@
 #include "physics/heat/contact_conductance_kernel.hpp"
 
+#include "contact/gap_opening.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace kiln
 {
+std::vector<int> ContactConductanceKernel::nodes(const Mesh &mesh, const GapFace &face) const
+{
+  std::vector<int> result = InterfaceKernel::nodes(mesh, face);
+  for (const int c : {face.cell_a, face.cell_b})
+    for (const int n : mesh.connectivity[c])
+      if (std::find(result.begin(), result.end(), n) == result.end())
+        result.push_back(n);
+  return result;
+}
+
+void ContactConductanceKernel::evaluate(const InterfaceState &state, LocalSystem &local) const
+{
+  evaluate(state.fv, state.fe_a, state.fe_b, state.cell_a, state.cell_b, state.T, state.u,
+           state.slots.T, state.slots.u, local);
+}
+
 double ContactConductanceKernel::conductance(const double g, const double p) const
 {
   return p_.h0 * p_.length / (p_.length + std::max(g, 0.0)) +
@@ -67,14 +85,17 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
   for (int q = 0; q < fv.n_qpoints(); ++q)
   {
     double jump = 0.0;
-    Point du{}; // u_b - u_a
+    Point u_a{}, u_b{};
     for (int j = 0; j < 4; ++j)
     {
       jump += fv.shape(j, q) * (T[j] - T[4 + j]);
       for (int d = 0; d < 3; ++d)
-        du[d] += fv.shape(j, q) * (u[4 + j][d] - u[j][d]);
+      {
+        u_a[d] += fv.shape(j, q) * u[j][d];
+        u_b[d] += fv.shape(j, q) * u[4 + j][d];
+      }
     }
-    const double g = dot(fv.normal(q), du);
+    const double g = gap_opening(fv.normal(q), u_a, u_b);
     const double h = conductance(g, p);
     const double dh_dg = g > 0.0 ? -p_.h0 * p_.length / ((p_.length + g) * (p_.length + g)) : 0.0;
     const double JxW = fv.JxW(q);
@@ -83,6 +104,8 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
       const double phi = fv.shape(i, q) * JxW;
       local.residual(T_slot, i) += h * jump * phi;
       local.residual(T_slot, 4 + i) -= h * jump * phi;
+      if (!local.has_jacobian())
+        continue;
       // d/dT of the jump.
       for (int j = 0; j < 4; ++j)
       {

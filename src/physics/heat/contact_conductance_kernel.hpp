@@ -3,6 +3,7 @@
 #include "discretization/element_values.hpp"
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/kernel.hpp"
 
 #include <array>
 #include <vector>
@@ -23,7 +24,7 @@ namespace kiln
 /// Both are continuous at closure (g = 0, p = 0: h = h0), and everything is linear in the
 /// nodal u and T but for the max() kinks, so the Jacobian is exact (generalized
 /// derivative 0 at the kinks): dR/dT of the jump and of p, dR/du of g and of p.
-class ContactConductanceKernel final
+class ContactConductanceKernel final : public InterfaceKernel
 {
 public:
   struct Parameters
@@ -45,6 +46,13 @@ public:
                 const std::array<int, 8> &cell_a, const std::array<int, 8> &cell_b,
                 const std::vector<double> &T, const std::vector<Point> &u, int T_slot, int u_slot,
                 LocalSystem &local) const;
+
+  /// The 4 side-a face nodes, their twins, then the other nodes of both cells (p depends on
+  /// them).
+  std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const override;
+  bool needs_cells() const override { return true; }
+  /// The same from a gap face's state.
+  void evaluate(const InterfaceState &state, LocalSystem &local) const override;
 
   /// h at one point [W/(m^2 K)] for an opening g [m] and a pressure p [Pa].
   double conductance(double g, double p) const;

@@ -17,6 +17,8 @@ void ConvectionKernel::evaluate(const FaceValues &fv, const std::array<double, 4
     for (int i = 0; i < fv.n_shape(); ++i)
     {
       local.residual(T_field, i) += h_ * (T - T_ambient) * fv.shape(i, q) * JxW;
+      if (!local.has_jacobian())
+        continue;
       for (int j = 0; j < fv.n_shape(); ++j)
         local.jacobian(T_field, i, T_field, j) += h_ * fv.shape(j, q) * fv.shape(i, q) * JxW;
     }

@@ -19,6 +19,8 @@ void GapConductanceKernel::evaluate(const FaceValues &fv, const std::array<doubl
       const double flux_i = h_ * jump * fv.shape(i, q) * JxW;
       local.residual(T_field, i) += flux_i;
       local.residual(T_field, 4 + i) -= flux_i;
+      if (!local.has_jacobian())
+        continue;
       for (int j = 0; j < 4; ++j)
       {
         const double m_ij = h_ * fv.shape(j, q) * fv.shape(i, q) * JxW;
@@ -29,5 +31,16 @@ void GapConductanceKernel::evaluate(const FaceValues &fv, const std::array<doubl
       }
     }
   }
+}
+
+void GapConductanceKernel::evaluate(const InterfaceState &state, LocalSystem &local) const
+{
+  std::array<double, 4> T_a{}, T_b{};
+  for (int i = 0; i < 4; ++i)
+  {
+    T_a[i] = state.T[i];
+    T_b[i] = state.T[4 + i];
+  }
+  evaluate(state.fv, T_a, T_b, local);
 }
 } // namespace kiln

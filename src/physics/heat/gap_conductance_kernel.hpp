@@ -2,6 +2,7 @@
 /// Heat transfer across the split gap, between a side-a face and its twin face.
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/kernel.hpp"
 
 #include <array>
 
@@ -18,7 +19,7 @@ namespace kiln
 /// Equal nodal temperatures on both sides give [T] = 0 exactly at every quadrature
 /// point, hence exactly zero flux; the two residuals always sum to zero (no heat is
 /// made or lost at the gap).
-class GapConductanceKernel final
+class GapConductanceKernel final : public InterfaceKernel
 {
 public:
   /// h [W/(m^2 K)].
@@ -28,6 +29,8 @@ public:
   /// [W/K] to an 8-node local system.
   void evaluate(const FaceValues &fv, const std::array<double, 4> &T_a,
                 const std::array<double, 4> &T_b, LocalSystem &local) const;
+  /// The same from a gap face's state (local nodes 0-3 on side a, 4-7 their twins).
+  void evaluate(const InterfaceState &state, LocalSystem &local) const override;
 
 private:
   double h_;

@@ -36,6 +36,8 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
       const double phi_i = fe.shape(i, q);
       const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
       local.residual(T_field, i) += (rho_c_ * T_dot * phi_i + k * grad_T_dot_grad_phi_i) * JxW;
+      if (!local.has_jacobian())
+        continue;
       for (int j = 0; j < fe.n_shape(); ++j)
         local.jacobian(T_field, i, T_field, j) +=
             (rho_c_ * dTdot_dT * fe.shape(j, q) * phi_i + k * dot(fe.grad(j, q), fe.grad(i, q)) +
@@ -43,5 +45,10 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
             JxW;
     }
   }
+}
+
+void HeatConductionKernel::evaluate(const CellState &state, LocalSystem &local) const
+{
+  evaluate(state.fe, state.T, state.T_dot, state.dTdot_dT, local);
 }
 } // namespace kiln

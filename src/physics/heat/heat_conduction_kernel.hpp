@@ -2,6 +2,7 @@
 /// The volume kernel of transient heat conduction on one Q1 cell.
 #include "discretization/element_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/kernel.hpp"
 #include "physics/materials/conductivity_model.hpp"
 
 #include <array>
@@ -17,7 +18,7 @@ namespace kiln
 /// the boundary terms are the BC kernels' (none: insulated). Only the temperature rows
 /// and columns (Field::T) of the local system are touched, so the kernel serves the
 /// thermal system (1 unknown per node) and the coupled one (4 per node) alike.
-class HeatConductionKernel final
+class HeatConductionKernel final : public CellKernel
 {
 public:
   using NodalValues = std::array<double, n_hex_nodes>;
@@ -29,6 +30,10 @@ public:
   /// T_dot [K/s] at the nodes, dTdot_dT = a [1/s].
   void evaluate(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
                 double dTdot_dT, LocalSystem &local) const;
+  /// The same from a cell's state.
+  void evaluate(const CellState &state, LocalSystem &local) const override;
+  /// k(T).
+  const ConductivityModel &conductivity() const { return conductivity_; }
 
 private:
   double rho_c_;

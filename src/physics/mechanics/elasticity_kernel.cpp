@@ -86,10 +86,15 @@ void add_to_voigt(const double w, const Tensor &t, Voigt &v)
 } // namespace
 
 ElasticityKernel::ElasticityKernel(const double lambda, const double G, const double alpha,
-                                   const double T_ref)
+                                   const double T_ref, const Point &body_force)
     : lambda_(lambda), G_(G), alpha_(alpha), T_ref_(T_ref),
-      thermal_modulus_((3.0 * lambda + 2.0 * G) * alpha)
+      thermal_modulus_((3.0 * lambda + 2.0 * G) * alpha), body_force_(body_force)
 {
+}
+
+void ElasticityKernel::evaluate(const CellState &state, LocalSystem &local) const
+{
+  evaluate(state.fe, state.u, state.T, body_force_, state.slots.u, state.slots.T, local);
 }
 
 void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacements &u,
@@ -102,7 +107,8 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
   KILN_ASSERT(T_slot < local.n_fields() && (T_slot < u_slot || T_slot >= u_slot + 3),
               "T_slot " << T_slot << " out of range or overlapping u_slot " << u_slot);
   constexpr int n = n_hex_nodes;
-  const bool coupled = T_slot >= 0;
+  const bool jacobian = local.has_jacobian();
+  const bool coupled = T_slot >= 0 && jacobian;
 
   // Accumulated over the Gauss points, scattered once at the end:
   //   residual[i][d]  = R_{i,d}
@@ -130,7 +136,7 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
       for (int d = 0; d < 3; ++d)
         residual[i][d] += stress[d][0] * g_i[0] + stress[d][1] * g_i[1] + stress[d][2] * g_i[2] -
                           body_force[d] * phi_i_JxW;
-      for (int j = i; j < n; ++j)
+      for (int j = i; j < n && jacobian; ++j)
       {
         const Point &g_j = fe.grad(j, q);
         Tensor &gg_ij = gg[i][j];
@@ -149,6 +155,8 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
     for (int d = 0; d < 3; ++d)
       local.residual(u_slot + d, i) += residual[i][d];
 
+  if (!jacobian)
+    return;
   // K_{(i,d),(j,e)} = λ gg_ij[d][e] + G gg_ij[e][d] + δ_de G tr(gg_ij), symmetric under
   // (i,d) <-> (j,e): the blocks j > i also fill their mirror images.
   for (int i = 0; i < n; ++i)

@@ -2,6 +2,7 @@
 /// The volume kernel of small-strain isotropic linear thermo-elasticity on one Q1 cell.
 #include "discretization/element_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/kernel.hpp"
 
 #include <array>
 
@@ -24,7 +25,7 @@ using Voigt = std::array<double, 6>;
 /// (fields u_slot .. u_slot + 2) are touched, and the temperature columns (field T_slot) only
 /// when T_slot >= 0, so the kernel serves the mechanical system (3 unknowns per node, T given)
 /// and the coupled one (4 per node) alike.
-class ElasticityKernel final
+class ElasticityKernel final : public CellKernel
 {
 public:
   /// u at the 8 nodes [m].
@@ -32,14 +33,18 @@ public:
   /// T at the 8 nodes [K].
   using NodalValues = std::array<double, n_hex_nodes>;
 
-  /// lambda, G [Pa]; alpha [1/K]; T_ref [K] (the temperature of zero thermal strain).
-  ElasticityKernel(double lambda, double G, double alpha, double T_ref);
+  /// lambda, G [Pa]; alpha [1/K]; T_ref [K] (the temperature of zero thermal strain); the
+  /// body force b [N/m^3] of evaluate(CellState).
+  ElasticityKernel(double lambda, double G, double alpha, double T_ref,
+                   const Point &body_force = Point{});
 
   /// Adds to `local` (8 nodes) the residual [N] at local field index u_slot + d (d = 0, 1, 2)
   /// of local node i, the Jacobian d/du_{j,e} [N/m] (field u_slot + e) and, if T_slot >= 0,
   /// d/dT_j [N/K] (field T_slot). body_force b [N/m^3] is constant over the cell.
   void evaluate(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
                 const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
+  /// The same from a cell's state, with the body force given at construction.
+  void evaluate(const CellState &state, LocalSystem &local) const override;
 
   /// Volume averages over the cell: stress [Pa], total strain ε [-] and thermal strain
   /// α (T − T_ref) I [-].
@@ -69,5 +74,6 @@ private:
   double T_ref_;
   /// β = (3λ + 2G) α [Pa/K]: the stress of a blocked unit temperature rise.
   double thermal_modulus_;
+  Point body_force_;
 };
 } // namespace kiln

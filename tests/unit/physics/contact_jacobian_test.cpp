@@ -276,10 +276,9 @@ struct Fixture
                                              const Teuchos::ParameterList &mechanics) const
   {
     const Teuchos::ParameterList t = kiln::validated(
-        thermal, kiln::CoupledProblem::valid_thermal_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList m =
-        kiln::validated(mechanics, kiln::CoupledProblem::valid_mechanics_parameters(), "test.xml",
-                        "Kiln/Mechanics");
+        thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+    const Teuchos::ParameterList m = kiln::validated(
+        mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
     return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, mat, t, m, "test.xml: Kiln"));
   }
 
@@ -413,7 +412,7 @@ struct Fixture
       s.min_abs_P = std::min(s.min_abs_P, std::abs(P));
       s.min_abs_cg = std::min(s.min_abs_cg, std::abs(c * g));
     }
-    EXPECT_EQ(s.n_active, min_problem.n_active_pairs());
+    EXPECT_EQ(s.n_active, min_problem.n_active_pairs(x));
     return s;
   }
 
@@ -497,7 +496,7 @@ JacobianCheck check_jacobian(const Fixture &s, kiln::CoupledProblem &problem, Ve
   Vector f(map), f_plus(map), f_minus(map);
   Matrix J(problem.jacobian_graph());
   problem.evaluate(x, &f, &J);
-  EXPECT_EQ(problem.n_active_pairs(), n_active) << name;
+  EXPECT_EQ(problem.n_active_pairs(x), n_active) << name;
   const Dense rows = dense_rows(J, n_global);
 
   const auto start = std::chrono::steady_clock::now();
@@ -511,11 +510,11 @@ JacobianCheck check_jacobian(const Fixture &s, kiln::CoupledProblem &problem, Ve
     if (mine)
       x.replaceLocalValue(lj, x_j + eps);
     problem.evaluate(x, &f_plus, nullptr);
-    result.count_changes += problem.n_active_pairs() != n_active;
+    result.count_changes += problem.n_active_pairs(x) != n_active;
     if (mine)
       x.replaceLocalValue(lj, x_j - eps);
     problem.evaluate(x, &f_minus, nullptr);
-    result.count_changes += problem.n_active_pairs() != n_active;
+    result.count_changes += problem.n_active_pairs(x) != n_active;
     if (mine)
       x.replaceLocalValue(lj, x_j);
     const auto r_plus = f_plus.getData(), r_minus = f_minus.getData();

@@ -163,10 +163,9 @@ struct Fixture
                                              const Teuchos::ParameterList &mechanics) const
   {
     const Teuchos::ParameterList t = kiln::validated(
-        thermal, kiln::CoupledProblem::valid_thermal_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList m =
-        kiln::validated(mechanics, kiln::CoupledProblem::valid_mechanics_parameters(), "test.xml",
-                        "Kiln/Mechanics");
+        thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+    const Teuchos::ParameterList m = kiln::validated(
+        mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
     return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, mat, t, m, "test.xml: Kiln"));
   }
   /// 1 for the nodes of the faces of side set `id`.

@@ -15,7 +15,9 @@
 #include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/metis_partitioner.hpp"
-#include "physics/heat/thermal_boundary_condition.hpp"
+#include "physics/heat/convection_condition.hpp"
+#include "physics/heat/heat_flux_condition.hpp"
+#include "physics/heat/thermal_conditions.hpp"
 #include "physics/materials/material.hpp"
 
 #include <Teuchos_Array.hpp>
@@ -146,11 +148,11 @@ struct Fixture
 
   std::unique_ptr<kiln::CoupledProblem> problem(const Teuchos::ParameterList &user) const
   {
-    const Teuchos::ParameterList p = kiln::validated(
-        user, kiln::CoupledProblem::valid_thermal_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList none = kiln::validated(
-        Teuchos::ParameterList(), kiln::CoupledProblem::valid_mechanics_parameters(), "test.xml",
-        "Kiln/Mechanics");
+    const Teuchos::ParameterList p =
+        kiln::validated(user, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+    const Teuchos::ParameterList none =
+        kiln::validated(Teuchos::ParameterList(), kiln::MechanicalPhysics::valid_parameters(),
+                        "test.xml", "Kiln/Mechanics");
     return std::make_unique<kiln::CoupledProblem>(mesh, dofs, material, p, none, "test.xml: Kiln");
   }
   bool is_twin(const int node) const { return mesh.parent_node[node] != node; }
@@ -439,12 +441,19 @@ namespace
 {
 const std::string bc_where = "test.xml: Kiln/Thermal/Boundary Conditions";
 
-kiln::ThermalBoundaryCondition make_bc(const Mesh &mesh, const Teuchos::ParameterList &user)
+/// The condition of a "Boundary Conditions" list holding `user` as sublist "bad".
+std::unique_ptr<kiln::BoundaryCondition> make_bc(const Mesh &mesh,
+                                                 const Teuchos::ParameterList &user)
 {
-  const Teuchos::ParameterList p =
-      kiln::validated(user, kiln::ThermalBoundaryCondition::valid_parameters(), "test.xml",
-                      "Kiln/Thermal/Boundary Conditions/bad");
-  return kiln::ThermalBoundaryCondition("bad", p, mesh, bc_where);
+  Teuchos::ParameterList thermal;
+  thermal.sublist("Boundary Conditions").set("bad", user);
+  const Teuchos::ParameterList p = kiln::validated(
+      thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  auto conditions =
+      kiln::read_boundary_conditions(kiln::thermal_conditions(), p.sublist("Boundary Conditions"),
+                                     mesh, kiln::InteriorFaceCheck(mesh), bc_where,
+                                     "heat crosses it through Kiln/Thermal/\"Gap Conductance\"");
+  return std::move(conditions.front());
 }
 
 std::string bc_error(const Mesh &mesh, const Teuchos::ParameterList &user)
@@ -475,17 +484,19 @@ TEST(ThermalBoundaryCondition, ValidConditionsAreRead)
   const Mesh mesh = split_box();
   Teuchos::ParameterList thermal;
   add_flux_bcs(thermal);
-  const kiln::ThermalBoundaryCondition convection =
+  const auto read_convection =
       make_bc(mesh, thermal.sublist("Boundary Conditions").sublist("cooled end"));
-  EXPECT_EQ(convection.type(), kiln::ThermalBoundaryCondition::Type::convection);
-  EXPECT_EQ(convection.side_sets(), std::vector<int>{2});
-  EXPECT_EQ(convection.coefficient(), h_convection);
-  EXPECT_NEAR(convection.value(t_now), T_ambient, 1e-12);
-  const kiln::ThermalBoundaryCondition flux =
+  const auto *convection = dynamic_cast<const kiln::ConvectionCondition *>(read_convection.get());
+  ASSERT_NE(convection, nullptr);
+  EXPECT_EQ(convection->side_sets(), std::vector<int>{2});
+  EXPECT_EQ(convection->coefficient(), h_convection);
+  EXPECT_NEAR(convection->ambient_temperature(t_now), T_ambient, 1e-12);
+  const auto read_flux =
       make_bc(mesh, thermal.sublist("Boundary Conditions").sublist("heated sides"));
-  EXPECT_EQ(flux.type(), kiln::ThermalBoundaryCondition::Type::heat_flux);
-  EXPECT_EQ(flux.side_sets(), (std::vector<int>{3, 5}));
-  EXPECT_EQ(flux.value(t_now), q_flux);
+  const auto *flux = dynamic_cast<const kiln::HeatFluxCondition *>(read_flux.get());
+  ASSERT_NE(flux, nullptr);
+  EXPECT_EQ(flux->side_sets(), (std::vector<int>{3, 5}));
+  EXPECT_EQ(flux->flux(t_now), q_flux);
 }
 
 TEST(ThermalBoundaryCondition, InputErrors)

@@ -2,7 +2,7 @@
 // an unchanged set, or a new one, is not. Each rank holds its own part of the set, and a
 // cycle needs the same set on every rank.
 // KILN_TEST_NP: 1 2
-#include "physics/active_set_history.hpp"
+#include "contact/active_set_history.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>

@@ -1,0 +1,47 @@
+#pragma once
+/// Watches the contact active set through the Newton iterations and the steps: log lines,
+/// cycles, and the fallback to Fischer-Burmeister after a cycle.
+#include "contact/active_set_history.hpp"
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_FancyOStream.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <vector>
+
+namespace kiln
+{
+/// Each rank passes the flags of the pairs it owns (1: in contact). Collective.
+class ActiveSetMonitor
+{
+public:
+  /// `n_pairs`: all pairs; `n_owned`: this rank's.
+  ActiveSetMonitor(Teuchos::RCP<const Teuchos::Comm<int>> comm, int n_pairs, int n_owned);
+
+  /// Log lines go to `out` (nothing is logged without one).
+  void set_log(Teuchos::RCP<Teuchos::FancyOStream> out) { out_ = std::move(out); }
+  /// A new step's Newton solve begins: no history, no fallback.
+  void start_step();
+  /// The active set at a Jacobian evaluation: logs what changed since the last one; a set of
+  /// an earlier iteration coming back (a cycle) switches the rest of the step to the
+  /// fallback.
+  void jacobian_evaluated(const std::vector<char> &active);
+  /// Whether this step has fallen back to Fischer-Burmeister after a cycle.
+  bool fallback() const { return fallback_; }
+  /// A step ending at `time` is accepted with this active set: logs the gap closing or
+  /// opening.
+  void step_accepted(double time, const std::vector<char> &active);
+  /// Pairs in contact, over all ranks.
+  int count(const std::vector<char> &active) const;
+
+private:
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  Teuchos::RCP<Teuchos::FancyOStream> out_;
+  int n_pairs_;
+  ActiveSetHistory history_; ///< the sets at this step's Jacobians
+  std::vector<char> last_;   ///< the set at the last Jacobian (or accepted step)
+  int jacobians_ = 0;        ///< Jacobian evaluations in this step
+  int accepted_active_ = 0;  ///< pairs in contact after the last accepted step
+  bool fallback_ = false;
+};
+} // namespace kiln

@@ -1,0 +1,89 @@
+#include "io/field_output.hpp"
+
+#include "contact/gap_opening.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <limits>
+
+namespace kiln
+{
+FieldOutput::FieldOutput(CoupledProblem &problem, const Mesh &mesh, const DofManager &dofs)
+    : problem_(problem), mesh_(mesh), dofs_(dofs)
+{
+}
+
+void FieldOutput::write(ResultsWriter &writer, const double time, const int cycle, const double dt,
+                        const Vector &x)
+{
+  const DofLayout &layout = dofs_.layout();
+  writer.begin_step(time, cycle, dt);
+  if (layout.temperature)
+    writer.write_node_field("temperature", 1, problem_.node_temperatures(x));
+  std::vector<Point> u(dofs_.owned_nodes().size(), Point{});
+  if (layout.displacement)
+  {
+    u = problem_.node_displacements(x);
+    std::vector<double> values;
+    values.reserve(3 * u.size());
+    for (const Point &v : u)
+      values.insert(values.end(), v.begin(), v.end());
+    writer.write_node_field("displacement", 3, values);
+    std::vector<double> stress, strain, thermal_strain;
+    for (const auto &c : problem_.cell_averages(x))
+    {
+      stress.insert(stress.end(), c.stress.begin(), c.stress.end());
+      strain.insert(strain.end(), c.strain.begin(), c.strain.end());
+      thermal_strain.insert(thermal_strain.end(), c.thermal_strain.begin(), c.thermal_strain.end());
+    }
+    writer.write_cell_field("stress", 6, stress);
+    writer.write_cell_field("strain", 6, strain);
+    writer.write_cell_field("thermal_strain", 6, thermal_strain);
+  }
+  writer.write_node_field("gap_opening", 1, gap_opening(u));
+  if (problem_.has_contact())
+  {
+    const CoupledProblem::ContactOutput contact = problem_.contact_output(x);
+    std::vector<double> traction, active;
+    for (const int n : dofs_.owned_nodes())
+    {
+      traction.push_back(contact.traction[n]);
+      active.push_back(contact.active[n]);
+    }
+    writer.write_node_field("gap_normal_traction", 1, traction);
+    writer.write_node_field("contact_active", 1, active);
+  }
+  writer.end_step();
+}
+
+std::vector<double> FieldOutput::gap_opening(const std::vector<Point> &u_owned) const
+{
+  // The mesh is replicated; the displacement of every node is summed over the ranks.
+  const int n_nodes = mesh_.n_nodes();
+  std::vector<double> local(3 * static_cast<std::size_t>(n_nodes), 0.0), u(local.size(), 0.0);
+  if (dofs_.layout().displacement)
+  {
+    const auto &owned = dofs_.owned_nodes();
+    for (std::size_t i = 0; i < owned.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        local[3 * owned[i] + d] = u_owned[i][d];
+    Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), u.data());
+  }
+  const auto displacement = [&](const int n) {
+    return Point{u[3 * n], u[3 * n + 1], u[3 * n + 2]};
+  };
+  std::vector<double> opening_of_node(n_nodes, std::numeric_limits<double>::quiet_NaN());
+  // The width of the mesh's gap (zero where it was split) plus the opening by the
+  // displacement: the displacements are subtracted before they meet the coordinates, which
+  // would round them off.
+  for (const auto &p : mesh_.gap_pairs)
+    opening_of_node[p.node_a] = opening_of_node[p.node_b] =
+        kiln::gap_opening(p.normal, mesh_.coordinates[p.node_a], mesh_.coordinates[p.node_b]) +
+        kiln::gap_opening(p.normal, displacement(p.node_a), displacement(p.node_b));
+  std::vector<double> result;
+  for (const int n : dofs_.owned_nodes())
+    result.push_back(opening_of_node[n]);
+  return result;
+}
+} // namespace kiln

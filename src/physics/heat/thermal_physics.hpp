@@ -1,0 +1,49 @@
+#pragma once
+/// The "Thermal" block: heat conduction's kernels and conditions.
+#include "discretization/dof_manager.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/boundary_condition.hpp"
+#include "physics/heat/heat_conduction_kernel.hpp"
+#include "physics/kernel.hpp"
+#include "physics/materials/material.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// Transient heat conduction (doc/heat.md): the conduction kernel of every cell, the
+/// conductance across the gap (constant or following the contact state), the thermal
+/// boundary conditions (thermal_conditions()) and the initial temperature.
+class ThermalPhysics
+{
+public:
+  /// The "Thermal" block: Initial Temperature, Gap Conductance, Boundary Conditions.
+  static Teuchos::ParameterList valid_parameters();
+
+  /// `thermal` has been validated against valid_parameters(); `where` names it ("in.xml:
+  /// Kiln/Thermal"). Checks the block against the mesh and the layout.
+  ThermalPhysics(const Teuchos::ParameterList &thermal, const Material &material, const Mesh &mesh,
+                 const DofLayout &layout, const InteriorFaceCheck &interior,
+                 const std::string &where);
+
+  /// The initial temperature [K].
+  double initial_temperature() const { return initial_temperature_; }
+  /// k at the initial temperature [W/(m K)], the scale of the heat rows.
+  double conductivity_scale() const;
+  const HeatConductionKernel &conduction() const { return conduction_; }
+  /// The terms across the gap, or nullptr if the mesh has none.
+  const InterfaceKernel *gap_kernel() const { return gap_.get(); }
+  const std::vector<std::unique_ptr<BoundaryCondition>> &conditions() const { return conditions_; }
+
+private:
+  double initial_temperature_;
+  HeatConductionKernel conduction_;
+  std::unique_ptr<InterfaceKernel> gap_;
+  std::vector<std::unique_ptr<BoundaryCondition>> conditions_;
+};
+} // namespace kiln

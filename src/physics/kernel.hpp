@@ -1,0 +1,88 @@
+#pragma once
+/// The interfaces of the kernels. A kernel turns the state of one cell, boundary face or gap
+/// face into local residual and Jacobian terms; its class comment states the weak form and
+/// the Jacobian. It never touches Tpetra, MPI or the mesh: CoupledProblem gathers the state,
+/// asks every kernel of a kind for the same LocalSystem and distributes the result. A system
+/// without a Jacobian (LocalSystem::has_jacobian) asks for the residual alone.
+#include "discretization/element_values.hpp"
+#include "discretization/face_values.hpp"
+#include "discretization/local_system.hpp"
+#include "mesh/mesh.hpp"
+
+#include <array>
+#include <vector>
+
+namespace kiln
+{
+/// Where a node's unknowns are in a LocalSystem: field slot T_slot (temperature) and u_slot ..
+/// u_slot + 2 (displacement); -1 for a field the layout lacks.
+struct FieldSlots
+{
+  int T = -1;
+  int u = -1;
+};
+
+/// One cell: its shape functions and the nodal fields (constrained unknowns at their
+/// prescribed values), 8 local nodes in HEX8 order.
+struct CellState
+{
+  const ElementValues &fe;
+  const std::array<double, n_hex_nodes> &T;     ///< [K] (T_ref without a temperature)
+  const std::array<double, n_hex_nodes> &T_dot; ///< [K/s]
+  const std::array<Point, n_hex_nodes> &u;      ///< [m] (0 without a displacement)
+  double dTdot_dT;                              ///< a in Tdot = a T + b [1/s]
+  double time;                                  ///< [s]
+  FieldSlots slots;
+};
+
+class CellKernel
+{
+public:
+  virtual ~CellKernel() = default;
+  virtual void evaluate(const CellState &state, LocalSystem &local) const = 0;
+};
+
+/// One boundary face: 4 local nodes in hex_face_nodes order.
+struct FaceState
+{
+  const FaceValues &fv;
+  const std::array<double, 4> &T; ///< [K]
+  const std::array<Point, 4> &u;  ///< [m]
+  double time;                    ///< [s]
+  FieldSlots slots;
+};
+
+class FaceKernel
+{
+public:
+  virtual ~FaceKernel() = default;
+  virtual void evaluate(const FaceState &state, LocalSystem &local) const = 0;
+};
+
+/// One gap face: the side-a face, its two cells and the local nodes the kernel asked for
+/// (InterfaceKernel::nodes: the 4 side-a face nodes, their 4 twins, then any others).
+struct InterfaceState
+{
+  const FaceValues &fv;      ///< the side-a face
+  const ElementValues &fe_a; ///< the side-a cell (set only if the kernel needs_cells())
+  const ElementValues &fe_b; ///< the side-b cell (likewise)
+  const std::array<int, n_hex_nodes> &cell_a; ///< the local node of each node of cell a
+  const std::array<int, n_hex_nodes> &cell_b; ///< likewise for cell b (-1 if absent)
+  const std::vector<double> &T;               ///< per local node [K]
+  const std::vector<Point> &u;                ///< per local node [m]
+  double time;                                ///< [s]
+  FieldSlots slots;
+};
+
+class InterfaceKernel
+{
+public:
+  virtual ~InterfaceKernel() = default;
+  /// The nodes of the terms on a gap face: its 4 side-a nodes (hex_face_nodes order), their
+  /// 4 twins, then any other nodes the terms depend on.
+  virtual std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const;
+  /// Whether evaluate() reads the cells' shape functions (InterfaceState::fe_a, fe_b).
+  virtual bool needs_cells() const { return false; }
+  virtual void evaluate(const InterfaceState &state, LocalSystem &local) const = 0;
+};
+} // namespace kiln

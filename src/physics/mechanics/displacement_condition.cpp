@@ -1,0 +1,73 @@
+#include "physics/mechanics/displacement_condition.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include <algorithm>
+
+namespace kiln
+{
+std::string DisplacementCondition::description()
+{
+  return "the listed Components of u = Displacement(t)";
+}
+
+Teuchos::ParameterList DisplacementCondition::valid_parameters()
+{
+  Teuchos::ParameterList p;
+  p.set("Components", Teuchos::Array<std::string>(),
+        "for Type \"Displacement\", where it is required: the components set, any of x, y, z "
+        "[-]");
+  p.sublist("Displacement", false,
+            "for Type \"Displacement\": the value(t) of each listed component (default 0) [m]; "
+            "see TimeFunction")
+      .setParameters(TimeFunction::valid_parameters());
+  return p;
+}
+
+DisplacementCondition::DisplacementCondition(const BoundaryConditionInput &input)
+    : BoundaryCondition(input),
+      displacement_(input.params.sublist("Displacement"), input.path + "/Displacement")
+{
+  const std::string where = input.path + "/\"Components\"";
+  const auto &names = input.params.get<Teuchos::Array<std::string>>("Components");
+  KILN_CHECK_INPUT(!names.empty(), where,
+                   "is required for Type \"Displacement\": list the components to set, e.g. "
+                   "<Parameter name=\"Components\" type=\"Array(string)\" value=\"{x, y, z}\"/>");
+  for (const auto &c : names)
+  {
+    KILN_CHECK_INPUT(c == "x" || c == "y" || c == "z", where,
+                     "\"" << c << "\" is not a component; use x, y or z");
+    const int d = c[0] - 'x';
+    KILN_CHECK_INPUT(std::find(components_.begin(), components_.end(), d) == components_.end(),
+                     where, "lists " << c << " twice");
+    components_.push_back(d);
+  }
+}
+
+void DisplacementCondition::add_constraints(const Mesh &mesh, NodalConstraints &constraints) const
+{
+  const TimeFunction displacement = displacement_;
+  const int value = constraints.add_value(name(), [displacement](const double t)
+                                          { return displacement.value(t); });
+  for (const int id : side_sets())
+  {
+    const SideSet &set = *mesh.find_side_set(id);
+    std::vector<char> seen(mesh.n_nodes(), 0);
+    for (int s = 0; s < set.n_sides(); ++s)
+      for (const int i : hex_face_nodes[set.faces[s]])
+      {
+        const int node = mesh.connectivity[set.cells[s]][i];
+        if (seen[node]++)
+          continue;
+        for (const int c : components_)
+        {
+          Point e{};
+          e[c] = 1.0;
+          constraints.constrain_direction(node, e, value);
+        }
+      }
+  }
+}
+} // namespace kiln

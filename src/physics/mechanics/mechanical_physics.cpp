@@ -1,0 +1,66 @@
+#include "physics/mechanics/mechanical_physics.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "contact/normal_contact.hpp"
+#include "physics/mechanics/mechanical_conditions.hpp"
+
+#include <Teuchos_Array.hpp>
+
+namespace kiln
+{
+namespace internal
+{
+/// The body force rho g + f [N/m^3] of the "Mechanics" block.
+Point body_force(const Teuchos::ParameterList &mechanics, const double density,
+                 const std::string &where)
+{
+  Point b{};
+  for (const char *name : {"Body Force", "Gravity"})
+  {
+    const auto &v = mechanics.get<Teuchos::Array<double>>(name);
+    KILN_CHECK_INPUT(v.size() == 3, where + "/\"" + name + "\"",
+                     "must have 3 entries (x, y, z), has " << v.size());
+  }
+  const auto &f = mechanics.get<Teuchos::Array<double>>("Body Force");
+  const auto &g = mechanics.get<Teuchos::Array<double>>("Gravity");
+  for (int d = 0; d < 3; ++d)
+    b[d] = f[d] + density * g[d];
+  return b;
+}
+} // namespace internal
+
+Teuchos::ParameterList MechanicalPhysics::valid_parameters()
+{
+  Teuchos::ParameterList p("Mechanics");
+  p.set("Body Force", Teuchos::Array<double>(3, 0.0),
+        "a force per volume f = (fx, fy, fz), added to rho g [N/m^3]");
+  p.set("Gravity", Teuchos::Array<double>(3, 0.0),
+        "the acceleration of gravity g = (gx, gy, gz); the body force is rho g + f [m/s^2]");
+  set_named_sublists(p, "Boundary Conditions",
+                     "mechanical boundary conditions on side sets; faces in none are free of "
+                     "traction",
+                     boundary_condition_parameters(mechanical_conditions()));
+  p.set("Contact", NormalContact::valid_parameters(),
+        "frictionless contact across the gap (Kiln/Mesh/\"Gap Side Set\"); doc/contact.md");
+  return p;
+}
+
+MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
+                                     const Material &material, const Mesh &mesh,
+                                     const InteriorFaceCheck &interior, const std::string &where)
+    : elasticity_(material.lame_lambda(), material.shear_modulus(), material.thermal_expansion(),
+                  material.reference_temperature(),
+                  internal::body_force(mechanics, material.density(), where))
+{
+  conditions_ =
+      read_boundary_conditions(mechanical_conditions(), mechanics.sublist("Boundary Conditions"),
+                               mesh, interior, where + "/Boundary Conditions",
+                               "its two sides touch through frictionless contact "
+                               "(Mechanics/Contact), not a boundary condition");
+  KILN_CHECK_INPUT(mesh.gap_side_set != 0 || !given_in_input(mechanics, "Contact"),
+                   where + "/Contact",
+                   "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
+                   "it or name the side set to split at");
+}
+} // namespace kiln

@@ -1,0 +1,65 @@
+#include "physics/mechanics/normal_displacement_condition.hpp"
+
+#include "discretization/face_values.hpp"
+#include "mesh/hex_geometry.hpp"
+
+#include <cmath>
+
+namespace kiln
+{
+std::string NormalDisplacementCondition::description()
+{
+  return "u.n = Displacement(t) along the outward normal, free in the face's plane";
+}
+
+Teuchos::ParameterList NormalDisplacementCondition::valid_parameters()
+{
+  Teuchos::ParameterList p;
+  p.sublist("Displacement", false,
+            "for Type \"Normal Displacement\": u.n(t) (default 0) [m]; see TimeFunction")
+      .setParameters(TimeFunction::valid_parameters());
+  return p;
+}
+
+NormalDisplacementCondition::NormalDisplacementCondition(const BoundaryConditionInput &input)
+    : BoundaryCondition(input),
+      displacement_(input.params.sublist("Displacement"), input.path + "/Displacement")
+{
+}
+
+void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
+                                                  NodalConstraints &constraints) const
+{
+  const TimeFunction displacement = displacement_;
+  const int value = constraints.add_value(name(), [displacement](const double t)
+                                          { return displacement.value(t); });
+  FaceValues fv;
+  for (const int id : side_sets())
+  {
+    std::vector<Point> normal(mesh.n_nodes(), Point{});
+    std::vector<int> touched;
+    const SideSet &set = *mesh.find_side_set(id);
+    for (int s = 0; s < set.n_sides(); ++s)
+    {
+      fv.reinit(face_nodes(mesh, set.cells[s], set.faces[s]));
+      for (int i = 0; i < 4; ++i)
+      {
+        const int node = mesh.connectivity[set.cells[s]][hex_face_nodes[set.faces[s]][i]];
+        if (dot(normal[node], normal[node]) == 0.0)
+          touched.push_back(node);
+        for (int q = 0; q < fv.n_qpoints(); ++q)
+          for (int d = 0; d < 3; ++d)
+            normal[node][d] += fv.shape(i, q) * fv.normal(q)[d] * fv.JxW(q);
+      }
+    }
+    for (const int node : touched)
+    {
+      Point n = normal[node];
+      const double length = std::sqrt(dot(n, n));
+      for (double &x : n)
+        x /= length;
+      constraints.constrain_direction(node, n, value);
+    }
+  }
+}
+} // namespace kiln

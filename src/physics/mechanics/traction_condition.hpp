@@ -1,0 +1,24 @@
+#pragma once
+/// A prescribed traction vector on side sets.
+#include "physics/boundary_condition.hpp"
+
+namespace kiln
+{
+/// A load t = "Traction" [Pa] (3 components, a fixed direction) on the faces
+/// (TractionKernel).
+class TractionCondition final : public BoundaryCondition
+{
+public:
+  static std::string description();
+  static Teuchos::ParameterList valid_parameters();
+  explicit TractionCondition(const BoundaryConditionInput &input);
+
+  bool is_constraint() const override { return false; }
+  void evaluate(const FaceState &state, LocalSystem &local) const override;
+  /// t [Pa].
+  const Point &traction() const { return traction_; }
+
+private:
+  Point traction_{};
+};
+} // namespace kiln

@@ -1,0 +1,53 @@
+#include "physics/nodal_fields.hpp"
+
+#include "base/errors.hpp"
+
+namespace kiln
+{
+NodalFields::NodalFields(const DofManager &dofs, const Assembler &assembler,
+                         const NodalConstraints &constraints, const double reference_temperature)
+    : dofs_(dofs), assembler_(assembler), constraints_(constraints), F_(dofs.n_node_fields()),
+      T_slot_(dofs.layout().slot(Field::T)), u_slot_(dofs.layout().slot(Field::ux)),
+      reference_temperature_(reference_temperature), overlap_index_(dofs.node_owner().size(), -1),
+      b_overlap_(assembler.make_overlap_vector())
+{
+  const auto &overlap_nodes = dofs.overlap_nodes();
+  for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
+  {
+    overlap_index_[overlap_nodes[i]] = static_cast<int>(i);
+    KILN_ASSERT(assembler.lid(dofs.node_dof(overlap_nodes[i], 0)) == static_cast<LO>(F_ * i),
+                "the overlap map is not node-major");
+  }
+  T_.assign(overlap_nodes.size(), reference_temperature);
+  T_dot_.assign(overlap_nodes.size(), 0.0);
+  u_.assign(overlap_nodes.size(), Point{});
+}
+
+void NodalFields::set_time_derivative(const double time, const double a, const Vector &b)
+{
+  time_ = time;
+  a_ = a;
+  assembler_.gather(b, *b_overlap_);
+}
+
+void NodalFields::update(const Vector &x_overlap)
+{
+  const auto x = x_overlap.getData();
+  const auto b = b_overlap_->getData();
+  const auto &overlap_nodes = dofs_.overlap_nodes();
+  for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
+  {
+    const int n = overlap_nodes[i];
+    const double *unknowns = x.getRawPtr() + F_ * i;
+    if (T_slot_ >= 0)
+    {
+      T_[i] = constraints_.temperature(n, unknowns);
+      T_dot_[i] = a_ * T_[i] + b[F_ * i + T_slot_];
+    }
+    else
+      T_[i] = reference_temperature_;
+    if (u_slot_ >= 0)
+      u_[i] = constraints_.displacement(n, unknowns);
+  }
+}
+} // namespace kiln

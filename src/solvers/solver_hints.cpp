@@ -1,0 +1,65 @@
+#include "solvers/solver_hints.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace kiln
+{
+SolverHints::SolverHints(const Mesh &mesh, const DofManager &dofs,
+                         const NodalConstraints &constraints, const double conductivity,
+                         const double modulus)
+{
+  const int F = dofs.n_node_fields();
+  const int T_slot = dofs.layout().slot(Field::T);
+  const int u_slot = dofs.layout().slot(Field::ux);
+  // Symmetric scaling: with both fields, displacements by sqrt(k / (lambda + 2G)), so that
+  // the diagonal of the force rows (~ (lambda + 2G) h) becomes that of the heat rows (~ k h).
+  if (T_slot >= 0 && u_slot >= 0)
+    displacement_scale_ = std::sqrt(conductivity / modulus);
+
+  const auto owned_map = dofs.owned_dof_map();
+  const auto &owned_nodes = dofs.owned_nodes();
+  coordinates_ = Teuchos::rcp(new MultiVector(dofs.owned_node_map(), 3));
+  Point centre{};
+  for (const Point &x : mesh.coordinates)
+    for (int d = 0; d < 3; ++d)
+      centre[d] += x[d] / mesh.n_nodes();
+  const int n_modes = (T_slot >= 0 ? 1 : 0) + (u_slot >= 0 ? 6 : 0);
+  near_null_space_ = Teuchos::rcp(new MultiVector(owned_map, n_modes));
+  unknown_scale_ = Teuchos::rcp(new Vector(owned_map));
+  time_error_mask_ = Teuchos::rcp(new Vector(owned_map));
+  for (std::size_t i = 0; i < owned_nodes.size(); ++i)
+  {
+    const int n = owned_nodes[i];
+    const Point &x = mesh.coordinates[n];
+    for (int d = 0; d < 3; ++d)
+      coordinates_->replaceLocalValue(static_cast<LO>(i), d, x[d]);
+    const LO row = static_cast<LO>(F * i);
+    int mode = 0;
+    if (T_slot >= 0)
+    {
+      near_null_space_->replaceLocalValue(row + T_slot, mode++, 1.0);
+      unknown_scale_->replaceLocalValue(row + T_slot, 1.0);
+      time_error_mask_->replaceLocalValue(row + T_slot, 1.0);
+    }
+    if (u_slot >= 0)
+    {
+      // Rigid-body modes in the node's unknowns (û = Q^T u where it has a frame).
+      const Point r{x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]};
+      const std::array<Point, 6> modes = {Point{1, 0, 0},        Point{0, 1, 0},
+                                          Point{0, 0, 1},        Point{0, -r[2], r[1]},
+                                          Point{r[2], 0, -r[0]}, Point{-r[1], r[0], 0}};
+      const bool framed = constraints.has_frame(n);
+      const auto &q = constraints.axes(n);
+      for (const Point &u : modes)
+      {
+        for (int k = 0; k < 3; ++k)
+          near_null_space_->replaceLocalValue(row + u_slot + k, mode, framed ? dot(q[k], u) : u[k]);
+        ++mode;
+      }
+      for (int k = 0; k < 3; ++k)
+        unknown_scale_->replaceLocalValue(row + u_slot + k, displacement_scale_);
+    }
+  }
+}
+} // namespace kiln

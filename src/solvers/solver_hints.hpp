@@ -1,0 +1,46 @@
+#pragma once
+/// What the linear solvers are told about a problem beyond its matrix: node coordinates, the
+/// near-null space, the scale of the unknowns, which unknowns have a time derivative.
+#include "discretization/dof_manager.hpp"
+#include "discretization/nodal_constraints.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+namespace kiln
+{
+/// For the unknowns of a DofManager's layout (doc/mechanics.md, "Scaling"; doc/solvers.md):
+/// - coordinates: of the owned nodes, for MueLu's aggregation;
+/// - near-null space: the constant temperature and the six rigid-body modes
+///   (translations, rotations about the mesh centre), in the nodes' frame unknowns;
+/// - unknown scale c: 1 for T, sqrt(k / (lambda + 2G)) for u when both fields are solved
+///   (so that the diagonals of the force and heat rows match), 1 otherwise;
+/// - time-error mask: 1 for the temperature (which has a time derivative), 0 for the
+///   quasi-static displacement.
+class SolverHints
+{
+public:
+  using MultiVector = Tpetra::MultiVector<double>;
+  using Vector = Tpetra::Vector<>;
+
+  /// `constraints` is closed (its frames rotate the rigid-body modes); k [W/(m K)] and
+  /// lambda + 2G [Pa] give the scale.
+  SolverHints(const Mesh &mesh, const DofManager &dofs, const NodalConstraints &constraints,
+              double conductivity, double modulus);
+
+  Teuchos::RCP<const MultiVector> coordinates() const { return coordinates_; }
+  Teuchos::RCP<const MultiVector> near_null_space() const { return near_null_space_; }
+  Teuchos::RCP<const Vector> unknown_scale() const { return unknown_scale_; }
+  Teuchos::RCP<const Vector> time_error_mask() const { return time_error_mask_; }
+  /// The scale c of the displacement unknowns.
+  double displacement_scale() const { return displacement_scale_; }
+
+private:
+  double displacement_scale_ = 1.0;
+  Teuchos::RCP<MultiVector> coordinates_;
+  Teuchos::RCP<MultiVector> near_null_space_;
+  Teuchos::RCP<Vector> unknown_scale_;
+  Teuchos::RCP<Vector> time_error_mask_;
+};
+} // namespace kiln
