@@ -123,20 +123,19 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
   // that add() can use overlap local ids.
   {
     const std::vector<int> &nodes = dofs.overlap_nodes();
-    const auto couplings =
-        internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes), my_cells, my_faces,
-                                 static_cast<int>(nodes.size()));
-    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, couplings, owned, overlap);
+    const auto links = internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes),
+                                                my_cells, my_faces, static_cast<int>(nodes.size()));
+    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, links, owned, overlap);
   }
   // The owned rows get every block that touches them, from any rank: the mesh is
   // replicated, so each rank finds its rows' columns without communication.
   {
     const std::vector<char> all_cells(mesh.n_cells(), 1), all_faces(n_faces, 1);
     const std::vector<int> &nodes = dofs.owned_nodes();
-    const auto couplings =
+    const auto links =
         internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes), all_cells,
                                  all_faces, static_cast<int>(nodes.size()));
-    owned_graph_ = internal::make_graph(dofs, owned, nodes, couplings, owned);
+    owned_graph_ = internal::make_graph(dofs, owned, nodes, links, owned);
   }
 
   overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));

@@ -2,7 +2,6 @@
 
 #include "base/errors.hpp"
 #include "discretization/element_values.hpp"
-#include "discretization/face_values.hpp"
 #include "mesh/hex_geometry.hpp"
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -56,32 +55,19 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
                                           material.reference_temperature());
   hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus);
 
+  terms_ = std::make_unique<ResidualTerms>(mesh, dofs, slots_);
   if (thermal_)
-    cell_kernels_.push_back(&thermal_->conduction());
+  {
+    terms_->add_cell_kernel(thermal_->conduction());
+    terms_->add_boundary_conditions(thermal_->conditions());
+    if (gap != nullptr)
+      terms_->set_interface_kernel(*gap);
+  }
   if (mechanics_)
-    cell_kernels_.push_back(&mechanics_->elasticity());
-  std::vector<char> owns_cell(mesh.n_cells(), 0);
-  for (const int c : dofs.owned_cells())
-    owns_cell[c] = 1;
-  for (const auto *physics_conditions : {thermal_ ? &thermal_->conditions() : nullptr,
-                                         mechanics_ ? &mechanics_->conditions() : nullptr})
-    if (physics_conditions != nullptr)
-      for (const auto &condition : *physics_conditions)
-        if (!condition->is_constraint())
-          for (const int id : condition->side_sets())
-          {
-            const SideSet &set = *mesh.find_side_set(id);
-            for (int s = 0; s < set.n_sides(); ++s)
-              if (owns_cell[set.cells[s]])
-                boundary_faces_.push_back({set.cells[s], set.faces[s], condition.get()});
-          }
-  if (gap != nullptr)
-    for (int k = 0; k < static_cast<int>(mesh.gap_faces.size()); ++k)
-      if (owns_cell[mesh.gap_faces[k].cell_a])
-      {
-        owned_gap_faces_.push_back(k);
-        gap_nodes_.push_back(gap->nodes(mesh, mesh.gap_faces[k]));
-      }
+  {
+    terms_->add_cell_kernel(mechanics_->elasticity());
+    terms_->add_boundary_conditions(mechanics_->conditions());
+  }
 
   x_overlap_ = assembler_->make_overlap_vector();
   residual_work_ = Teuchos::rcp(new Vector(dofs.owned_dof_map()));
@@ -173,9 +159,9 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
 {
   const bool jacobian = J != nullptr;
   assembler_->begin(f != nullptr, jacobian);
-  add_cells(jacobian);
-  add_boundary_faces(jacobian);
-  add_gap_faces(jacobian);
+  terms_->evaluate(*fields_, jacobian,
+                   [this](const std::vector<int> &nodes, LocalSystem &local)
+                   { add_local(nodes, local); });
   constraints_.add_rows(*x_overlap_, *assembler_, jacobian);
   if (contact_ && jacobian)
     contact_->add_pair_terms(*assembler_);
@@ -194,98 +180,6 @@ void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local
   if (contact_ && local.has_jacobian())
     contact_->combine_rows(nodes, local);
   assembler_->add(assembler_->node_lids(nodes), local);
-}
-
-void CoupledProblem::add_cells(const bool jacobian)
-{
-  ElementValues fe;
-  LocalSystem local(n_hex_nodes, dofs_.n_node_fields(), jacobian);
-  std::vector<int> nodes(n_hex_nodes);
-  std::array<double, n_hex_nodes> T{}, T_dot{};
-  std::array<Point, n_hex_nodes> u{};
-  const CellState state{fe, T, T_dot, u, fields_->a(), fields_->time(), slots_};
-  for (const int c : dofs_.owned_cells())
-  {
-    for (int i = 0; i < n_hex_nodes; ++i)
-    {
-      nodes[i] = mesh_.connectivity[c][i];
-      T[i] = fields_->T(nodes[i]);
-      T_dot[i] = fields_->T_dot(nodes[i]);
-      u[i] = fields_->u(nodes[i]);
-    }
-    fe.reinit(cell_nodes(mesh_, c));
-    local.clear();
-    for (const CellKernel *kernel : cell_kernels_)
-      kernel->evaluate(state, local);
-    add_local(nodes, local);
-  }
-}
-
-void CoupledProblem::add_boundary_faces(const bool jacobian)
-{
-  FaceValues fv;
-  LocalSystem local(4, dofs_.n_node_fields(), jacobian);
-  std::vector<int> nodes(4);
-  std::array<double, 4> T{};
-  std::array<Point, 4> u{};
-  const FaceState state{fv, T, u, fields_->time(), slots_};
-  for (const BoundaryFace &face : boundary_faces_)
-  {
-    for (int i = 0; i < 4; ++i)
-    {
-      nodes[i] = mesh_.connectivity[face.cell][hex_face_nodes[face.face][i]];
-      T[i] = fields_->T(nodes[i]);
-      u[i] = fields_->u(nodes[i]);
-    }
-    fv.reinit(face_nodes(mesh_, face.cell, face.face));
-    local.clear();
-    face.condition->evaluate(state, local);
-    add_local(nodes, local);
-  }
-}
-
-void CoupledProblem::add_gap_faces(const bool jacobian)
-{
-  if (owned_gap_faces_.empty())
-    return;
-  const InterfaceKernel &kernel = *thermal_->gap_kernel();
-  FaceValues fv;
-  ElementValues fe_a, fe_b;
-  std::array<int, n_hex_nodes> cell_a{}, cell_b{};
-  std::vector<double> T;
-  std::vector<Point> u;
-  const InterfaceState state{fv, fe_a, fe_b, cell_a, cell_b, T, u, fields_->time(), slots_};
-  for (std::size_t f = 0; f < owned_gap_faces_.size(); ++f)
-  {
-    const GapFace &face = mesh_.gap_faces[owned_gap_faces_[f]];
-    const std::vector<int> &nodes = gap_nodes_[f];
-    T.resize(nodes.size());
-    u.resize(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-    {
-      T[i] = fields_->T(nodes[i]);
-      u[i] = fields_->u(nodes[i]);
-    }
-    fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
-    if (kernel.needs_cells())
-    {
-      const auto local_of = [&](const int node)
-      {
-        const auto at = std::find(nodes.begin(), nodes.end(), node);
-        return at == nodes.end() ? -1 : static_cast<int>(at - nodes.begin());
-      };
-      for (int i = 0; i < n_hex_nodes; ++i)
-      {
-        cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
-        cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
-      }
-      fe_a.reinit(cell_nodes(mesh_, face.cell_a));
-      fe_b.reinit(cell_nodes(mesh_, face.cell_b));
-    }
-    LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
-    kernel.evaluate(state, local);
-    add_local(nodes, local);
-  }
 }
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)

@@ -10,6 +10,7 @@
 #include "physics/heat/thermal_physics.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
+#include "physics/residual_terms.hpp"
 #include "solvers/solver_hints.hpp"
 
 #include <Teuchos_FancyOStream.hpp>
@@ -24,9 +25,10 @@ namespace kiln
 {
 /// F(x) = 0 for the unknowns of the DofManager's layout: temperature, displacement or both
 /// (4 per node: T, then u_x, u_y, u_z). It owns the pieces and runs, for each evaluation,
-///   gather x -> fields at x~ (NodalConstraints) -> contact decides (once per x)
-///   -> kernels per cell, boundary face, gap face -> distribute (frames, constraints,
-///   contact rows) -> add; constraint rows; contact pair terms.
+///   gather x -> fields at x~ (NodalFields, NodalConstraints) -> contact decides (once per x)
+///   -> terms per cell, boundary face, gap face (ResidualTerms) -> distribute (frames,
+///   constraints: NodalConstraints; contact rows: NormalContact) -> add (Assembler);
+///   constraint rows; contact pair terms.
 /// The terms and their Jacobians are the kernels' (ThermalPhysics, MechanicalPhysics); the
 /// constraints are NodalConstraints'; contact is NormalContact's (doc/architecture.md).
 class CoupledProblem final : public TransientProblem
@@ -85,21 +87,12 @@ public:
   const NodalConstraints &constraints() const { return constraints_; }
 
 private:
-  struct BoundaryFace
-  {
-    int cell;
-    int face;
-    const BoundaryCondition *condition;
-  };
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With contact: the assembled rows at x and the decision, unless taken at x already.
   void decide(const Vector &x);
   /// One assembly of f and/or J at the prepared state (with J and contact: combined rows).
   void assemble(Vector *f, Matrix *J);
-  void add_cells(bool jacobian);
-  void add_boundary_faces(bool jacobian);
-  void add_gap_faces(bool jacobian);
   /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it.
   void add_local(const std::vector<int> &nodes, LocalSystem &local);
 
@@ -114,10 +107,7 @@ private:
   std::unique_ptr<NormalContact> contact_;
   std::unique_ptr<NodalFields> fields_;
   std::unique_ptr<SolverHints> hints_;
-  std::vector<const CellKernel *> cell_kernels_;
-  std::vector<BoundaryFace> boundary_faces_; ///< faces of owned cells with face terms
-  std::vector<int> owned_gap_faces_;         ///< gap faces whose side-a cell is owned
-  std::vector<std::vector<int>> gap_nodes_;  ///< per owned gap face: the kernel's nodes
+  std::unique_ptr<ResidualTerms> terms_;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
 };

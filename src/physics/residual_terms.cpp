@@ -1,0 +1,150 @@
+#include "physics/residual_terms.hpp"
+
+#include "discretization/element_values.hpp"
+#include "discretization/face_values.hpp"
+#include "mesh/hex_geometry.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace kiln
+{
+ResidualTerms::ResidualTerms(const Mesh &mesh, const DofManager &dofs, const FieldSlots slots)
+    : mesh_(mesh), dofs_(dofs), slots_(slots), owns_cell_(mesh.n_cells(), 0)
+{
+  for (const int c : dofs.owned_cells())
+    owns_cell_[c] = 1;
+}
+
+void ResidualTerms::add_cell_kernel(const CellKernel &kernel)
+{
+  cell_kernels_.push_back(&kernel);
+}
+
+void ResidualTerms::add_boundary_conditions(
+    const std::vector<std::unique_ptr<BoundaryCondition>> &conditions)
+{
+  for (const auto &condition : conditions)
+    if (!condition->is_constraint())
+      for (const int id : condition->side_sets())
+      {
+        const SideSet &set = *mesh_.find_side_set(id);
+        for (int s = 0; s < set.n_sides(); ++s)
+          if (owns_cell_[set.cells[s]])
+            faces_.push_back({set.cells[s], set.faces[s], condition.get()});
+      }
+}
+
+void ResidualTerms::set_interface_kernel(const InterfaceKernel &kernel)
+{
+  interface_kernel_ = &kernel;
+  for (int k = 0; k < static_cast<int>(mesh_.gap_faces.size()); ++k)
+    if (owns_cell_[mesh_.gap_faces[k].cell_a])
+    {
+      gap_faces_.push_back(k);
+      gap_nodes_.push_back(kernel.nodes(mesh_, mesh_.gap_faces[k]));
+    }
+}
+
+void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, const Sink &sink) const
+{
+  evaluate_cells(fields, jacobian, sink);
+  evaluate_faces(fields, jacobian, sink);
+  evaluate_gap_faces(fields, jacobian, sink);
+}
+
+void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobian,
+                                   const Sink &sink) const
+{
+  ElementValues fe;
+  LocalSystem local(n_hex_nodes, dofs_.n_node_fields(), jacobian);
+  std::vector<int> nodes(n_hex_nodes);
+  std::array<double, n_hex_nodes> T{}, T_dot{};
+  std::array<Point, n_hex_nodes> u{};
+  const CellState state{fe, T, T_dot, u, fields.a(), fields.time(), slots_};
+  for (const int c : dofs_.owned_cells())
+  {
+    for (int i = 0; i < n_hex_nodes; ++i)
+    {
+      nodes[i] = mesh_.connectivity[c][i];
+      T[i] = fields.T(nodes[i]);
+      T_dot[i] = fields.T_dot(nodes[i]);
+      u[i] = fields.u(nodes[i]);
+    }
+    fe.reinit(cell_nodes(mesh_, c));
+    local.clear();
+    for (const CellKernel *kernel : cell_kernels_)
+      kernel->evaluate(state, local);
+    sink(nodes, local);
+  }
+}
+
+void ResidualTerms::evaluate_faces(const NodalFields &fields, const bool jacobian,
+                                   const Sink &sink) const
+{
+  FaceValues fv;
+  LocalSystem local(4, dofs_.n_node_fields(), jacobian);
+  std::vector<int> nodes(4);
+  std::array<double, 4> T{};
+  std::array<Point, 4> u{};
+  const FaceState state{fv, T, u, fields.time(), slots_};
+  for (const BoundaryFace &face : faces_)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      nodes[i] = mesh_.connectivity[face.cell][hex_face_nodes[face.face][i]];
+      T[i] = fields.T(nodes[i]);
+      u[i] = fields.u(nodes[i]);
+    }
+    fv.reinit(face_nodes(mesh_, face.cell, face.face));
+    local.clear();
+    face.condition->evaluate(state, local);
+    sink(nodes, local);
+  }
+}
+
+void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jacobian,
+                                       const Sink &sink) const
+{
+  if (gap_faces_.empty())
+    return;
+  const InterfaceKernel &kernel = *interface_kernel_;
+  FaceValues fv;
+  ElementValues fe_a, fe_b;
+  std::array<int, n_hex_nodes> cell_a{}, cell_b{};
+  std::vector<double> T;
+  std::vector<Point> u;
+  const InterfaceState state{fv, fe_a, fe_b, cell_a, cell_b, T, u, fields.time(), slots_};
+  for (std::size_t f = 0; f < gap_faces_.size(); ++f)
+  {
+    const GapFace &face = mesh_.gap_faces[gap_faces_[f]];
+    const std::vector<int> &nodes = gap_nodes_[f];
+    T.resize(nodes.size());
+    u.resize(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      T[i] = fields.T(nodes[i]);
+      u[i] = fields.u(nodes[i]);
+    }
+    fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
+    if (kernel.needs_cells())
+    {
+      const auto local_of = [&](const int node)
+      {
+        const auto at = std::find(nodes.begin(), nodes.end(), node);
+        return at == nodes.end() ? -1 : static_cast<int>(at - nodes.begin());
+      };
+      for (int i = 0; i < n_hex_nodes; ++i)
+      {
+        cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
+        cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
+      }
+      fe_a.reinit(cell_nodes(mesh_, face.cell_a));
+      fe_b.reinit(cell_nodes(mesh_, face.cell_b));
+    }
+    LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
+    kernel.evaluate(state, local);
+    sink(nodes, local);
+  }
+}
+} // namespace kiln

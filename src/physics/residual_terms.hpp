@@ -1,0 +1,56 @@
+#pragma once
+/// Every term of the residual, evaluated element by element.
+#include "discretization/dof_manager.hpp"
+#include "physics/boundary_condition.hpp"
+#include "physics/kernel.hpp"
+#include "physics/nodal_fields.hpp"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace kiln
+{
+/// The terms a rank assembles (MOOSE's kernels, BCs and interface kernels of a system): the
+/// cell kernels on its owned cells, the boundary conditions with face terms on their faces of
+/// owned cells, and the interface kernel on the gap faces whose side-a cell it owns. Each
+/// evaluation fills one LocalSystem per cell or face from the nodal fields and hands it to a
+/// sink, which distributes and adds it.
+class ResidualTerms
+{
+public:
+  /// Receives a local system; nodes[i] is the mesh node of local node i.
+  using Sink = std::function<void(const std::vector<int> &nodes, LocalSystem &local)>;
+
+  ResidualTerms(const Mesh &mesh, const DofManager &dofs, FieldSlots slots);
+
+  void add_cell_kernel(const CellKernel &kernel);
+  /// The face terms of `conditions` (those not constraints), in order.
+  void add_boundary_conditions(const std::vector<std::unique_ptr<BoundaryCondition>> &conditions);
+  void set_interface_kernel(const InterfaceKernel &kernel);
+
+  /// Evaluates every term at `fields` into systems with or without a Jacobian.
+  void evaluate(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+
+private:
+  void evaluate_cells(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+  void evaluate_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+  void evaluate_gap_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+
+  struct BoundaryFace
+  {
+    int cell;
+    int face;
+    const BoundaryCondition *condition;
+  };
+  const Mesh &mesh_;
+  const DofManager &dofs_;
+  FieldSlots slots_;
+  std::vector<char> owns_cell_;
+  std::vector<const CellKernel *> cell_kernels_;
+  std::vector<BoundaryFace> faces_;
+  const InterfaceKernel *interface_kernel_ = nullptr;
+  std::vector<int> gap_faces_;              ///< gap faces whose side-a cell is owned
+  std::vector<std::vector<int>> gap_nodes_; ///< per gap face: the kernel's nodes
+};
+} // namespace kiln
