@@ -41,7 +41,10 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
     *out << cl.input << ": input and mesh are valid\n";
   }
   else if (cl.mode == Mode::write_mesh)
+  {
     simulation.write_mesh(cl.mesh_output);
+    return 0; // no phase of a run is timed: no timer table
+  }
   else
     simulation.run();
   Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);

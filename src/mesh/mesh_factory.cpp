@@ -35,8 +35,8 @@ Teuchos::ParameterList MeshFactory::valid_parameters()
              "path of the Exodus II file, relative to the working directory; required when "
              "Type = \"Exodus\" unless given by kiln --mesh FILE");
   exodus.set("Coordinate Scale", 1.0,
-             "factor applied to the file's coordinates to get metres (0.01 for a mesh in cm) "
-             "[m per file unit]",
+             "factor applied to the file's coordinates to get metres (0.01 for a mesh in cm; "
+             "must be 1 for a file written by Kiln, which is in metres) [m per file unit]",
              positive_double_validator());
   return p;
 }
@@ -66,7 +66,19 @@ Mesh MeshFactory::build() const
   if (type_ == "Box")
     mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate();
   else
+  {
+    // Kiln writes metres; a scale meant for a Cubit file in cm would shrink such a file.
+    KILN_CHECK_INPUT(scale_ == 1.0 || !exodus_file_in_metres(exodus_file_),
+                     where_ + "/Exodus/\"Coordinate Scale\"",
+                     "is " << scale_ << ", but the mesh file \"" << exodus_file_
+                           << "\" was written by Kiln (kiln --write-mesh or Exodus results) and "
+                              "its coordinates are in metres already: they would be multiplied "
+                              "by "
+                           << scale_
+                           << ". Set \"Coordinate Scale\" to 1 for this file (a scale is for "
+                              "meshes from other programs, 0.01 for Cubit meshes in cm)");
     mesh = read_exodus_mesh(exodus_file_, scale_);
+  }
   check_mesh(mesh, type_ == "Box" ? where_ + "/Box" : exodus_file_);
   return mesh;
 }

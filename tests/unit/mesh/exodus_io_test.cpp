@@ -1,5 +1,6 @@
 // Tests src/mesh/exodus_io.cpp: reading the contact-box Cubit meshes, a write/read round trip,
-// and the InputError messages for bad files.
+// the names, node sets and metres record of a written mesh, and the InputError messages for
+// bad files.
 // KILN_TEST_NP: 1
 #include "mesh/exodus_io.hpp"
 
@@ -171,10 +172,80 @@ TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
   for (std::size_t s = 0; s < mesh.side_sets.size(); ++s)
   {
     EXPECT_EQ(back.side_sets[s].id, mesh.side_sets[s].id);
-    EXPECT_EQ(back.side_sets[s].name, mesh.side_sets[s].name);
+    // Names are kept; side sets without one are named after their id.
+    const std::string name = mesh.side_sets[s].name.empty()
+                                 ? "sideset_" + std::to_string(mesh.side_sets[s].id)
+                                 : mesh.side_sets[s].name;
+    EXPECT_EQ(back.side_sets[s].name, name);
     EXPECT_EQ(back.side_sets[s].cells, mesh.side_sets[s].cells);
     EXPECT_EQ(back.side_sets[s].faces, mesh.side_sets[s].faces);
   }
+}
+
+/// Names of the n objects of `type` in an open Exodus file.
+std::vector<std::string> exodus_names(const int exo, const ex_entity_type type, const int n)
+{
+  const int length = static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH));
+  ex_set_max_name_length(exo, length);
+  std::vector<std::vector<char>> buffers(n, std::vector<char>(length + 1, '\0'));
+  std::vector<char *> pointers;
+  for (auto &b : buffers)
+    pointers.push_back(b.data());
+  EXPECT_GE(ex_get_names(exo, type, pointers.data()), 0);
+  std::vector<std::string> names;
+  for (const auto &b : buffers)
+    names.emplace_back(b.data());
+  return names;
+}
+
+// What meshio and ParaView list: named blocks, named side sets, node sets with the side
+// sets' ids, names and face nodes; and the record that says the file is in metres.
+TEST(ExodusIo, WrittenMeshHasBlockAndSetNamesNodeSetsAndTheMetresRecord)
+{
+  Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "aligned-cube.exo", cm);
+  mesh.side_sets.front().name = "left";
+  const TempFile file("names");
+  kiln::write_exodus_mesh(mesh, file.path(), 10); // side set 10 is the gap
+
+  int comp_ws = sizeof(double), io_ws = 0;
+  float version = 0.0F;
+  const int exo = ex_open(file.path().c_str(), EX_READ, &comp_ws, &io_ws, &version);
+  ASSERT_GE(exo, 0);
+  EXPECT_EQ(ex_inquire_int(exo, EX_INQ_ELEM_BLK), 2);
+  EXPECT_EQ(exodus_names(exo, EX_ELEM_BLOCK, 2), (std::vector<std::string>{"block_1", "block_2"}));
+  const std::vector<std::string> set_names = {"left",      "sideset_2", "sideset_3", "sideset_4",
+                                              "sideset_5", "sideset_6", "gap"};
+  ASSERT_EQ(ex_inquire_int(exo, EX_INQ_SIDE_SETS), 7);
+  ASSERT_EQ(ex_inquire_int(exo, EX_INQ_NODE_SETS), 7);
+  EXPECT_EQ(exodus_names(exo, EX_SIDE_SET, 7), set_names);
+  EXPECT_EQ(exodus_names(exo, EX_NODE_SET, 7), set_names);
+  std::vector<int> node_set_ids(7);
+  ASSERT_GE(ex_get_node_set_ids(exo, node_set_ids.data()), 0);
+  EXPECT_EQ(node_set_ids, (std::vector<int>{1, 2, 3, 4, 5, 6, 10}));
+  for (const auto &set : mesh.side_sets)
+  {
+    int n_nodes = 0, n_dist = 0;
+    ASSERT_GE(ex_get_node_set_param(exo, set.id, &n_nodes, &n_dist), 0);
+    std::vector<int> nodes(n_nodes);
+    ASSERT_GE(ex_get_node_set(exo, set.id, nodes.data()), 0);
+    // Each cube face and the cut plane hold 5 x 5 nodes (the mesh is not split).
+    EXPECT_EQ(n_nodes, 25) << "node set " << set.id;
+    std::vector<int> expected;
+    for (int i = 0; i < set.n_sides(); ++i)
+      for (const int k : kiln::hex_face_nodes[set.faces[i]])
+        expected.push_back(mesh.connectivity[set.cells[i]][k] + 1);
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    EXPECT_EQ(nodes, expected) << "node set " << set.id;
+  }
+  ex_close(exo);
+
+  EXPECT_TRUE(kiln::exodus_file_in_metres(file.path()));
+  EXPECT_FALSE(kiln::exodus_file_in_metres(mesh_dir + "aligned-cube.exo")); // Cubit, cm
+  // Kiln reads the names back; the gap's name "gap" stays "gap".
+  const Mesh back = kiln::read_exodus_mesh(file.path(), 1.0);
+  for (std::size_t s = 0; s < back.side_sets.size(); ++s)
+    EXPECT_EQ(back.side_sets[s].name, set_names[s]);
 }
 
 /// Writes a one-element Exodus file with the C API (to make files Kiln must reject).
