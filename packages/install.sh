@@ -14,6 +14,8 @@ packages=(
   libexodusii-dev libnetcdf-dev
   libgtest-dev
   clang-format
+  # tools/kiln-diff and the gold-file regression tests:
+  python3-h5py python3-numpy
 )
 
 missing=()
