@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "base/log.hpp"
 #include "base/parameters.hpp"
+#include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
 #include "io/hdf5_xdmf_writer.hpp"
 #include "mesh/exodus_io.hpp"
@@ -37,8 +38,13 @@ Teuchos::ParameterList output_parameters()
 {
   Teuchos::ParameterList p("Output");
   p.set("File Base", "",
-        "path of the results without extension: FILE.h5 and FILE.xmf are written; the "
-        "default \"\" means results/<input file name without .xml>");
+        "path of the results without extension: FILE.h5 and FILE.xmf, or FILE.exo, are "
+        "written (see Format); the default \"\" means results/<input file name without .xml>");
+  p.set("Format", "HDF5",
+        "\"HDF5\": FILE.h5 with FILE.xmf for ParaView; \"Exodus\": FILE.exo (Exodus II, named "
+        "variables, blocks, side sets and node sets; written by rank 0); \"HDF5 and Exodus\": "
+        "both (doc/output-format.md)",
+        choice_validator({"HDF5", "Exodus", "HDF5 and Exodus"}));
   p.set("Times", Teuchos::Array<double>(1, 0.0),
         "output times, increasing, >= 0 [s]: the state at each is written; the run starts at "
         "t = 0 and ends at the last");
@@ -159,8 +165,13 @@ void Simulation::run()
     comm_->barrier();
     const MPI_Comm mpi_comm =
         *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-    writer_ = std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
-                                               dofs_->owned_cells(), cell_rank_);
+    const std::string format = params_.sublist("Output").get<std::string>("Format");
+    if (format != "Exodus")
+      writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
+          mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
+    if (format != "HDF5")
+      writers_.push_back(std::make_unique<ExodusResultsWriter>(
+          mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
     field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
   }
   if (layout_.displacement)
@@ -173,8 +184,7 @@ void Simulation::run()
   *out_ << "done: " << stats.steps << " steps (" << stats.error_rejections
         << " repeated for the error estimate, " << stats.newton_failures << " for Newton), "
         << stats.newton_iterations << " Newton and " << stats.linear_iterations
-        << " linear iterations; results in " << output_base() << ".h5 and " << output_base()
-        << ".xmf\n";
+        << " linear iterations; results in " << output_files() << "\n";
 }
 
 void Simulation::equilibrate()
@@ -198,6 +208,18 @@ void Simulation::equilibrate()
         << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
         << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
   problem_->step_accepted(0.0, *solution_);
+}
+
+std::string Simulation::output_files(const bool with_index) const
+{
+  const std::string base = output_base();
+  const std::string format = params_.sublist("Output").get<std::string>("Format");
+  std::string files;
+  if (format != "Exodus")
+    files = base + ".h5" + (with_index ? " and " + base + ".xmf" : "");
+  if (format != "HDF5")
+    files += (files.empty() ? "" : " and ") + base + ".exo";
+  return files;
 }
 
 std::string Simulation::output_base() const
@@ -269,8 +291,9 @@ void Simulation::output(const double time, const int cycle, const double dt,
                         const NonlinearProblem::Vector &x)
 {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-  field_output_->write(*writer_, time, cycle, dt, x);
-  *out_ << "output: t = " << time << " s written to " << output_base() << ".h5\n";
+  for (const auto &writer : writers_)
+    field_output_->write(*writer, time, cycle, dt, x);
+  *out_ << "output: t = " << time << " s written to " << output_files(false) << "\n";
 }
 
 void Simulation::write_mesh(const std::string &path) const
@@ -282,7 +305,7 @@ void Simulation::write_mesh(const std::string &path) const
   {
     try
     {
-      write_exodus_mesh(mesh, path);
+      write_exodus_mesh(mesh, path, factory.gap_side_set());
     }
     catch (const InputError &e)
     {

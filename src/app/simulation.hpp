@@ -17,7 +17,7 @@
 namespace kiln
 {
 class FieldOutput;
-class Hdf5XdmfWriter;
+class ResultsWriter;
 class NewtonSolver;
 class CoupledProblem;
 class TimeStepper;
@@ -47,6 +47,9 @@ public:
   const DofManager &dofs() const { return *dofs_; }
   /// The output file path without extension.
   std::string output_base() const;
+  /// The results files of the output format ("BASE.h5 and BASE.xmf", "BASE.exo", ...);
+  /// without the XDMF index unless `with_index`.
+  std::string output_files(bool with_index = true) const;
   /// The solution after run(), the unknowns of the owned nodes (CoupledProblem has
   /// their physical values).
   const NonlinearProblem::Vector &solution() const { return *solution_; }
@@ -74,7 +77,7 @@ private:
   Teuchos::RCP<CoupledProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
-  std::unique_ptr<Hdf5XdmfWriter> writer_;
+  std::vector<std::unique_ptr<ResultsWriter>> writers_;
   std::unique_ptr<FieldOutput> field_output_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
 };

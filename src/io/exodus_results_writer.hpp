@@ -24,6 +24,7 @@
 /// or written, naming it; kiln::InternalError for a misuse), and the destructor closes the
 /// file.
 
+#include "io/results_writer.hpp"
 #include "mesh/mesh.hpp"
 
 #include <mpi.h>
@@ -34,7 +35,7 @@
 
 namespace kiln
 {
-class ExodusResultsWriter
+class ExodusResultsWriter final : public ResultsWriter
 {
 public:
   /// Creates `base_path`.exo (collective on `comm`) and writes the mesh. `owned_nodes` and
@@ -43,21 +44,21 @@ public:
   ExodusResultsWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                       const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
                       const std::vector<int> &cell_rank);
-  ~ExodusResultsWriter();
+  ~ExodusResultsWriter() override;
   ExodusResultsWriter(const ExodusResultsWriter &) = delete;
   ExodusResultsWriter &operator=(const ExodusResultsWriter &) = delete;
 
   /// Starts output step k (k = number of steps written before; Exodus time step k + 1).
-  void begin_step(double time, int cycle, double dt);
+  void begin_step(double time, int cycle, double dt) override;
   /// `values` holds n_components values per owned node, node after node. The name
   /// (letters, digits, '_', '-', '.') must be new in this step.
   void write_node_field(const std::string &name, int n_components,
-                        const std::vector<double> &values);
+                        const std::vector<double> &values) override;
   /// `values` holds n_components values per owned cell, cell after cell.
   void write_cell_field(const std::string &name, int n_components,
-                        const std::vector<double> &values);
+                        const std::vector<double> &values) override;
   /// Writes the step (the first one also defines the variables) and flushes the file.
-  void end_step();
+  void end_step() override;
 
   std::string exo_path() const;
 
