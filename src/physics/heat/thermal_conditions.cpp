@@ -4,6 +4,7 @@
 
 #include "physics/heat/convection_condition.hpp"
 #include "physics/heat/heat_flux_condition.hpp"
+#include "physics/heat/radiation_condition.hpp"
 #include "physics/heat/temperature_condition.hpp"
 
 namespace kiln
@@ -16,6 +17,7 @@ const BoundaryConditionRegistry &thermal_conditions()
     r.add<TemperatureCondition>("Temperature");
     r.add<HeatFluxCondition>("Heat Flux");
     r.add<ConvectionCondition>("Convection");
+    r.add<RadiationCondition>("Radiation");
     return r;
   }();
   return registry;
