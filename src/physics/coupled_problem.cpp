@@ -58,14 +58,16 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   terms_ = std::make_unique<ResidualTerms>(mesh, dofs, slots_);
   if (thermal_)
   {
-    terms_->add_cell_kernel(thermal_->conduction());
+    for (const CellKernel *kernel : thermal_->cell_kernels())
+      terms_->add_cell_kernel(*kernel);
     terms_->add_boundary_conditions(thermal_->conditions());
     if (gap != nullptr)
       terms_->set_interface_kernel(*gap);
   }
   if (mechanics_)
   {
-    terms_->add_cell_kernel(mechanics_->elasticity());
+    for (const CellKernel *kernel : mechanics_->cell_kernels())
+      terms_->add_cell_kernel(*kernel);
     terms_->add_boundary_conditions(mechanics_->conditions());
   }
 

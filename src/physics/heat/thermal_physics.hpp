@@ -36,6 +36,8 @@ public:
   /// k at the initial temperature [W/(m K)], the scale of the heat rows.
   double conductivity_scale() const;
   const HeatConductionKernel &conduction() const { return conduction_; }
+  /// The kernels of every cell (a new cell kernel of the heat equation is added here).
+  std::vector<const CellKernel *> cell_kernels() const { return {&conduction_}; }
   /// The terms across the gap, or nullptr if the mesh has none.
   const InterfaceKernel *gap_kernel() const { return gap_.get(); }
   const std::vector<std::unique_ptr<BoundaryCondition>> &conditions() const { return conditions_; }

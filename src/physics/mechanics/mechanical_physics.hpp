@@ -29,6 +29,8 @@ public:
                     const Mesh &mesh, const InteriorFaceCheck &interior, const std::string &where);
 
   const ElasticityKernel &elasticity() const { return elasticity_; }
+  /// The kernels of every cell (a new cell kernel of the mechanics is added here).
+  std::vector<const CellKernel *> cell_kernels() const { return {&elasticity_}; }
   /// lambda + 2G [Pa], the scale of the force rows.
   double modulus() const { return elasticity_.lambda() + 2.0 * elasticity_.shear_modulus(); }
   const std::vector<std::unique_ptr<BoundaryCondition>> &conditions() const { return conditions_; }
