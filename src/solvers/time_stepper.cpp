@@ -101,194 +101,254 @@ TimeStepper::TimeStepper(const Teuchos::ParameterList &p, const std::string &whe
                          << minimum_step_ << " s and \"Maximum Step\" = " << maximum_step_ << " s");
 }
 
+TimeStepper::State TimeStepper::initial_state(const double t0,
+                                              const NonlinearProblem::Vector &x0) const
+{
+  using Vector = NonlinearProblem::Vector;
+  State state;
+  state.time = t0;
+  state.next_step = initial_step_;
+  state.x = Teuchos::rcp(new Vector(x0, Teuchos::Copy));
+  state.x_1 = Teuchos::rcp(new Vector(x0.getMap()));
+  state.x_2 = Teuchos::rcp(new Vector(x0.getMap()));
+  return state;
+}
+
 TimeStepper::Statistics TimeStepper::run(TransientProblem &problem, NewtonSolver &newton,
                                          NonlinearProblem::Vector &x, const double t0,
                                          const std::vector<double> &output_times,
                                          const OutputFunction &output) const
 {
+  // The output function as an observer.
+  struct Output final : Observer
+  {
+    explicit Output(const OutputFunction &f) : f_(f) {}
+    void stop_time(const State &state) override
+    {
+      f_(state.time, state.statistics.steps, state.last_step, *state.x);
+    }
+    const OutputFunction &f_;
+  } observer(output);
+  State state = initial_state(t0, x);
+  run(problem, newton, state, output_times, observer);
+  Tpetra::deep_copy(x, *state.x);
+  return state.statistics;
+}
+
+NewtonSolver::Result TimeStepper::steady_solve(TransientProblem &problem, NewtonSolver &newton,
+                                               NonlinearProblem::Vector &x, const double time) const
+{
   using internal::seconds;
-  using Vector = NonlinearProblem::Vector;
-  const auto map = problem.solution_map();
-  Vector b(map), lte(map);
-  Statistics stats;
-  std::size_t next = 0;
+  NonlinearProblem::Vector b(problem.solution_map());
+  problem.set_time_derivative(time, 0.0, b);
+  const NewtonSolver::Result r = newton.solve(x);
+  if (!r.converged)
+    throw RunError(where_ + ": the steady solve at t = " + seconds(time) +
+                   " did not converge (|F| " + std::to_string(r.initial_residual_norm) + " -> " +
+                   std::to_string(r.final_residual_norm) +
+                   "); check the boundary conditions, or raise Solver/\"Maximum "
+                   "Iterations\"");
+  return r;
+}
+
+bool TimeStepper::run(TransientProblem &problem, NewtonSolver &newton, State &state,
+                      const std::vector<double> &stop_times, Observer &observer) const
+{
+  using internal::seconds;
   const auto same_time = [](const double a, const double c)
   { return std::abs(a - c) <= 1e-12 * std::max(1.0, std::abs(c)); };
+  std::size_t next = 0;
+  while (next < stop_times.size() && stop_times[next] < state.time &&
+         !same_time(stop_times[next], state.time))
+    ++next;
 
   if (method_ == Method::steady)
   {
-    for (; next < output_times.size(); ++next)
+    for (; next < stop_times.size(); ++next)
     {
-      const double t = output_times[next];
-      problem.set_time_derivative(t, 0.0, b);
-      const NewtonSolver::Result r = newton.solve(x);
-      if (!r.converged)
-        throw RunError(where_ + ": the steady solve at t = " + seconds(t) +
-                       " did not converge (|F| " + std::to_string(r.initial_residual_norm) +
-                       " -> " + std::to_string(r.final_residual_norm) +
-                       "); check the boundary conditions, or raise Solver/\"Maximum "
-                       "Iterations\"");
-      ++stats.steps;
-      stats.newton_iterations += r.newton_iterations;
-      stats.linear_iterations += r.linear_iterations;
-      *out_ << "steady solve " << next + 1 << ": t = " << seconds(t) << ", Newton "
+      const double t = stop_times[next];
+      const NewtonSolver::Result r = steady_solve(problem, newton, *state.x, t);
+      state.time = t;
+      ++state.accepted;
+      ++state.statistics.steps;
+      state.statistics.newton_iterations += r.newton_iterations;
+      state.statistics.linear_iterations += r.linear_iterations;
+      *out_ << "steady solve " << state.accepted << ": t = " << seconds(t) << ", Newton "
             << r.newton_iterations << " (" << r.linear_iterations << " linear), |F| "
             << std::scientific << std::setprecision(3) << r.initial_residual_norm << " -> "
             << r.final_residual_norm << std::defaultfloat << "\n";
-      problem.step_accepted(t, x);
-      output(t, static_cast<int>(next), 0.0, x);
+      problem.step_accepted(t, *state.x);
+      observer.step_accepted(state, r, -1.0);
+      observer.stop_time(state);
+      if (observer.stop_requested())
+        return next + 1 == stop_times.size();
     }
-    return stats;
+    return true;
   }
 
-  double t = t0;
-  if (next < output_times.size() && same_time(output_times[next], t0))
-    output(t0, 0, 0.0, x);
-  while (next < output_times.size() && output_times[next] <= t0 + 1e-12 * std::max(1.0, t0))
-    ++next;
-
-  Vector x_n(map), x_nm1(map), x_nm2(map);
-  Tpetra::deep_copy(x_n, x);
-  double k = 0.0;  // t_n - t_{n-1}
-  double k2 = 0.0; // t_{n-1} - t_{n-2}
-  int n_past = 0;  // accepted steps so far
-  double dt = initial_step_;
-  int attempts = 0;
-  bool newton_failed = false; // since the last accepted step
-
-  for (; next < output_times.size(); ++next)
+  if (next < stop_times.size() && same_time(stop_times[next], state.time))
   {
-    const double t_out = output_times[next];
-    while (!same_time(t, t_out))
-    {
-      if (++attempts > maximum_steps_)
-        throw RunError(where_ + "/\"Maximum Steps\": " + std::to_string(maximum_steps_) +
-                       " steps were taken before t = " + seconds(t_out) +
-                       " (now at t = " + seconds(t) + "); raise it or the step limits");
-      // The step: limited, then fitted to the output time.
-      const double wanted = std::min(dt, maximum_step_);
-      double h = n_past > 0 ? std::min(wanted, growth_factor_ * k) : wanted;
-      const double remaining = t_out - t;
-      bool lands = false;
-      if (h >= remaining * (1.0 - 1e-12))
-      {
-        h = remaining;
-        lands = true;
-      }
-      else if (h > 0.5 * remaining)
-        h = 0.5 * remaining;
-
-      // xdot = a x + b
-      const bool bdf2 = method_ == Method::bdf2 && n_past >= 1;
-      double a = 1.0 / h;
-      if (bdf2)
-      {
-        const double w = h / k;
-        a = (1.0 + 2.0 * w) / ((1.0 + w) * h);
-        b.update(-(1.0 + w) / h, x_n, w * w / ((1.0 + w) * h), x_nm1, 0.0);
-      }
-      else
-        b.update(-1.0 / h, x_n, 0.0);
-      problem.set_time_derivative(t + h, a, b);
-      Tpetra::deep_copy(x, x_n);
-      const NewtonSolver::Result r = newton.solve(x);
-
-      if (!r.converged)
-      {
-        ++stats.newton_failures;
-        newton_failed = true;
-        dt = h * step_reduction_;
-        std::ostringstream failure;
-        failure << "Newton did not converge in the step from t = " << seconds(t)
-                << " with dt = " << seconds(h) << " (|F| " << std::scientific
-                << std::setprecision(3) << r.initial_residual_norm << " -> "
-                << r.final_residual_norm << std::defaultfloat << " after " << r.newton_iterations
-                << " iterations)";
-        if (dt < minimum_step_)
-          throw RunError(where_ + ": " + failure.str() + "; the next step, " + seconds(dt) +
-                         ", would be below \"Minimum Step\" = " + seconds(minimum_step_) +
-                         ". The results up to t = " + seconds(t) +
-                         " are written. If |F| stalled near its tolerance, loosen Solver/"
-                         "\"Absolute Tolerance\" or \"Relative Tolerance\"; otherwise check the "
-                         "boundary conditions and material data, raise Solver/\"Maximum "
-                         "Iterations\", or lower \"Minimum Step\"");
-        *out_ << "  " << failure.str() << "; retrying with dt = " << seconds(dt) << "\n";
-        continue;
-      }
-
-      // The local error estimate.
-      const int order = bdf2 ? 2 : 1;
-      double error = -1.0;
-      if (error_control_ && (bdf2 ? n_past >= 2 : n_past >= 1))
-      {
-        if (bdf2)
-        {
-          const double l0 = (h + k) * (h + k + k2) / (k * (k + k2));
-          const double l1 = -h * (h + k + k2) / (k * k2);
-          const double l2 = h * (h + k) / ((k + k2) * k2);
-          const double ratio = h * (h + k) / (3 * h * h + 4 * h * k + 2 * h * k2 + k * k + k * k2);
-          lte.update(ratio, x, -ratio * l0, x_n, 0.0);
-          lte.update(-ratio * l1, x_nm1, -ratio * l2, x_nm2, 1.0);
-        }
-        else
-        {
-          const double ratio = h / (2 * h + k);
-          lte.update(ratio, x, -ratio * (1.0 + h / k), x_n, 0.0);
-          lte.update(ratio * h / k, x_nm1, 1.0);
-        }
-        error = internal::weighted_rms(lte, x, x_n, absolute_tolerance_, relative_tolerance_,
-                                       problem.time_error_mask().get());
-        if (error > 1.0)
-        {
-          ++stats.error_rejections;
-          dt = h * std::max(0.2, 0.9 * std::pow(error, -1.0 / (order + 1)));
-          *out_ << "  step from t = " << seconds(t) << " with dt = " << seconds(h)
-                << ": error estimate " << std::setprecision(3) << error
-                << " > 1; retrying with dt = " << seconds(dt) << "\n";
-          if (dt < minimum_step_)
-            throw RunError(where_ + ": the error estimate needs a step below \"Minimum Step\" = " +
-                           seconds(minimum_step_) + " at t = " + seconds(t) +
-                           "; lower it or loosen the error tolerances");
-          continue;
-        }
-      }
-
-      // Accept.
-      double factor = growth_factor_;
-      if (error >= 0.0)
-        factor =
-            std::min(growth_factor_,
-                     std::max(0.2, 0.9 * std::pow(std::max(error, 1e-10), -1.0 / (order + 1))));
-      // After a hard solve, or one that failed at a larger step, the next step does not grow.
-      if (2 * r.newton_iterations > newton.max_iterations() || newton_failed)
-        factor = std::min(factor, 1.0);
-      newton_failed = false;
-      Tpetra::deep_copy(x_nm2, x_nm1);
-      Tpetra::deep_copy(x_nm1, x_n);
-      Tpetra::deep_copy(x_n, x);
-      k2 = k;
-      k = h;
-      t = lands ? t_out : t + h;
-      ++n_past;
-      ++stats.steps;
-      stats.newton_iterations += r.newton_iterations;
-      stats.linear_iterations += r.linear_iterations;
-      dt = h * factor;
-      if (h < wanted && factor >= 1.0)
-        dt = std::max(dt, wanted);
-
-      std::ostringstream line;
-      line << "step " << stats.steps << ": t = " << seconds(t) << ", dt = " << seconds(h)
-           << (bdf2 ? " (BDF2)" : " (BE)") << ", Newton " << r.newton_iterations << " ("
-           << r.linear_iterations << " linear), |F| " << std::scientific << std::setprecision(3)
-           << r.initial_residual_norm << " -> " << r.final_residual_norm;
-      if (error >= 0.0)
-        line << ", error " << std::defaultfloat << std::setprecision(3) << error;
-      *out_ << line.str() << "\n";
-      problem.step_accepted(t, x);
-    }
-    output(t, stats.steps, k, x);
+    observer.stop_time(state);
+    ++next;
+    if (observer.stop_requested())
+      return next == stop_times.size();
   }
-  return stats;
+  for (; next < stop_times.size(); ++next)
+  {
+    const double t_out = stop_times[next];
+    while (!same_time(state.time, t_out))
+    {
+      NewtonSolver::Result r;
+      double error = -1.0;
+      if (!step(problem, newton, state, t_out, r, error))
+        continue;
+      const bool at_stop = same_time(state.time, t_out);
+      observer.step_accepted(state, r, error);
+      if (at_stop)
+        observer.stop_time(state);
+      if (observer.stop_requested())
+        return at_stop && next + 1 == stop_times.size();
+    }
+  }
+  return true;
+}
+
+bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &state,
+                       const double t_out, NewtonSolver::Result &r, double &error) const
+{
+  using internal::seconds;
+  using Vector = NonlinearProblem::Vector;
+  const auto map = problem.solution_map();
+  const double t = state.time;
+  const double k = state.last_step;
+  const double k2 = state.step_before;
+  const int n_past = state.accepted;
+  if (++state.attempts > maximum_steps_)
+    throw RunError(where_ + "/\"Maximum Steps\": " + std::to_string(maximum_steps_) +
+                   " steps were taken before t = " + seconds(t_out) + " (now at t = " + seconds(t) +
+                   "); raise it or the step limits");
+  // The step: limited, then fitted to the stop time.
+  const double wanted = std::min(state.next_step, maximum_step_);
+  double h = n_past > 0 ? std::min(wanted, growth_factor_ * k) : wanted;
+  const double remaining = t_out - t;
+  bool lands = false;
+  if (h >= remaining * (1.0 - 1e-12))
+  {
+    h = remaining;
+    lands = true;
+  }
+  else if (h > 0.5 * remaining)
+    h = 0.5 * remaining;
+
+  // xdot = a x + b
+  const bool bdf2 = method_ == Method::bdf2 && n_past >= 1;
+  Vector b(map), x(map);
+  double a = 1.0 / h;
+  if (bdf2)
+  {
+    const double w = h / k;
+    a = (1.0 + 2.0 * w) / ((1.0 + w) * h);
+    b.update(-(1.0 + w) / h, *state.x, w * w / ((1.0 + w) * h), *state.x_1, 0.0);
+  }
+  else
+    b.update(-1.0 / h, *state.x, 0.0);
+  problem.set_time_derivative(t + h, a, b);
+  Tpetra::deep_copy(x, *state.x);
+  r = newton.solve(x);
+
+  if (!r.converged)
+  {
+    ++state.statistics.newton_failures;
+    state.newton_failed = true;
+    state.next_step = h * step_reduction_;
+    std::ostringstream failure;
+    failure << "Newton did not converge in the step from t = " << seconds(t)
+            << " with dt = " << seconds(h) << " (|F| " << std::scientific << std::setprecision(3)
+            << r.initial_residual_norm << " -> " << r.final_residual_norm << std::defaultfloat
+            << " after " << r.newton_iterations << " iterations)";
+    if (state.next_step < minimum_step_)
+      throw RunError(where_ + ": " + failure.str() + "; the next step, " +
+                     seconds(state.next_step) + ", would be below \"Minimum Step\" = " +
+                     seconds(minimum_step_) + ". The results up to t = " + seconds(t) +
+                     " are written. If |F| stalled near its tolerance, loosen Solver/"
+                     "\"Absolute Tolerance\" or \"Relative Tolerance\"; otherwise check the "
+                     "boundary conditions and material data, raise Solver/\"Maximum "
+                     "Iterations\", or lower \"Minimum Step\"");
+    *out_ << "  " << failure.str() << "; retrying with dt = " << seconds(state.next_step) << "\n";
+    return false;
+  }
+
+  // The local error estimate.
+  const int order = bdf2 ? 2 : 1;
+  error = -1.0;
+  if (error_control_ && (bdf2 ? n_past >= 2 : n_past >= 1))
+  {
+    Vector lte(map);
+    if (bdf2)
+    {
+      const double l0 = (h + k) * (h + k + k2) / (k * (k + k2));
+      const double l1 = -h * (h + k + k2) / (k * k2);
+      const double l2 = h * (h + k) / ((k + k2) * k2);
+      const double ratio = h * (h + k) / (3 * h * h + 4 * h * k + 2 * h * k2 + k * k + k * k2);
+      lte.update(ratio, x, -ratio * l0, *state.x, 0.0);
+      lte.update(-ratio * l1, *state.x_1, -ratio * l2, *state.x_2, 1.0);
+    }
+    else
+    {
+      const double ratio = h / (2 * h + k);
+      lte.update(ratio, x, -ratio * (1.0 + h / k), *state.x, 0.0);
+      lte.update(ratio * h / k, *state.x_1, 1.0);
+    }
+    error = internal::weighted_rms(lte, x, *state.x, absolute_tolerance_, relative_tolerance_,
+                                   problem.time_error_mask().get());
+    if (error > 1.0)
+    {
+      ++state.statistics.error_rejections;
+      state.next_step = h * std::max(0.2, 0.9 * std::pow(error, -1.0 / (order + 1)));
+      *out_ << "  step from t = " << seconds(t) << " with dt = " << seconds(h)
+            << ": error estimate " << std::setprecision(3) << error
+            << " > 1; retrying with dt = " << seconds(state.next_step) << "\n";
+      if (state.next_step < minimum_step_)
+        throw RunError(where_ + ": the error estimate needs a step below \"Minimum Step\" = " +
+                       seconds(minimum_step_) + " at t = " + seconds(t) +
+                       "; lower it or loosen the error tolerances");
+      return false;
+    }
+  }
+
+  // Accept.
+  double factor = growth_factor_;
+  if (error >= 0.0)
+    factor = std::min(growth_factor_,
+                      std::max(0.2, 0.9 * std::pow(std::max(error, 1e-10), -1.0 / (order + 1))));
+  // After a hard solve, or one that failed at a larger step, the next step does not grow.
+  if (2 * r.newton_iterations > newton.max_iterations() || state.newton_failed)
+    factor = std::min(factor, 1.0);
+  state.newton_failed = false;
+  Tpetra::deep_copy(*state.x_2, *state.x_1);
+  Tpetra::deep_copy(*state.x_1, *state.x);
+  Tpetra::deep_copy(*state.x, x);
+  state.step_before = k;
+  state.last_step = h;
+  state.time = lands ? t_out : t + h;
+  ++state.accepted;
+  Statistics &stats = state.statistics;
+  ++stats.steps;
+  stats.newton_iterations += r.newton_iterations;
+  stats.linear_iterations += r.linear_iterations;
+  state.next_step = h * factor;
+  if (h < wanted && factor >= 1.0)
+    state.next_step = std::max(state.next_step, wanted);
+
+  std::ostringstream line;
+  line << "step " << stats.steps << ": t = " << seconds(state.time) << ", dt = " << seconds(h)
+       << (bdf2 ? " (BDF2)" : " (BE)") << ", Newton " << r.newton_iterations << " ("
+       << r.linear_iterations << " linear), |F| " << std::scientific << std::setprecision(3)
+       << r.initial_residual_norm << " -> " << r.final_residual_norm;
+  if (error >= 0.0)
+    line << ", error " << std::defaultfloat << std::setprecision(3) << error;
+  *out_ << line.str() << "\n";
+  problem.step_accepted(state.time, *state.x);
+  return true;
 }
 } // namespace kiln

@@ -2,6 +2,7 @@
 /// Implicit time integration with adaptive steps: backward Euler or variable-step
 /// BDF2 (or a sequence of steady solves), each step one Newton solve.
 #include "discretization/nonlinear_problem.hpp"
+#include "solvers/newton_solver.hpp"
 
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_ParameterList.hpp>
@@ -12,8 +13,6 @@
 
 namespace kiln
 {
-class NewtonSolver;
-
 /// Steps a TransientProblem F(x, xdot, t) = 0 from t0 through every output time.
 ///
 /// With h = t_{n+1} - t_n, k = t_n - t_{n-1}, w = h / k:
@@ -32,8 +31,11 @@ class NewtonSolver;
 /// than half of its allowed iterations, or that follows a failed attempt, keeps the next
 /// step from growing. Steps never
 /// exceed Maximum Step nor Growth Factor times the last step; they land exactly on every
-/// output time, and the last two steps before one are split evenly rather than leaving a
-/// sliver. Below Minimum Step the run stops with a RunError.
+/// stop time (output and checkpoint times), and the last two steps before one are split
+/// evenly rather than leaving a sliver. Below Minimum Step the run stops with a RunError.
+/// Everything the integration needs to go on from an accepted step is its State, so a run
+/// continued from a saved State (a checkpoint) takes the same steps as one that never
+/// stopped.
 class TimeStepper
 {
 public:
@@ -56,6 +58,46 @@ public:
     int linear_iterations = 0; ///< summed over accepted steps
   };
 
+  /// The integration after an accepted step (or at its start).
+  struct State
+  {
+    double time = 0.0;          ///< t_n [s]
+    double next_step = 0.0;     ///< the step the next attempt starts from [s]
+    double last_step = 0.0;     ///< t_n - t_{n-1} [s] (0 before the first step)
+    double step_before = 0.0;   ///< t_{n-1} - t_{n-2} [s]
+    int accepted = 0;           ///< accepted steps n
+    int attempts = 0;           ///< steps tried, accepted or repeated (for Maximum Steps)
+    bool newton_failed = false; ///< a Newton solve failed since the last accepted step
+    Statistics statistics;
+    Teuchos::RCP<NonlinearProblem::Vector> x;   ///< x_n
+    Teuchos::RCP<NonlinearProblem::Vector> x_1; ///< x_{n-1} (BDF2, error estimates)
+    Teuchos::RCP<NonlinearProblem::Vector> x_2; ///< x_{n-2}
+  };
+  /// The state at t0 with the unknowns x0 (copied); the next step is "Initial Step".
+  State initial_state(double t0, const NonlinearProblem::Vector &x0) const;
+
+  /// What the run is told between steps, and asked whether to go on.
+  class Observer
+  {
+  public:
+    virtual ~Observer() = default;
+    /// After every accepted step, with its Newton solve and its error estimate (-1: none).
+    virtual void step_accepted(const State & /*state*/, const NewtonSolver::Result & /*newton*/,
+                               double /*error*/)
+    {
+    }
+    /// At every stop time, reached exactly (after step_accepted).
+    virtual void stop_time(const State &state) = 0;
+    /// Asked after every accepted step and stop time (collective): true ends run() there.
+    virtual bool stop_requested() { return false; }
+  };
+
+  /// Integrates `state` through every stop time (increasing) at or after state.time: a stop
+  /// time equal to state.time is reached at once. Returns false if the observer stopped it
+  /// early. Collective.
+  bool run(TransientProblem &problem, NewtonSolver &newton, State &state,
+           const std::vector<double> &stop_times, Observer &observer) const;
+
   /// Integrates from (t0, x) through output_times (increasing, >= t0); x holds the state
   /// at the last output time on return. Collective.
   Statistics run(TransientProblem &problem, NewtonSolver &newton, NonlinearProblem::Vector &x,
@@ -63,6 +105,14 @@ public:
                  const OutputFunction &output) const;
 
 private:
+  /// One steady solve at `time`; throws RunError if it fails.
+  NewtonSolver::Result steady_solve(TransientProblem &problem, NewtonSolver &newton,
+                                    NonlinearProblem::Vector &x, double time) const;
+  /// Takes one step from `state` towards t_out; on acceptance updates state and returns true,
+  /// with the solve and the error estimate; false if the step is to be repeated.
+  bool step(TransientProblem &problem, NewtonSolver &newton, State &state, double t_out,
+            NewtonSolver::Result &result, double &error) const;
+
   enum class Method
   {
     steady,
