@@ -19,8 +19,17 @@ std::string usage()
          "options:\n"
          "  --mesh FILE.exo   use this Exodus II file as the mesh (Mesh/Type = \"Exodus\",\n"
          "                    Mesh/Exodus/\"File\" = FILE.exo)\n"
+         "  --restart FILE.h5 continue the run from this checkpoint (Kiln/Checkpoint); the\n"
+         "                    input may change the time stepping, solver, output and\n"
+         "                    checkpoints, not the problem\n"
          "\n"
-         "Exit status: 0 on success, 1 for an error in the input, the mesh or the command line.\n"
+         "SIGTERM or SIGINT (Ctrl-C) stop a run after its current step with a checkpoint\n"
+         "(under Open MPI's mpirun, give the ranks the time: export\n"
+         "OMPI_MCA_odls_base_sigkill_timeout=60); a second one ends it at once.\n"
+         "\n"
+         "Exit status: 0 on success, 1 for an error in the input, the mesh or the command line,\n"
+         "2 for a run that cannot go on (its last good state is written), 3 for a run stopped\n"
+         "by a signal (its checkpoint is written).\n"
          "Documentation: doc/user-guide.md\n";
 }
 
@@ -60,6 +69,8 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
     }
     else if (a == "--mesh")
       cl.mesh_file = value("an Exodus file name");
+    else if (a == "--restart")
+      cl.restart = value("a checkpoint file name (NAME.h5)");
     else if (a.rfind("-", 0) == 0)
       KILN_CHECK_INPUT(false, "command line", "unknown option \"" << a << "\"" << hint);
     else
@@ -77,6 +88,8 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
                    "no input file given; usage: kiln [options] INPUT.xml" << hint);
   KILN_CHECK_INPUT(needs_input || cl.input.empty(), "command line",
                    "an input file is not used with this option" << hint);
+  KILN_CHECK_INPUT(cl.restart.empty() || cl.mode == CommandLine::Mode::run, "command line",
+                   "--restart continues a run; it cannot be combined with another mode" << hint);
   return cl;
 }
 } // namespace kiln

@@ -20,6 +20,7 @@ struct CommandLine
   std::string input;       ///< the XML input file
   std::string mesh_file;   ///< --mesh FILE: an Exodus file that replaces the input's mesh
   std::string mesh_output; ///< --write-mesh OUT.exo
+  std::string restart;     ///< --restart CHECKPOINT.h5
 };
 
 /// Parses the arguments after the program name; throws InputError for a bad

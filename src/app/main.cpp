@@ -3,6 +3,7 @@
 #include "app/simulation.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
+#include "base/stop_request.hpp"
 #include "io/input_reader.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
@@ -46,7 +47,13 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
     return 0; // no phase of a run is timed: no timer table
   }
   else
-    simulation.run();
+  {
+    simulation.set_restart(cl.restart);
+    kiln::install_stop_handlers();
+    const kiln::Simulation::Ending ending = simulation.run();
+    Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
+    return ending == kiln::Simulation::Ending::finished ? 0 : 3;
+  }
   Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
   return 0;
 }
@@ -72,7 +79,7 @@ int main(int argc, char **argv)
     // Also raised alike on every rank (decided on reduced quantities).
     if (comm->getRank() == 0)
       std::cerr << "kiln: error: " << e.what() << "\n";
-    return 1;
+    return 2;
   }
   catch (const std::exception &e)
   {

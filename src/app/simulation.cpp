@@ -1,8 +1,12 @@
 #include "app/simulation.hpp"
 
+#include "app/checkpoint_schedule.hpp"
+#include "app/run_observer.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
 #include "base/parameters.hpp"
+#include "base/stop_request.hpp"
+#include "io/checkpoint.hpp"
 #include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
 #include "io/hdf5_xdmf_writer.hpp"
@@ -19,6 +23,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <kiln/version.hpp>
 
 #include <algorithm>
@@ -78,8 +83,12 @@ Teuchos::ParameterList Simulation::valid_parameters()
       .setParameters(TimeStepper::valid_parameters());
   p.sublist("Solver", false, "Newton (NOX) and linear solver (Belos, MueLu); see doc/solvers.md")
       .setParameters(NewtonSolver::valid_parameters());
-  p.sublist("Output", false, "results in HDF5 + XDMF; see doc/output-format.md")
+  p.sublist("Output", false, "results in HDF5 + XDMF and/or Exodus; see doc/output-format.md")
       .setParameters(internal::output_parameters());
+  p.sublist("Checkpoint", false,
+            "checkpoints to continue a run from (kiln INPUT.xml --restart FILE); see "
+            "doc/user-guide.md")
+      .setParameters(CheckpointSchedule::valid_parameters());
   return p;
 }
 
@@ -89,6 +98,9 @@ Simulation::Simulation(const Teuchos::ParameterList &input, const std::string &i
     : params_(validated(input, valid_parameters(), input_path, "Kiln")), input_path_(input_path),
       mesh_file_(mesh_file), comm_(comm), out_(rank0_stream(*comm))
 {
+  std::ostringstream xml;
+  Teuchos::writeParameterListToXmlOStream(input, xml);
+  input_xml_ = xml.str();
   const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
   for (int i = 0; i < times.size(); ++i)
     KILN_CHECK_INPUT(times[i] >= 0.0 && (i == 0 || times[i] > times[i - 1]),
@@ -149,42 +161,126 @@ void Simulation::setup()
   print_header();
 }
 
-void Simulation::run()
+Simulation::Ending Simulation::run()
 {
   setup();
-  solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
-  problem_->initial_condition(0.0, *solution_);
+  const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), output_base(),
+                                       input_path_ + ": Kiln/Checkpoint");
+  TimeStepper::State state;
+  int output_steps = 0;
+  if (restart_.empty())
   {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-    const std::string base = output_base();
-    if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
-    {
-      std::error_code ignored; // a failure shows when the writer opens the file
-      std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
-    }
-    comm_->barrier();
-    const MPI_Comm mpi_comm =
-        *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-    const std::string format = params_.sublist("Output").get<std::string>("Format");
-    if (format != "Exodus")
-      writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
-          mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
-    if (format != "HDF5")
-      writers_.push_back(std::make_unique<ExodusResultsWriter>(
-          mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
-    field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
+    solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
+    problem_->initial_condition(0.0, *solution_);
+    if (layout_.displacement)
+      equilibrate();
+    state = stepper_->initial_state(0.0, *solution_);
   }
-  if (layout_.displacement)
-    equilibrate();
-  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
-  const TimeStepper::Statistics stats =
-      stepper_->run(*problem_, *newton_, *solution_, 0.0, {times.begin(), times.end()},
-                    [this](const double t, const int cycle, const double dt,
-                           const NonlinearProblem::Vector &x) { output(t, cycle, dt, x); });
+  else
+  {
+    state = resume(output_steps);
+  }
+  open_results();
+  RunObserver observer({*problem_, mesh_, *field_output_, writers_, output_times(), checkpoints,
+                        RunFingerprint::of(mesh_, layout_, params_),
+                        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}},
+                        comm_, out_, output_files(false)},
+                       output_steps);
+  std::vector<double> stops = output_times();
+  stops.insert(stops.end(), checkpoints.times().begin(), checkpoints.times().end());
+  std::sort(stops.begin(), stops.end());
+  std::vector<double> stop_times;
+  for (const double t : stops)
+    if ((restart_.empty() ? t >= state.time : t > state.time * (1.0 + 1e-12) + 1e-12) &&
+        (stop_times.empty() || t > stop_times.back() * (1.0 + 1e-12) + 1e-12))
+      stop_times.push_back(t);
+
+  bool finished = false;
+  try
+  {
+    finished = stepper_->run(*problem_, *newton_, state, stop_times, observer);
+  }
+  catch (const RunError &)
+  {
+    // The last good state stays: written as an output step and as a checkpoint.
+    observer.output(state);
+    const std::string path = observer.checkpoint(state);
+    *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
+          << output_files(false) << " and " << path << "\n";
+    throw;
+  }
+  solution_ = state.x;
+  const TimeStepper::Statistics &stats = state.statistics;
+  if (!finished)
+  {
+    const std::string path = observer.checkpoint(state);
+    *out_ << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
+          << " s after step " << stats.steps << "; checkpoint " << path << "; continue with: kiln "
+          << input_path_ << " --restart " << path << "\n";
+    return Ending::stopped;
+  }
+  if (checkpoints.at_end())
+    observer.checkpoint(state);
   *out_ << "done: " << stats.steps << " steps (" << stats.error_rejections
         << " repeated for the error estimate, " << stats.newton_failures << " for Newton), "
         << stats.newton_iterations << " Newton and " << stats.linear_iterations
         << " linear iterations; results in " << output_files() << "\n";
+  return Ending::finished;
+}
+
+TimeStepper::State Simulation::resume(int &output_steps)
+{
+  Checkpoint c = read_checkpoint(restart_, problem_->solution_map(), *comm_);
+  const std::string difference =
+      RunFingerprint::of(mesh_, layout_, params_).difference(c.fingerprint);
+  KILN_CHECK_INPUT(difference.empty(), restart_,
+                   "cannot continue this run from the checkpoint: "
+                       << difference << " (the checkpoint was written by " << c.info.input_path
+                       << ")");
+  const int active = problem_->resume(c.state.time, *c.state.x);
+  int saved_active = 0;
+  for (const int a : c.info.active)
+    saved_active += a;
+  *out_ << "restart from " << restart_ << ": t = " << c.state.time << " s after step "
+        << c.state.statistics.steps << " (written " << c.info.created << " by Kiln "
+        << c.info.kiln_version << " from " << c.info.input_path << ")";
+  if (problem_->has_contact())
+    *out_ << "; " << active << " of " << problem_->n_pairs() << " gap pairs in contact";
+  *out_ << "\n";
+  if (active != saved_active)
+    *out_ << "warning: the checkpoint says " << saved_active
+          << " gap pairs were in contact; its state gives " << active << "\n";
+  output_steps = c.info.output_steps;
+  solution_ = c.state.x;
+  return c.state;
+}
+
+std::vector<double> Simulation::output_times() const
+{
+  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
+  return {times.begin(), times.end()};
+}
+
+void Simulation::open_results()
+{
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
+  const std::string base = output_base();
+  if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
+  {
+    std::error_code ignored; // a failure shows when the writer opens the file
+    std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
+  }
+  comm_->barrier();
+  const MPI_Comm mpi_comm =
+      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  const std::string format = params_.sublist("Output").get<std::string>("Format");
+  if (format != "Exodus")
+    writers_.push_back(std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
+                                                        dofs_->owned_cells(), cell_rank_));
+  if (format != "HDF5")
+    writers_.push_back(std::make_unique<ExodusResultsWriter>(
+        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
+  field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
 }
 
 void Simulation::equilibrate()
@@ -285,15 +381,6 @@ void Simulation::print_header() const
           : layout_.temperature                       ? "temperature"
                                                       : "displacement")
       << " at every node)\n";
-}
-
-void Simulation::output(const double time, const int cycle, const double dt,
-                        const NonlinearProblem::Vector &x)
-{
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-  for (const auto &writer : writers_)
-    field_output_->write(*writer, time, cycle, dt, x);
-  *out_ << "output: t = " << time << " s written to " << output_files(false) << "\n";
 }
 
 void Simulation::write_mesh(const std::string &path) const

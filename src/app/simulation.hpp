@@ -5,6 +5,7 @@
 #include "discretization/dof_manager.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
+#include "solvers/time_stepper.hpp"
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_FancyOStream.hpp>
@@ -20,7 +21,6 @@ class FieldOutput;
 class ResultsWriter;
 class NewtonSolver;
 class CoupledProblem;
-class TimeStepper;
 
 class Simulation
 {
@@ -37,8 +37,19 @@ public:
   /// Mesh, gap split, partition, unknowns, physics, solvers (so that every input
   /// error shows here); prints the header.
   void setup();
-  /// setup(), then the time integration, the state written at every output time.
-  void run();
+  /// How a run ended: at its last output time, or stopped by a signal after a step (with a
+  /// checkpoint to continue from).
+  enum class Ending
+  {
+    finished,
+    stopped
+  };
+  /// setup(), then the time integration from t = 0, or from the checkpoint of
+  /// set_restart(); the state written at every output time, checkpoints as asked. A
+  /// RunError leaves the last good state written (output and checkpoint) and goes on.
+  Ending run();
+  /// run() continues from this checkpoint (kiln --restart FILE).
+  void set_restart(const std::string &checkpoint) { restart_ = checkpoint; }
   /// The mesh before the split, as Exodus II (rank 0 writes).
   void write_mesh(const std::string &path) const;
 
@@ -61,13 +72,20 @@ public:
 
 private:
   void print_header() const;
-  void output(double time, int cycle, double dt, const NonlinearProblem::Vector &x);
+  /// The state of the checkpoint of set_restart(), checked against this run; the output
+  /// steps written before it.
+  TimeStepper::State resume(int &output_steps);
+  /// The results writers of Output/"Format" and the field output.
+  void open_results();
+  std::vector<double> output_times() const;
   /// Solves for the displacement at t = 0 with the temperature held at its initial value.
   void equilibrate();
 
   Teuchos::ParameterList params_;
   std::string input_path_;
+  std::string input_xml_; ///< the input as given
   std::string mesh_file_;
+  std::string restart_; ///< the checkpoint to continue from, or ""
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Mesh mesh_;

@@ -65,6 +65,12 @@ void ActiveSetMonitor::jacobian_evaluated(const std::vector<char> &active)
   last_ = active;
 }
 
+void ActiveSetMonitor::resume(const std::vector<char> &active)
+{
+  last_ = active;
+  accepted_active_ = count(active);
+}
+
 void ActiveSetMonitor::step_accepted(const double time, const std::vector<char> &active)
 {
   last_ = active;

@@ -31,6 +31,9 @@ public:
   /// A step ending at `time` is accepted with this active set: logs the gap closing or
   /// opening.
   void step_accepted(double time, const std::vector<char> &active);
+  /// A run continued from a saved state with this active set: no log line, and the next
+  /// changes are counted from it.
+  void resume(const std::vector<char> &active);
   /// Pairs in contact, over all ranks.
   int count(const std::vector<char> &active) const;
 

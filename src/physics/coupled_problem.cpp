@@ -193,6 +193,16 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
   contact_->monitor().step_accepted(time, contact_->active());
 }
 
+int CoupledProblem::resume(const double time, const Vector &x)
+{
+  constraints_.set_time(time);
+  if (!contact_)
+    return 0;
+  decide(x);
+  contact_->monitor().resume(contact_->active());
+  return contact_->monitor().count(contact_->active());
+}
+
 int CoupledProblem::n_active_pairs(const Vector &x)
 {
   if (!contact_)

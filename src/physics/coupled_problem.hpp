@@ -63,6 +63,9 @@ public:
   /// With a state x, holds every temperature at its value in x (rows T - T_x) for an
   /// equilibrium solve of the displacement at fixed temperature; with nullptr, releases it.
   void freeze_temperature(const Vector *x);
+  /// A run goes on from the saved state x (a checkpoint) at `time`: the contact monitor
+  /// starts from its active set. Returns the pairs in contact. Collective.
+  int resume(double time, const Vector &x);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;

@@ -1,0 +1,398 @@
+#include "io/checkpoint.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <hdf5.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+/// An HDF5 handle closed by `close` at the end of its scope; invalid (< 0) handles raise
+/// the error `what`.
+class H5
+{
+public:
+  H5(const hid_t id, herr_t (*close)(hid_t), const std::string &what) : id_(id), close_(close)
+  {
+    if (id < 0)
+      throw std::runtime_error(what);
+  }
+  ~H5() { close_(id_); }
+  H5(const H5 &) = delete;
+  H5 &operator=(const H5 &) = delete;
+  operator hid_t() const { return id_; }
+
+private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(const herr_t status, const std::string &what)
+{
+  if (status < 0)
+    throw std::runtime_error(what);
+}
+
+void write_attribute(const hid_t object, const std::string &name, const double value)
+{
+  const H5 space(H5Screate(H5S_SCALAR), H5Sclose, "dataspace");
+  const H5 a(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT),
+             H5Aclose, "attribute " + name);
+  check(H5Awrite(a, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
+}
+
+void write_attribute(const hid_t object, const std::string &name, const int value)
+{
+  const H5 space(H5Screate(H5S_SCALAR), H5Sclose, "dataspace");
+  const H5 a(H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT),
+             H5Aclose, "attribute " + name);
+  check(H5Awrite(a, H5T_NATIVE_INT, &value), "attribute " + name);
+}
+
+/// A fixed-length string type of `size` characters (at least 1).
+hid_t string_type(const std::size_t size)
+{
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, std::max<std::size_t>(size, 1));
+  return type;
+}
+
+void write_attribute(const hid_t object, const std::string &name, const std::string &value)
+{
+  const H5 type(string_type(value.size()), H5Tclose, "string type");
+  const H5 space(H5Screate(H5S_SCALAR), H5Sclose, "dataspace");
+  const H5 a(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+             "attribute " + name);
+  check(H5Awrite(a, type, value.empty() ? "" : value.data()), "attribute " + name);
+}
+
+void write_string(const hid_t group, const std::string &name, const std::string &value)
+{
+  const H5 type(string_type(value.size()), H5Tclose, "string type");
+  const H5 space(H5Screate(H5S_SCALAR), H5Sclose, "dataspace");
+  const H5 d(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose, "dataset " + name);
+  check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.empty() ? "" : value.data()),
+        "dataset " + name);
+}
+
+template <typename T>
+void write_array(const hid_t group, const std::string &name, const std::vector<T> &values,
+                 const hsize_t columns)
+{
+  const hsize_t dims[2] = {values.size() / columns, columns};
+  const H5 space(H5Screate_simple(columns > 1 ? 2 : 1, dims, nullptr), H5Sclose, "dataspace");
+  const hid_t file_type = std::is_same_v<T, double> ? H5T_IEEE_F64LE : H5T_STD_I32LE;
+  const hid_t memory_type = std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT;
+  const H5 d(
+      H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose, "dataset " + name);
+  check(H5Dwrite(d, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "dataset " + name);
+}
+
+template <typename T> T read_attribute(const hid_t object, const std::string &name)
+{
+  const H5 a(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
+  T value{};
+  check(H5Aread(a, std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, &value),
+        "attribute " + name);
+  return value;
+}
+
+std::string read_string(const hid_t object, const std::string &name, const bool attribute)
+{
+  const std::string what = (attribute ? "attribute " : "dataset ") + name;
+  const H5 item(attribute ? H5Aopen(object, name.c_str(), H5P_DEFAULT)
+                          : H5Dopen2(object, name.c_str(), H5P_DEFAULT),
+                attribute ? H5Aclose : H5Dclose, what);
+  const H5 type(attribute ? H5Aget_type(item) : H5Dget_type(item), H5Tclose, what);
+  if (H5Tget_class(type) != H5T_STRING)
+    throw std::runtime_error(what + " is not a string");
+  std::string value(H5Tget_size(type), '\0');
+  check(attribute ? H5Aread(item, type, value.data())
+                  : H5Dread(item, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data()),
+        what);
+  value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+  return value;
+}
+
+template <typename T>
+std::vector<T> read_array(const hid_t group, const std::string &name, const std::size_t size)
+{
+  const H5 d(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  const H5 space(H5Dget_space(d), H5Sclose, "dataset " + name);
+  if (static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)) != size)
+    throw std::runtime_error("dataset " + name + " has " +
+                             std::to_string(H5Sget_simple_extent_npoints(space)) +
+                             " values where " + std::to_string(size) + " are expected");
+  std::vector<T> values(size);
+  check(H5Dread(d, std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL,
+                H5P_DEFAULT, values.data()),
+        "dataset " + name);
+  return values;
+}
+
+/// 64-bit FNV-1a of the bytes of `data`, continued from `hash`.
+template <typename T> std::uint64_t fnv1a(const std::vector<T> &data, std::uint64_t hash)
+{
+  const auto *bytes = reinterpret_cast<const unsigned char *>(data.data());
+  for (std::size_t i = 0; i < data.size() * sizeof(T); ++i)
+    hash = (hash ^ bytes[i]) * 1099511628211ull;
+  return hash;
+}
+
+/// The values of `x` on rank 0, in global-id order (empty elsewhere).
+std::vector<double> gather(const Tpetra::Vector<> &x)
+{
+  const auto map = x.getMap();
+  const auto n = map->getGlobalNumElements();
+  const bool root = map->getComm()->getRank() == 0;
+  const auto root_map = Teuchos::rcp(new Map(n, root ? n : 0, 0, map->getComm()));
+  Tpetra::Vector<> on_root(root_map);
+  on_root.doImport(x, Tpetra::Import<>(map, root_map), Tpetra::INSERT);
+  const auto values = on_root.getData();
+  return std::vector<double>(values.begin(), values.end());
+}
+
+const char *const physics_blocks[] = {"Mesh", "Material", "Thermal", "Mechanics"};
+} // namespace internal
+
+RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
+                                  const Teuchos::ParameterList &input)
+{
+  RunFingerprint f;
+  f.n_nodes = mesh.n_nodes();
+  f.n_cells = mesh.n_cells();
+  f.n_pairs = static_cast<int>(mesh.gap_pairs.size());
+  f.gap_side_set = mesh.gap_side_set;
+  std::vector<double> coordinates;
+  for (const Point &x : mesh.coordinates)
+    coordinates.insert(coordinates.end(), x.begin(), x.end());
+  std::vector<int> cells;
+  for (const auto &c : mesh.connectivity)
+    cells.insert(cells.end(), c.begin(), c.end());
+  std::uint64_t hash = 14695981039346656037ull;
+  hash = internal::fnv1a(coordinates, hash);
+  hash = internal::fnv1a(cells, hash);
+  hash = internal::fnv1a(mesh.block_id, hash);
+  std::ostringstream hex;
+  hex << std::hex << std::setw(16) << std::setfill('0') << hash;
+  f.mesh_hash = hex.str();
+  f.layout = std::string(layout.temperature ? "temperature " : "") +
+             (layout.displacement ? "displacement " : "") + (layout.contact ? "contact" : "");
+  f.physics.emplace_back("Kiln/\"Physics\"", input.get<std::string>("Physics"));
+  for (const char *block : internal::physics_blocks)
+  {
+    std::ostringstream xml;
+    Teuchos::writeParameterListToXmlOStream(input.sublist(block), xml);
+    f.physics.emplace_back(std::string("Kiln/") + block, xml.str());
+  }
+  return f;
+}
+
+std::string RunFingerprint::difference(const RunFingerprint &saved) const
+{
+  std::ostringstream d;
+  if (n_nodes != saved.n_nodes || n_cells != saved.n_cells || n_pairs != saved.n_pairs ||
+      gap_side_set != saved.gap_side_set)
+    d << "the mesh differs: the checkpoint's has " << saved.n_cells << " cells, " << saved.n_nodes
+      << " nodes and " << saved.n_pairs << " gap pairs (gap side set " << saved.gap_side_set
+      << "); this input's has " << n_cells << " cells, " << n_nodes << " nodes and " << n_pairs
+      << " gap pairs (gap side set " << gap_side_set << ")";
+  else if (mesh_hash != saved.mesh_hash)
+    d << "the mesh differs: it has the checkpoint's sizes but other coordinates or cells "
+         "(fingerprint "
+      << mesh_hash << ", the checkpoint's " << saved.mesh_hash << ")";
+  else if (layout != saved.layout)
+    d << "the unknowns differ: the checkpoint has " << saved.layout << ", this input " << layout;
+  else
+    for (std::size_t i = 0; i < physics.size() && i < saved.physics.size(); ++i)
+      if (physics[i] != saved.physics[i])
+      {
+        d << physics[i].first
+          << " differs from the checkpoint's; a restart may change the time stepping, the "
+             "solver, the output and the checkpoints, not the problem";
+        break;
+      }
+  return d.str();
+}
+
+void write_checkpoint(const std::string &path, const TimeStepper::State &state,
+                      const CheckpointInfo &info, const RunFingerprint &fingerprint,
+                      const Teuchos::Comm<int> &comm)
+{
+  using namespace internal;
+  // Gathered on rank 0 in global-id order (node-major: the file's rows are nodes).
+  const std::vector<double> x = gather(*state.x), x_1 = gather(*state.x_1),
+                            x_2 = gather(*state.x_2);
+  const hsize_t F = static_cast<hsize_t>(state.x->getMap()->getGlobalNumElements()) /
+                    static_cast<hsize_t>(fingerprint.n_nodes);
+  std::string error;
+  if (comm.getRank() == 0)
+  {
+    const std::string tmp = path + ".tmp";
+    try
+    {
+      {
+        const H5 file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                      "cannot create the file");
+        write_attribute(file, "format", std::string("kiln checkpoint"));
+        write_attribute(file, "format_version", checkpoint_format_version);
+        write_attribute(file, "kiln_version", info.kiln_version);
+        write_attribute(file, "created", info.created);
+        write_attribute(file, "input_path", info.input_path);
+        write_string(file, "input", info.input_xml);
+
+        const H5 print(H5Gcreate2(file, "fingerprint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                       H5Gclose, "group fingerprint");
+        write_attribute(print, "n_nodes", fingerprint.n_nodes);
+        write_attribute(print, "n_cells", fingerprint.n_cells);
+        write_attribute(print, "n_pairs", fingerprint.n_pairs);
+        write_attribute(print, "gap_side_set", fingerprint.gap_side_set);
+        write_attribute(print, "mesh_hash", fingerprint.mesh_hash);
+        write_attribute(print, "layout", fingerprint.layout);
+        write_attribute(print, "n_physics", static_cast<int>(fingerprint.physics.size()));
+        for (std::size_t i = 0; i < fingerprint.physics.size(); ++i)
+        {
+          write_attribute(print, "physics_name_" + std::to_string(i), fingerprint.physics[i].first);
+          write_string(print, "physics_" + std::to_string(i), fingerprint.physics[i].second);
+        }
+
+        const H5 s(H5Gcreate2(file, "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                   "group state");
+        write_attribute(s, "time", state.time);
+        write_attribute(s, "next_step", state.next_step);
+        write_attribute(s, "last_step", state.last_step);
+        write_attribute(s, "step_before", state.step_before);
+        write_attribute(s, "accepted", state.accepted);
+        write_attribute(s, "attempts", state.attempts);
+        write_attribute(s, "newton_failed", state.newton_failed ? 1 : 0);
+        const TimeStepper::Statistics &stats = state.statistics;
+        write_attribute(s, "steps", stats.steps);
+        write_attribute(s, "error_rejections", stats.error_rejections);
+        write_attribute(s, "newton_failures", stats.newton_failures);
+        write_attribute(s, "newton_iterations", stats.newton_iterations);
+        write_attribute(s, "linear_iterations", stats.linear_iterations);
+        write_attribute(s, "output_steps", info.output_steps);
+        write_array(s, "x", x, F);
+        write_array(s, "x_1", x_1, F);
+        write_array(s, "x_2", x_2, F);
+
+        const H5 contact(H5Gcreate2(file, "contact", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                         H5Gclose, "group contact");
+        write_array(contact, "active", info.active, 1);
+        write_array(contact, "gap_normal_traction", info.traction, 1);
+      }
+      std::filesystem::rename(tmp, path);
+    }
+    catch (const std::exception &e)
+    {
+      std::error_code ignored;
+      std::filesystem::remove(tmp, ignored);
+      error = e.what();
+    }
+  }
+  check_collectively(comm, error.empty(), path,
+                     "cannot write the checkpoint (" + error +
+                         "); check that its folder exists and is writable (Kiln/Checkpoint/"
+                         "\"File Base\")");
+}
+
+Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map> &map,
+                           const Teuchos::Comm<int> &comm)
+{
+  using namespace internal;
+  Checkpoint c;
+  std::string error;
+  std::vector<double> x, x_1, x_2;
+  try
+  {
+    if (!std::filesystem::is_regular_file(path))
+      throw std::runtime_error("no such file");
+    const H5 file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                  "not an HDF5 file, or a damaged (truncated) one");
+    if (H5Aexists(file, "format") <= 0 || read_string(file, "format", true) != "kiln checkpoint")
+      throw std::runtime_error("not a Kiln checkpoint (a results file? checkpoints are written "
+                               "by Kiln/Checkpoint)");
+    const int version = read_attribute<int>(file, "format_version");
+    if (version != checkpoint_format_version)
+      throw std::runtime_error("format version " + std::to_string(version) +
+                               ", but this Kiln reads version " +
+                               std::to_string(checkpoint_format_version));
+    c.info.kiln_version = read_string(file, "kiln_version", true);
+    c.info.created = read_string(file, "created", true);
+    c.info.input_path = read_string(file, "input_path", true);
+    c.info.input_xml = read_string(file, "input", false);
+
+    const H5 print(H5Gopen2(file, "fingerprint", H5P_DEFAULT), H5Gclose, "group fingerprint");
+    RunFingerprint &f = c.fingerprint;
+    f.n_nodes = read_attribute<int>(print, "n_nodes");
+    f.n_cells = read_attribute<int>(print, "n_cells");
+    f.n_pairs = read_attribute<int>(print, "n_pairs");
+    f.gap_side_set = read_attribute<int>(print, "gap_side_set");
+    f.mesh_hash = read_string(print, "mesh_hash", true);
+    f.layout = read_string(print, "layout", true);
+    const int n_physics = read_attribute<int>(print, "n_physics");
+    for (int i = 0; i < n_physics; ++i)
+      f.physics.emplace_back(read_string(print, "physics_name_" + std::to_string(i), true),
+                             read_string(print, "physics_" + std::to_string(i), false));
+
+    const H5 s(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "group state");
+    TimeStepper::State &state = c.state;
+    state.time = read_attribute<double>(s, "time");
+    state.next_step = read_attribute<double>(s, "next_step");
+    state.last_step = read_attribute<double>(s, "last_step");
+    state.step_before = read_attribute<double>(s, "step_before");
+    state.accepted = read_attribute<int>(s, "accepted");
+    state.attempts = read_attribute<int>(s, "attempts");
+    state.newton_failed = read_attribute<int>(s, "newton_failed") != 0;
+    state.statistics.steps = read_attribute<int>(s, "steps");
+    state.statistics.error_rejections = read_attribute<int>(s, "error_rejections");
+    state.statistics.newton_failures = read_attribute<int>(s, "newton_failures");
+    state.statistics.newton_iterations = read_attribute<int>(s, "newton_iterations");
+    state.statistics.linear_iterations = read_attribute<int>(s, "linear_iterations");
+    c.info.output_steps = read_attribute<int>(s, "output_steps");
+    const std::size_t n = map->getGlobalNumElements();
+    if (n % static_cast<std::size_t>(std::max(f.n_nodes, 1)) != 0)
+      throw std::runtime_error("its " + std::to_string(f.n_nodes) +
+                               " nodes do not fit this run's " + std::to_string(n) + " unknowns");
+    x = read_array<double>(s, "x", n);
+    x_1 = read_array<double>(s, "x_1", n);
+    x_2 = read_array<double>(s, "x_2", n);
+
+    const H5 contact(H5Gopen2(file, "contact", H5P_DEFAULT), H5Gclose, "group contact");
+    c.info.active = read_array<int>(contact, "active", f.n_pairs);
+    c.info.traction = read_array<double>(contact, "gap_normal_traction", f.n_pairs);
+  }
+  catch (const std::exception &e)
+  {
+    error = e.what();
+  }
+  check_collectively(comm, error.empty(), path,
+                     "cannot read the checkpoint: " + error +
+                         ". Give a checkpoint written by Kiln/Checkpoint (a file NAME-NNNNNN.h5 "
+                         "or NAME.h5 of its \"File Base\")");
+  // The owned unknowns.
+  TimeStepper::State &state = c.state;
+  for (auto *target : {&state.x, &state.x_1, &state.x_2})
+    *target = Teuchos::rcp(new Tpetra::Vector<>(map));
+  const std::vector<double> *sources[] = {&x, &x_1, &x_2};
+  Teuchos::RCP<Tpetra::Vector<>> targets[] = {state.x, state.x_1, state.x_2};
+  for (int v = 0; v < 3; ++v)
+  {
+    auto values = targets[v]->getDataNonConst();
+    for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+      values[i] = (*sources[v])[map->getGlobalElement(static_cast<LO>(i))];
+  }
+  return c;
+}
+} // namespace kiln

@@ -1,0 +1,76 @@
+#pragma once
+/// Checkpoints: everything a run needs to continue exactly, in one HDF5 file
+/// (doc/user-guide.md, "Checkpoints and restart").
+#include "discretization/dof_manager.hpp"
+#include "mesh/mesh.hpp"
+#include "solvers/time_stepper.hpp"
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace kiln
+{
+/// What a checkpoint must match to continue a run: the mesh (its sizes and a hash of its
+/// coordinates, cells, blocks and gap), the unknowns (the layout) and the blocks of the input
+/// that define the problem (Physics, Mesh, Material, Thermal, Mechanics). The time stepping,
+/// solver, output and checkpoint blocks may change on a restart.
+struct RunFingerprint
+{
+  int n_nodes = 0;
+  int n_cells = 0;
+  int n_pairs = 0;
+  int gap_side_set = 0;
+  std::string mesh_hash; ///< 16 hex digits
+  std::string layout;    ///< e.g. "temperature displacement contact"
+  /// (block path, the block as validated, in XML), in input order.
+  std::vector<std::pair<std::string, std::string>> physics;
+
+  /// The fingerprint of a run: its split mesh, layout and validated input ("Kiln").
+  static RunFingerprint of(const Mesh &mesh, const DofLayout &layout,
+                           const Teuchos::ParameterList &validated_input);
+  /// What differs between this run and a checkpoint's `saved` one, or "" if nothing.
+  std::string difference(const RunFingerprint &saved) const;
+};
+
+/// A checkpoint's content besides the time-integration state.
+struct CheckpointInfo
+{
+  std::string kiln_version;
+  std::string created;    ///< UTC, ISO 8601
+  std::string input_path; ///< the input it ran with
+  std::string input_xml;  ///< that input, as given
+  int output_steps = 0;   ///< output steps written before it
+  /// Per gap pair (Mesh::gap_pairs order): 1 in contact, and the normal traction [Pa].
+  std::vector<int> active;
+  std::vector<double> traction;
+};
+
+/// Writes `state` (on the owned map of the unknowns), `info` and `fingerprint` to `path`:
+/// rank 0 writes `path`.tmp and renames it when complete, so a crash never leaves a
+/// truncated checkpoint in place of a good one. Throws InputError (on every rank) naming
+/// the path if it cannot be written. Collective.
+void write_checkpoint(const std::string &path, const TimeStepper::State &state,
+                      const CheckpointInfo &info, const RunFingerprint &fingerprint,
+                      const Teuchos::Comm<int> &comm);
+
+/// A checkpoint read back.
+struct Checkpoint
+{
+  TimeStepper::State state; ///< x, x_1, x_2 on the map given to read_checkpoint
+  CheckpointInfo info;
+  RunFingerprint fingerprint;
+};
+
+/// Reads a checkpoint; the unknowns land on `map` (any number of ranks). Throws InputError
+/// naming `path` for a missing, damaged (truncated) or foreign file, another format
+/// version, or unknowns that do not fit `map`. Collective.
+Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map> &map,
+                           const Teuchos::Comm<int> &comm);
+
+/// The version of the checkpoint format this Kiln writes and reads.
+inline constexpr int checkpoint_format_version = 1;
+} // namespace kiln
