@@ -4,6 +4,7 @@
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
 #include <algorithm>
@@ -201,6 +202,43 @@ int CoupledProblem::resume(const double time, const Vector &x)
   decide(x);
   contact_->monitor().resume(contact_->active());
   return contact_->monitor().count(contact_->active());
+}
+
+std::vector<double> CoupledProblem::gap_heat_flux(const Vector &x)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> flux(mesh_.n_nodes(), nan);
+  if (!thermal_ || mesh_.gap_pairs.empty())
+    return flux;
+  prepare(x);
+  // The gap terms' heat rows at the side-a nodes [W], summed over the ranks.
+  std::vector<double> local(mesh_.n_nodes(), 0.0), flow(local.size(), 0.0);
+  terms_->evaluate_gap_faces(*fields_, false,
+                             [&](const std::vector<int> &nodes, LocalSystem &system)
+                             {
+                               for (int i = 0; i < 4; ++i)
+                                 local[nodes[i]] += system.residual(slots_.T, i);
+                             });
+  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
+                     static_cast<int>(local.size()), local.data(), flow.data());
+  for (const GapPair &pair : mesh_.gap_pairs)
+    flux[pair.node_a] = flux[pair.node_b] = flow[pair.node_a] / pair.area;
+  return flux;
+}
+
+StateSummary CoupledProblem::summary(const Vector &x)
+{
+  StateSummary s;
+  if (contact_)
+  {
+    decide(x);
+    summarize_contact(*interface_, *contact_, *fields_, *dofs_.owned_dof_map()->getComm(), s);
+  }
+  else
+    prepare(x);
+  if (thermal_)
+    summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction().heat_capacity(), s);
+  return s;
 }
 
 int CoupledProblem::n_active_pairs(const Vector &x)

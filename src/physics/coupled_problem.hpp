@@ -11,6 +11,7 @@
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
 #include "physics/residual_terms.hpp"
+#include "physics/state_summary.hpp"
 #include "solvers/solver_hints.hpp"
 
 #include <Teuchos_FancyOStream.hpp>
@@ -81,6 +82,12 @@ public:
   /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap.
   using ContactOutput = NormalContact::NodeValues;
   ContactOutput contact_output(const Vector &x);
+  /// The heat flux across the gap at x per mesh node, on every rank: at the nodes of side a,
+  /// the heat their gap-face terms carry to side b divided by the pair's area, the same at
+  /// the twin (negative: heat flows from b to a) [W/m^2]; NaN off the gap.
+  std::vector<double> gap_heat_flux(const Vector &x);
+  /// The figures of the state x for a time history.
+  StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.
   int n_active_pairs(const Vector &x);
   int n_pairs() const { return interface_ ? interface_->n_pairs() : 0; }

@@ -31,11 +31,12 @@ public:
 
   /// Evaluates every term at `fields` into systems with or without a Jacobian.
   void evaluate(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+  /// The gap-face terms alone (the heat across the gap, for output).
+  void evaluate_gap_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
 
 private:
   void evaluate_cells(const NodalFields &fields, bool jacobian, const Sink &sink) const;
   void evaluate_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
-  void evaluate_gap_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
 
   struct BoundaryFace
   {

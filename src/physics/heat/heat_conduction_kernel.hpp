@@ -34,6 +34,8 @@ public:
   void evaluate(const CellState &state, LocalSystem &local) const override;
   /// k(T).
   const ConductivityModel &conductivity() const { return conductivity_; }
+  /// rho c [J/(m^3 K)].
+  double heat_capacity() const { return rho_c_; }
 
 private:
   double rho_c_;
