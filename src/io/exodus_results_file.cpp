@@ -1,0 +1,121 @@
+#include "io/exodus_results_file.hpp"
+
+#include "base/errors.hpp"
+
+#include <exodusII.h>
+
+#include <filesystem>
+
+namespace kiln
+{
+namespace internal
+{
+ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
+                                     const std::vector<int> &cell_rank)
+    : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells())
+{
+  const std::filesystem::path parent = std::filesystem::path(path_).parent_path();
+  std::error_code ignored;
+  KILN_CHECK_INPUT(parent.empty() || std::filesystem::is_directory(parent, ignored), path_,
+                   "cannot create the results file: the folder \""
+                       << parent.string()
+                       << "\" does not exist; create it or choose another output path");
+  int comp_ws = sizeof(double), io_ws = sizeof(double);
+  // Classic netCDF (not netCDF-4/HDF5): a reader sees the steps up to the last flush,
+  // and a writer that dies between flushes leaves them readable.
+  exo_ = ex_create(path_.c_str(), EX_CLOBBER | EX_LARGE_MODEL, &comp_ws, &io_ws);
+  KILN_CHECK_INPUT(exo_ >= 0, path_,
+                   "cannot create the results file; check that its folder is writable, or "
+                   "choose another output path");
+  try
+  {
+    layout_ = exodus_layout(mesh, mesh.gap_side_set);
+    put_exodus_mesh(exo_, path_, mesh, layout_, "Kiln results", ExodusVariables::max_name_length,
+                    &cell_rank);
+    check_exodus_write(ex_update(exo_), path_, "flushing the file");
+  }
+  catch (...)
+  {
+    ex_close(exo_); // the destructor does not run for a constructor that throws
+    throw;
+  }
+}
+
+ExodusResultsFile::~ExodusResultsFile()
+{
+  ex_close(exo_);
+}
+
+void ExodusResultsFile::define_variables(const ExodusVariables &variables) const
+{
+  ExodusNames globals({"dt", "cycle"});
+  check_exodus_write(ex_put_variable_param(exo_, EX_GLOBAL, 2), path_,
+                     "defining the global variables");
+  check_exodus_write(ex_put_variable_names(exo_, EX_GLOBAL, 2, globals.data()), path_,
+                     "naming the global variables");
+  for (const Center center : {Center::node, Center::cell})
+  {
+    const std::vector<std::string> names = variables.names_of(center);
+    if (names.empty())
+      continue;
+    const ex_entity_type type = center == Center::node ? EX_NODAL : EX_ELEM_BLOCK;
+    const int n = static_cast<int>(names.size());
+    const std::string what = std::string("defining the ") + kind_of(center) + " variables";
+    check_exodus_write(ex_put_variable_param(exo_, type, n), path_, what);
+    ExodusNames buffers(names);
+    check_exodus_write(ex_put_variable_names(exo_, type, n, buffers.data()), path_, what);
+    if (type == EX_ELEM_BLOCK)
+    {
+      // Every element variable on every block.
+      const int n_blocks = static_cast<int>(layout_.block_ids.size());
+      std::vector<int> truth(static_cast<std::size_t>(n_blocks) * n, 1);
+      check_exodus_write(ex_put_truth_table(exo_, EX_ELEM_BLOCK, n_blocks, n, truth.data()), path_,
+                         "writing the element variable truth table");
+    }
+  }
+}
+
+void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &variables) const
+{
+  const int exodus_step = step.index + 1; // Exodus counts from 1
+  const std::string what = "writing output step " + std::to_string(step.index);
+  check_exodus_write(ex_put_time(exo_, exodus_step, &step.time), path_, what);
+  const double globals[2] = {step.dt, static_cast<double>(step.cycle)};
+  check_exodus_write(ex_put_glob_vars(exo_, exodus_step, 2, globals), path_, what);
+  for (std::size_t f = 0; f < step.fields.size(); ++f)
+  {
+    const FieldSpec &field = step.fields[f];
+    const std::vector<double> &values = step.values[f];
+    const int first = variables.first_index(field);
+    const std::vector<int> components = ExodusVariables::components(field.n_components);
+    const std::string field_what = what + ", field \"" + field.name + "\"";
+    const std::size_t n_rows = field.center == Center::node ? n_nodes_ : n_cells_;
+    for (int k = 0; k < field.n_components; ++k)
+    {
+      const double *data = values.data() + static_cast<std::size_t>(components[k]) * n_rows;
+      if (field.center == Center::node)
+        check_exodus_write(ex_put_var(exo_, exodus_step, EX_NODAL, first + k, 1, n_nodes_, data),
+                           path_, field_what);
+      else
+        write_cell_variable(exodus_step, first + k, data, field_what);
+    }
+  }
+  check_exodus_write(ex_update(exo_), path_, "flushing the file after " + what);
+}
+
+/// The values of all cells, block after block.
+void ExodusResultsFile::write_cell_variable(const int step, const int variable,
+                                            const double *values, const std::string &what) const
+{
+  for (std::size_t b = 0; b < layout_.block_ids.size(); ++b)
+  {
+    std::vector<double> block_values;
+    for (const int c : layout_.block_cells[b])
+      block_values.push_back(values[c]);
+    check_exodus_write(ex_put_var(exo_, step, EX_ELEM_BLOCK, variable, layout_.block_ids[b],
+                                  static_cast<int64_t>(block_values.size()), block_values.data()),
+                       path_, what);
+  }
+}
+} // namespace internal
+} // namespace kiln

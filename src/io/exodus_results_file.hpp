@@ -1,0 +1,56 @@
+#pragma once
+/// Private to src/io: the Exodus II results file, as rank 0 writes it alone (the values come
+/// gathered). The mesh as exodus_layout() names it (with the element attribute "cell_rank"),
+/// the global variables "dt" and "cycle", and the node and element variables of
+/// ExodusVariables, element variables on every block. Every member function throws an
+/// InputError naming the file when an Exodus call fails; the destructor closes the file.
+#include "io/exodus_variables.hpp"
+#include "mesh/exodus_io.hpp"
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+namespace internal
+{
+class ExodusResultsFile
+{
+public:
+  /// Creates `path` (classic netCDF) and writes the mesh, flushed; `cell_rank` is the owner of
+  /// every cell.
+  ExodusResultsFile(const std::string &path, const Mesh &mesh, const std::vector<int> &cell_rank);
+  ~ExodusResultsFile();
+  ExodusResultsFile(const ExodusResultsFile &) = delete;
+  ExodusResultsFile &operator=(const ExodusResultsFile &) = delete;
+
+  /// Defines the global variables and the node and element variables (once, before the
+  /// first step), in the order of `variables`, each field's components together.
+  void define_variables(const ExodusVariables &variables) const;
+
+  /// One output step and its values; each field's values are component after component,
+  /// each in global-id order.
+  struct Step
+  {
+    int index;   ///< 0-based (Exodus time step index + 1)
+    double time; ///< [s]
+    double dt;   ///< [s]
+    int cycle;   ///< time steps taken
+    const std::vector<FieldSpec> &fields;
+    const std::vector<std::vector<double>> &values; ///< per field
+  };
+  /// Writes the step's time, global variables and fields, then flushes the file.
+  void write_step(const Step &step, const ExodusVariables &variables) const;
+
+private:
+  void write_cell_variable(int step, int variable, const double *values,
+                           const std::string &what) const;
+
+  std::string path_;
+  int exo_ = -1;
+  int n_nodes_ = 0;
+  int n_cells_ = 0;
+  ExodusLayout layout_;
+};
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,116 @@
+#include "io/exodus_variables.hpp"
+
+#include "io/collective_checks.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace kiln
+{
+namespace internal
+{
+std::vector<std::string> ExodusVariables::names(const std::string &name, const int n_components)
+{
+  if (n_components == 1)
+    return {name};
+  if (n_components == 3)
+    return {name + "_x", name + "_y", name + "_z"};
+  if (n_components == 6)
+    return {name + "_xx", name + "_yy", name + "_zz", name + "_xy", name + "_yz", name + "_xz"};
+  std::vector<std::string> result;
+  for (int k = 0; k < n_components; ++k)
+    result.push_back(name + "_" + std::to_string(k));
+  return result;
+}
+
+std::vector<int> ExodusVariables::components(const int n_components)
+{
+  // Kiln's Voigt order is xx yy zz xy xz yz; the variables are written xx yy zz xy yz xz.
+  if (n_components == 6)
+    return {0, 1, 2, 3, 5, 4};
+  std::vector<int> result;
+  for (int k = 0; k < n_components; ++k)
+    result.push_back(k);
+  return result;
+}
+
+void ExodusVariables::define(const std::vector<FieldSpec> &fields)
+{
+  fields_ = fields;
+  defined_ = true;
+}
+
+std::vector<std::string> ExodusVariables::names_of(const Center center) const
+{
+  std::vector<std::string> result;
+  for (const auto &f : fields_)
+    if (f.center == center)
+      for (const auto &v : names(f.name, f.n_components))
+        result.push_back(v);
+  return result;
+}
+
+const FieldSpec *ExodusVariables::find(const std::string &name) const
+{
+  for (const auto &f : fields_)
+    if (f.name == name)
+      return &f;
+  return nullptr;
+}
+
+int ExodusVariables::first_index(const FieldSpec &field) const
+{
+  int index = 1;
+  for (const auto &f : fields_)
+  {
+    if (f.name == field.name)
+      return index;
+    if (f.center == field.center)
+      index += f.n_components;
+  }
+  return -1;
+}
+
+void ExodusVariables::check_field(const FieldSpec &field,
+                                  const std::vector<FieldSpec> &step_fields) const
+{
+  const std::string what = std::string(kind_of(field.center)) + " field \"" + field.name + "\"";
+  if (defined_)
+  {
+    const FieldSpec *declared = find(field.name);
+    check_usage(declared != nullptr && declared->center == field.center &&
+                    declared->n_components == field.n_components,
+                "field declared in the first step",
+                what + " with " + std::to_string(field.n_components) +
+                    " components does not match the fields of the first step; Exodus defines "
+                    "its variables once, so every step must write the fields of the first step");
+    return;
+  }
+  // First step: the names must fit and must not clash with variables of earlier fields.
+  std::set<std::string> taken;
+  for (const auto &f : step_fields)
+    if (f.center == field.center)
+      for (const auto &v : names(f.name, f.n_components))
+        taken.insert(v);
+  for (const auto &v : names(field.name, field.n_components))
+  {
+    check_usage(static_cast<int>(v.size()) <= max_name_length, "name length",
+                "Exodus variable \"" + v + "\" of " + what + " is longer than " +
+                    std::to_string(max_name_length) + " characters");
+    check_usage(taken.count(v) == 0, "unique variable names",
+                "Exodus variable \"" + v + "\" of " + what +
+                    " is also a variable of an earlier field of this step");
+  }
+}
+
+std::string ExodusVariables::missing_from(const std::vector<FieldSpec> &step_fields) const
+{
+  std::string missing;
+  for (const auto &f : fields_)
+    if (std::none_of(step_fields.begin(), step_fields.end(),
+                     [&](const FieldSpec &s) { return s.name == f.name; }))
+      missing += (missing.empty() ? "\"" : ", \"") + f.name + "\"";
+  return missing;
+}
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,171 @@
+#include "io/parallel_hdf5_file.hpp"
+
+#include "io/collective_checks.hpp"
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+/// Silences the HDF5 error stack printout while it lives (for calls whose failure
+/// becomes a Kiln error message instead).
+class QuietHdf5Errors
+{
+public:
+  QuietHdf5Errors()
+  {
+    H5Eget_auto2(H5E_DEFAULT, &old_func_, &old_data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, old_func_, old_data_); }
+  QuietHdf5Errors(const QuietHdf5Errors &) = delete;
+  QuietHdf5Errors &operator=(const QuietHdf5Errors &) = delete;
+
+private:
+  H5E_auto2_t old_func_ = nullptr;
+  void *old_data_ = nullptr;
+};
+
+std::string directory_of(const std::string &path)
+{
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash + 1);
+}
+} // namespace
+
+OwnedRows::OwnedRows(const std::vector<int> &owned, const int n_rows_of_all)
+    : n_rows(static_cast<hsize_t>(n_rows_of_all)), n_owned(owned.size())
+{
+  for (const int row : owned)
+  {
+    const auto r = static_cast<hsize_t>(row);
+    if (!runs.empty() && runs.back().first + runs.back().count == r)
+      ++runs.back().count;
+    else
+      runs.push_back({r, 1});
+  }
+}
+
+ParallelHdf5File::ParallelHdf5File(const MPI_Comm comm, const std::string &path)
+    : comm_(comm), path_(path)
+{
+  fapl_ = H5Handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_fapl_mpio(fapl_.get(), comm, MPI_INFO_NULL);
+  // Metadata (groups, attributes, dataset headers) is written collectively too.
+  H5Pset_all_coll_metadata_ops(fapl_.get(), true);
+  H5Pset_coll_metadata_write(fapl_.get(), true);
+  dxpl_ = H5Handle(H5Pcreate(H5P_DATASET_XFER), H5Pclose);
+  H5Pset_dxpl_mpio(dxpl_.get(), H5FD_MPIO_COLLECTIVE);
+
+  {
+    const QuietHdf5Errors quiet;
+    file_ = H5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl_.get()), H5Fclose);
+  }
+  check_input_collectively(comm_, file_.valid(), path_,
+                           "cannot create the results file; check that the folder \"" +
+                               directory_of(path_) +
+                               "\" exists and is writable, or choose another output path");
+}
+
+void ParallelHdf5File::check_io(const bool local_ok, const std::string &what) const
+{
+  check_input_collectively(comm_, local_ok, path_,
+                           what + " failed; check that the disk is not full and that the file is "
+                                  "not removed or opened by another program while Kiln runs");
+}
+
+H5Handle ParallelHdf5File::create_group(const std::string &name) const
+{
+  H5Handle group(H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Gclose);
+  check_io(group.valid(), "creating group /" + name);
+  return group;
+}
+
+void ParallelHdf5File::flush() const
+{
+  check_io(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "flushing the file");
+}
+
+void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
+                                  const OwnedRows &rows, const int n_components,
+                                  const std::vector<double> &values) const
+{
+  write_rows(location, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), rows, n_components);
+}
+
+void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
+                                  const OwnedRows &rows, const int n_components,
+                                  const std::vector<std::int64_t> &values) const
+{
+  write_rows(location, name, H5T_STD_I64LE, H5T_NATIVE_INT64, values.data(), rows, n_components);
+}
+
+void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
+                                  const OwnedRows &rows, const int n_components,
+                                  const std::vector<std::int32_t> &values) const
+{
+  write_rows(location, name, H5T_STD_I32LE, H5T_NATIVE_INT32, values.data(), rows, n_components);
+}
+
+/// Creates the dataset and writes this rank's rows into it, collectively: the file space
+/// selects the union of this rank's runs of rows (or nothing), the memory space the owned
+/// values in a row (or nothing, in a 1-value space).
+void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
+                                  const hid_t file_type, const hid_t memory_type, const void *data,
+                                  const OwnedRows &rows, const int n_components) const
+{
+  const hsize_t n_cols = static_cast<hsize_t>(n_components);
+  const int rank_of_data = n_components == 1 ? 1 : 2;
+  const hsize_t dims[2] = {rows.n_rows, n_cols};
+
+  const H5Handle file_space(H5Screate_simple(rank_of_data, dims, nullptr), H5Sclose);
+  const H5Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER); // every row is written below
+  const H5Handle dataset(H5Dcreate2(location, name.c_str(), file_type, file_space.get(),
+                                    H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                         H5Dclose);
+  check_io(dataset.valid(), "creating dataset \"" + name + "\"");
+
+  if (rows.runs.empty())
+    H5Sselect_none(file_space.get());
+  for (std::size_t r = 0; r < rows.runs.size(); ++r)
+  {
+    const hsize_t start[2] = {rows.runs[r].first, 0};
+    const hsize_t count[2] = {rows.runs[r].count, n_cols};
+    H5Sselect_hyperslab(file_space.get(), r == 0 ? H5S_SELECT_SET : H5S_SELECT_OR, start, nullptr,
+                        count, nullptr);
+  }
+  const hsize_t n_values = rows.n_owned * n_cols;
+  const hsize_t memory_dims[1] = {n_values > 0 ? n_values : 1};
+  const H5Handle memory_space(H5Screate_simple(1, memory_dims, nullptr), H5Sclose);
+  if (n_values == 0)
+    H5Sselect_none(memory_space.get());
+  const double dummy = 0.0;
+  const herr_t status = H5Dwrite(dataset.get(), memory_type, memory_space.get(), file_space.get(),
+                                 dxpl_.get(), n_values > 0 ? data : &dummy);
+  check_io(status >= 0, "writing dataset \"" + name + "\"");
+}
+
+void ParallelHdf5File::write_attributes(const hid_t location,
+                                        const std::vector<ScalarAttribute> &attributes,
+                                        const std::string &what) const
+{
+  const H5Handle scalar(H5Screate(H5S_SCALAR), H5Sclose);
+  bool ok = true;
+  for (const ScalarAttribute &a : attributes)
+  {
+    const bool is_double = std::holds_alternative<double>(a.value);
+    const hid_t file_type = is_double ? H5T_IEEE_F64LE : H5T_STD_I32LE;
+    const hid_t memory_type = is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT32;
+    const void *value = is_double ? static_cast<const void *>(&std::get<double>(a.value))
+                                  : static_cast<const void *>(&std::get<std::int32_t>(a.value));
+    const H5Handle attribute(
+        H5Acreate2(location, a.name, file_type, scalar.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    ok = ok && attribute.valid() && H5Awrite(attribute.get(), memory_type, value) >= 0;
+  }
+  check_io(ok, what);
+}
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,82 @@
+#pragma once
+/// Private to src/io: an HDF5 file written collectively with MPI-IO by every rank of a
+/// communicator, metadata (groups, attributes, dataset headers) included. Every member function
+/// is collective; a failed HDF5 call is a kiln::InputError naming the file, thrown on every
+/// rank alike.
+#include "io/h5_handle.hpp"
+
+#include <mpi.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace kiln
+{
+namespace internal
+{
+/// The rows of a (rows) or (rows x c) dataset this rank writes, as runs of consecutive rows.
+struct OwnedRows
+{
+  struct Run
+  {
+    hsize_t first = 0;
+    hsize_t count = 0;
+  };
+  /// `owned`: this rank's rows, increasing; `n_rows`: the rows of the dataset.
+  OwnedRows(const std::vector<int> &owned, int n_rows);
+
+  hsize_t n_rows = 0;
+  std::size_t n_owned = 0;
+  std::vector<Run> runs;
+};
+
+/// An attribute holding one double (written as IEEE F64LE) or 32-bit integer (STD I32LE).
+struct ScalarAttribute
+{
+  const char *name;
+  std::variant<double, std::int32_t> value;
+};
+
+class ParallelHdf5File
+{
+public:
+  /// Creates (or truncates) `path`; InputError on every rank when it cannot.
+  ParallelHdf5File(MPI_Comm comm, const std::string &path);
+  const std::string &path() const { return path_; }
+
+  /// Creates the group `name` (a path from the root, e.g. "steps/000000").
+  H5Handle create_group(const std::string &name) const;
+  /// Writes the dataset `name` in `location` (a file or group id): (rows) values for one
+  /// component, (rows x n_components) for more, from `values`, n_components values per row
+  /// of `rows`, row after row.
+  void write_rows(hid_t location, const std::string &name, const OwnedRows &rows, int n_components,
+                  const std::vector<double> &values) const;
+  void write_rows(hid_t location, const std::string &name, const OwnedRows &rows, int n_components,
+                  const std::vector<std::int64_t> &values) const;
+  void write_rows(hid_t location, const std::string &name, const OwnedRows &rows, int n_components,
+                  const std::vector<std::int32_t> &values) const;
+  /// Writes the attributes on `location`, in order; `what` names them in the error message.
+  void write_attributes(hid_t location, const std::vector<ScalarAttribute> &attributes,
+                        const std::string &what) const;
+  /// Flushes everything written so far to disk.
+  void flush() const;
+  /// InputError on every rank, naming the file and "`what` failed", unless `local_ok` is
+  /// true on every rank.
+  void check_io(bool local_ok, const std::string &what) const;
+
+private:
+  void write_rows(hid_t location, const std::string &name, hid_t file_type, hid_t memory_type,
+                  const void *data, const OwnedRows &rows, int n_components) const;
+
+  MPI_Comm comm_;
+  std::string path_;
+  // Declared in the order they are opened: destroyed (closed) in reverse.
+  H5Handle fapl_;
+  H5Handle dxpl_;
+  H5Handle file_;
+};
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,149 @@
+#include "io/xdmf_index.hpp"
+
+#include "io/collective_checks.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+std::string file_name_of(const std::string &path)
+{
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+} // namespace
+
+std::string step_group_name(const int step)
+{
+  std::ostringstream s;
+  s << std::setw(6) << std::setfill('0') << step;
+  return s.str();
+}
+
+XdmfIndex::XdmfIndex(const MPI_Comm comm, const std::string &xmf_path, const std::string &h5_path,
+                     const int n_nodes, const int n_cells)
+    : comm_(comm), xmf_path_(xmf_path), h5_name_(file_name_of(h5_path)), n_nodes_(n_nodes),
+      n_cells_(n_cells)
+{
+}
+
+void XdmfIndex::add_step(const double time)
+{
+  steps_.push_back({time, {}});
+}
+
+void XdmfIndex::add_field(const FieldSpec &field)
+{
+  steps_.back().fields.push_back(field);
+}
+
+bool XdmfIndex::has_field(const std::string &name) const
+{
+  for (const auto &f : steps_.back().fields)
+    if (f.name == name)
+      return true;
+  return false;
+}
+
+void XdmfIndex::write_data_item(std::ostream &out, const std::string &indent,
+                                const std::string &path, const std::string &dimensions,
+                                const char *number_type, const int precision) const
+{
+  out << indent << "<DataItem Dimensions=\"" << dimensions << "\" NumberType=\"" << number_type
+      << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5_name_ << ":" << path
+      << "</DataItem>\n";
+}
+
+/// One Uniform grid: the mesh, the mesh attributes and, for a step, its fields.
+void XdmfIndex::write_grid(std::ostream &out, const std::string &indent, const Step *step,
+                           const int index) const
+{
+  const std::string in1 = indent + "  ";
+  const std::string in2 = in1 + "  ";
+  const std::string nodes = std::to_string(n_nodes_);
+  const std::string cells = std::to_string(n_cells_);
+  out << indent << "<Grid Name=\"" << (step ? "step_" + step_group_name(index) : "mesh")
+      << "\" GridType=\"Uniform\">\n";
+  if (step)
+    out << in1 << "<Time Value=\"" << std::setprecision(17) << step->time << "\"/>\n";
+  out << in1 << "<Topology TopologyType=\"Hexahedron\" NumberOfElements=\"" << cells
+      << "\" NodesPerElement=\"8\">\n";
+  write_data_item(out, in2, "/mesh/connectivity", cells + " 8", "Int", 8);
+  out << in1 << "</Topology>\n";
+  out << in1 << "<Geometry GeometryType=\"XYZ\">\n";
+  write_data_item(out, in2, "/mesh/coordinates", nodes + " 3", "Float", 8);
+  out << in1 << "</Geometry>\n";
+  for (const char *name : {"block_id", "cell_rank"})
+  {
+    out << in1 << "<Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+    write_data_item(out, in2, std::string("/mesh/") + name, cells, "Int", 4);
+    out << in1 << "</Attribute>\n";
+  }
+  if (step)
+    for (const auto &f : step->fields)
+    {
+      const bool on_nodes = f.center == Center::node;
+      const char *type = f.n_components == 1 ? "Scalar" : f.n_components == 3 ? "Vector" : "Matrix";
+      std::string dimensions = on_nodes ? nodes : cells;
+      if (f.n_components > 1)
+        dimensions += " " + std::to_string(f.n_components);
+      out << in1 << "<Attribute Name=\"" << f.name << "\" AttributeType=\"" << type
+          << "\" Center=\"" << (on_nodes ? "Node" : "Cell") << "\">\n";
+      write_data_item(out, in2, "/steps/" + step_group_name(index) + "/" + f.name, dimensions,
+                      "Float", 8);
+      out << in1 << "</Attribute>\n";
+    }
+  out << indent << "</Grid>\n";
+}
+
+std::string XdmfIndex::text() const
+{
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+      << "  <Domain>\n";
+  if (steps_.empty())
+    write_grid(out, "    ", nullptr, 0);
+  else
+  {
+    out << "    <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (std::size_t s = 0; s < steps_.size(); ++s)
+      write_grid(out, "      ", &steps_[s], static_cast<int>(s));
+    out << "    </Grid>\n";
+  }
+  out << "  </Domain>\n"
+      << "</Xdmf>\n";
+  return out.str();
+}
+
+void XdmfIndex::write() const
+{
+  bool ok = true;
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank == 0)
+  {
+    const std::string temporary = xmf_path_ + ".tmp";
+    {
+      std::ofstream out(temporary, std::ios::trunc);
+      out << text();
+      out.close();
+      ok = static_cast<bool>(out);
+    }
+    ok = ok && std::rename(temporary.c_str(), xmf_path_.c_str()) == 0;
+    if (!ok)
+      std::remove(temporary.c_str());
+  }
+  check_input_collectively(comm_, ok, xmf_path_,
+                           "cannot write the XDMF file; check that its folder is writable and the "
+                           "disk is not full");
+}
+} // namespace internal
+} // namespace kiln

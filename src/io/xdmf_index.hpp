@@ -1,0 +1,61 @@
+#pragma once
+/// Private to src/io: the XDMF file beside a results HDF5 file, which tells ParaView what the
+/// HDF5 file holds (doc/output-format.md). Before the first step it shows the mesh alone
+/// (one Uniform grid, no time); after, a Temporal collection with one Uniform grid per step:
+/// the mesh, the mesh attributes block_id and cell_rank, and the step's fields.
+#include "io/field_spec.hpp"
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+namespace internal
+{
+/// The HDF5 group of output step `step` under /steps: its number in six digits.
+std::string step_group_name(int step);
+
+class XdmfIndex
+{
+public:
+  /// The index `xmf_path` of the HDF5 file `h5_path` (named by its file name alone, so the two
+  /// files stay together) of a mesh of `n_nodes` nodes and `n_cells` cells.
+  XdmfIndex(MPI_Comm comm, const std::string &xmf_path, const std::string &h5_path, int n_nodes,
+            int n_cells);
+  const std::string &path() const { return xmf_path_; }
+
+  /// Adds an output step at `time` [s]; add_field() adds its fields.
+  void add_step(double time);
+  /// Adds a field to the last step.
+  void add_field(const FieldSpec &field);
+  int n_steps() const { return static_cast<int>(steps_.size()); }
+  /// Whether the last step has a field named `name`.
+  bool has_field(const std::string &name) const;
+
+  /// The XDMF text of the steps added so far.
+  std::string text() const;
+  /// Rank 0 writes text() under a temporary name and renames it, so a reader never sees a
+  /// half-written file. Collective; an InputError on every rank if it cannot.
+  void write() const;
+
+private:
+  struct Step
+  {
+    double time = 0.0;
+    std::vector<FieldSpec> fields;
+  };
+  void write_grid(std::ostream &out, const std::string &indent, const Step *step, int index) const;
+  void write_data_item(std::ostream &out, const std::string &indent, const std::string &path,
+                       const std::string &dimensions, const char *number_type, int precision) const;
+
+  MPI_Comm comm_;
+  std::string xmf_path_;
+  std::string h5_name_; ///< the HDF5 file's name, relative to the XDMF file's folder
+  int n_nodes_;
+  int n_cells_;
+  std::vector<Step> steps_;
+};
+} // namespace internal
+} // namespace kiln

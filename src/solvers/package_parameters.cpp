@@ -1,0 +1,149 @@
+#include "solvers/package_parameters.hpp"
+
+#include "base/errors.hpp"
+
+#include <NOX_Utils.H>
+#include <Teuchos_CommHelpers.hpp>
+
+namespace kiln
+{
+namespace internal
+{
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+
+ParameterList nonlinear_solver_defaults()
+{
+  ParameterList p;
+  p.set("Nonlinear Solver", "Line Search Based");
+  p.sublist("Line Search").set("Method", "Full Step");
+  ParameterList &direction = p.sublist("Direction");
+  direction.set("Method", "Newton");
+  ParameterList &newton = direction.sublist("Newton");
+  newton.set("Forcing Term Method", "Constant");
+  // A linear solve that does not converge is reported, and Newton goes on
+  // with the step it got (NOX's "rescue"); the status tests decide.
+  newton.set("Rescue Bad Newton Solve", true);
+  // "None"/"None" makes Thyra use the Belos list's own "Convergence
+  // Tolerance"; otherwise NOX's "Tolerance" (default 1e-6) would override it.
+  // For an inexact Newton forcing term (Type 1, Type 2) set these to
+  // "Norm Residual" and "Norm Initial Residual".
+  ParameterList &linear = newton.sublist("Linear Solver");
+  linear.set("Solve Measure Numerator", "None");
+  linear.set("Solve Measure Denominator", "None");
+  ParameterList &printing = p.sublist("Printing");
+  printing.set("Output Information", NOX::Utils::Error + NOX::Utils::Warning);
+  printing.set("Output Precision", 3);
+  p.sublist("Solver Options").set("Status Test Check Type", "Minimal");
+  return p;
+}
+
+ParameterList muelu_defaults()
+{
+  ParameterList p;
+  p.set("verbosity", "none");
+  p.set("multigrid algorithm", "sa");
+  p.set("max levels", 10);
+  p.set("coarse: max size", 500);
+  // Weak couplings (the gap conductance across a split gap on fine meshes) stay out of the
+  // aggregates; without it the iterations grew by 70% from 16^3 to 64^3 cells on the
+  // contact box (doc/solvers.md).
+  p.set("aggregation: drop tol", 0.02);
+  // Smooth the prolongator with the whole matrix, not the one with the dropped entries
+  // lumped into the diagonal: with the nonsymmetric rows of pairs in contact, the lumped
+  // one gave a coarse level a zero diagonal (MueLu: "Prolongator damping factor needs to
+  // be finite") on 3 ranks; the iteration counts are the same (doc/contact.md).
+  p.set("sa: use filtered matrix", false);
+  p.set("smoother: type", "RELAXATION");
+  p.set("coarse: type", "RELAXATION");
+  return p;
+}
+
+ParameterList linear_solver_defaults()
+{
+  ParameterList p;
+  p.set("Linear Solver Type", "Belos");
+  ParameterList &belos = p.sublist("Linear Solver Types").sublist("Belos");
+  belos.set("Solver Type", "Pseudo Block GMRES");
+  ParameterList &gmres = belos.sublist("Solver Types").sublist("Pseudo Block GMRES");
+  gmres.set("Convergence Tolerance", 1e-10);
+  gmres.set("Maximum Iterations", 500);
+  gmres.set("Num Blocks", 200);
+  p.set("Preconditioner Type", "MueLu");
+  p.sublist("Preconditioner Types").sublist("MueLu").setParameters(muelu_defaults());
+  return p;
+}
+
+bool uses_muelu(const ParameterList &stratimikos)
+{
+  return stratimikos.isType<std::string>("Preconditioner Type") &&
+         stratimikos.get<std::string>("Preconditioner Type") == "MueLu";
+}
+
+void add_smoother_defaults(ParameterList &stratimikos)
+{
+  if (!uses_muelu(stratimikos))
+    return;
+  ParameterList &muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+  const auto is = [&](const std::string &name, const std::string &type)
+  { return muelu.isType<std::string>(name) && muelu.get<std::string>(name) == type; };
+  if (is("smoother: type", "CHEBYSHEV"))
+  {
+    // With Ifpack2's 10 power iterations the eigenvalue estimate can be too
+    // low and the preconditioner indefinite (notes: 3D elasticity, 40^3).
+    ParameterList &chebyshev = muelu.sublist("smoother: params");
+    chebyshev.get("chebyshev: degree", 2);
+    chebyshev.get("chebyshev: ratio eigenvalue", 7.0);
+    chebyshev.get("chebyshev: eigenvalue max iterations", 30);
+  }
+  if (is("smoother: type", "RELAXATION"))
+  {
+    ParameterList &relaxation = muelu.sublist("smoother: params");
+    relaxation.get("relaxation: type", std::string("Symmetric Gauss-Seidel"));
+    relaxation.get("relaxation: sweeps", 1);
+  }
+  if (is("coarse: type", "RELAXATION"))
+  {
+    ParameterList &coarse = muelu.sublist("coarse: params");
+    coarse.get("relaxation: type", std::string("Symmetric Gauss-Seidel"));
+    coarse.get("relaxation: sweeps", 4);
+  }
+}
+
+void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem,
+                     const Teuchos::Comm<int> &comm, const bool near_null_space,
+                     const RCP<const NonlinearProblem::Vector> &scale)
+{
+  const RCP<const Tpetra::MultiVector<double>> coordinates = problem.node_coordinates();
+  if (coordinates.is_null() || !uses_muelu(stratimikos))
+    return;
+  const auto n_rows = static_cast<long long>(problem.solution_map()->getNodeNumElements());
+  const auto n_nodes = static_cast<long long>(coordinates->getLocalLength());
+  long long local[2] = {n_nodes > 0 && n_rows % n_nodes == 0 ? n_rows / n_nodes : -1, 0};
+  local[1] = n_nodes > 0 ? -local[0] : -1; // min and max of the ratio in one reduction
+  long long global[2] = {0, 0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 2, local, global);
+  if (global[0] < 1 || global[0] != -global[1])
+    throw InternalError("NonlinearProblem::node_coordinates(): the owned rows are not a fixed "
+                        "multiple of the owned nodes on every rank");
+  ParameterList &muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+  muelu.set("Coordinates", Teuchos::rcp_const_cast<Tpetra::MultiVector<double>>(coordinates));
+  if (!muelu.isParameter("number of equations"))
+    muelu.set("number of equations", static_cast<int>(global[0]));
+  // The near-null space, divided by the unknown scale as the solver sees it.
+  const RCP<const Tpetra::MultiVector<double>> modes = problem.near_null_space();
+  if (near_null_space && !modes.is_null() && !muelu.isParameter("Nullspace"))
+  {
+    auto scaled = Teuchos::rcp(new Tpetra::MultiVector<double>(*modes, Teuchos::Copy));
+    if (!scale.is_null())
+    {
+      NonlinearProblem::Vector inverse(scale->getMap());
+      inverse.reciprocal(*scale);
+      for (std::size_t j = 0; j < scaled->getNumVectors(); ++j)
+        scaled->getVectorNonConst(j)->elementWiseMultiply(1.0, inverse, *modes->getVector(j), 0.0);
+    }
+    muelu.set("Nullspace", scaled);
+  }
+}
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,49 @@
+#pragma once
+/// Private to src/solvers: Kiln's defaults for the lists NewtonSolver hands to the Trilinos
+/// packages (NOX, Stratimikos with Belos and MueLu) and what it adds to them (doc/solvers.md).
+/// Only light package headers in package_parameters.cpp (a few seconds of compile): the
+/// check of the MueLu list needs MueLu's headers (15 s alone) and stays in newton_solver.cpp,
+/// which includes them anyway.
+#include "discretization/nonlinear_problem.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace kiln
+{
+namespace internal
+{
+/// Kiln's defaults for NOX: Newton with a full step; the Belos tolerance in
+/// "Linear Solver" governs each linear solve (see linear_solver_defaults()).
+Teuchos::ParameterList nonlinear_solver_defaults();
+
+/// MueLu smoothed aggregation that works at np 1 and np > 1 in Debian's
+/// Trilinos 13.2 (doc/solvers.md has the measurements): the default coarse
+/// solver, Amesos2 KLU2, gives wrong answers on more than one rank, so the
+/// coarsest level is smoothed instead of factored. The parameters of the
+/// chosen smoother types are added by add_smoother_defaults().
+Teuchos::ParameterList muelu_defaults();
+
+/// Kiln's defaults for Stratimikos: Belos Pseudo Block GMRES preconditioned
+/// by MueLu.
+Teuchos::ParameterList linear_solver_defaults();
+
+/// Whether the Stratimikos list asks for MueLu (Stratimikos checks the value).
+bool uses_muelu(const Teuchos::ParameterList &stratimikos);
+
+/// Kiln's defaults for the parameters of the smoother types chosen, set
+/// where the input gives none. They cannot be in valid_parameters(): they
+/// would be merged into the input's list, where they are invalid for
+/// another type (Amesos2 rejects "relaxation: type" if "coarse: type" is
+/// "KLU2").
+void add_smoother_defaults(Teuchos::ParameterList &stratimikos);
+
+/// Hands the problem's node coordinates (if any) to MueLu, for aggregation
+/// and repartitioning; the number of unknowns per node is the ratio of owned
+/// rows to owned nodes, the same on every rank. With `near_null_space`, also the
+/// problem's near-null space divided by the unknown scale `scale` (if not null).
+/// Collective.
+void add_coordinates(Teuchos::ParameterList &stratimikos, const NonlinearProblem &problem,
+                     const Teuchos::Comm<int> &comm, bool near_null_space,
+                     const Teuchos::RCP<const NonlinearProblem::Vector> &scale);
+} // namespace internal
+} // namespace kiln
