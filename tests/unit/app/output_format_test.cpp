@@ -3,13 +3,14 @@
 // KILN_TEST_NP: 1 2
 #include "app/simulation.hpp"
 #include "io/input_reader.hpp"
+#include "support/results_files.hpp"
+#include "support/simulation_runs.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_Tuple.hpp>
 #include <exodusII.h>
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <cmath>
 #include <filesystem>
@@ -18,7 +19,7 @@
 
 namespace
 {
-const std::string inputs = std::string(KILN_SOURCE_DIR) + "/inputs/";
+using kiln_test::inputs;
 
 /// Runs the closing contact box to 50 s with output at 0 and 50 s in `format`.
 void run(const std::string &base, const std::string &format)
@@ -32,22 +33,6 @@ void run(const std::string &base, const std::string &format)
   output.set("Format", format);
   kiln::Simulation sim(input, deck, comm);
   sim.run();
-}
-
-/// /steps/NNNNNN/<field> of an HDF5 results file, all components.
-std::vector<double> h5_field(const std::string &path, const int step, const std::string &field)
-{
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  char name[64];
-  std::snprintf(name, sizeof name, "/steps/%06d/%s", step, field.c_str());
-  const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(set);
-  std::vector<double> values(H5Sget_simple_extent_npoints(space));
-  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(file);
-  return values;
 }
 } // namespace
 
@@ -91,7 +76,8 @@ TEST(OutputFormat, HdfAndExodusHoldTheSameSteps)
     }
     for (const int step : {0, 1})
     {
-      const std::vector<double> h5 = h5_field(base + ".h5", step, field);
+      double time = 0.0;
+      const std::vector<double> h5 = kiln_test::read_step(base + ".h5", field, step, time);
       ASSERT_EQ(static_cast<int>(h5.size()), n_components * n_nodes) << name;
       std::vector<double> values(n_nodes);
       ex_get_var(exo, step + 1, EX_NODAL, v + 1, 1, n_nodes, values.data());

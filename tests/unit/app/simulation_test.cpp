@@ -6,16 +6,14 @@
 #include "io/input_reader.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_factory.hpp"
+#include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-namespace
-{
-const std::string inputs = std::string(KILN_SOURCE_DIR) + "/inputs/";
-}
+using kiln_test::inputs;
 
 TEST(Simulation, WriteMeshRoundTrip)
 {

@@ -6,6 +6,7 @@
 
 #include "base/errors.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "support/reference_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,50 +18,11 @@ namespace
 using kiln::ElementValues;
 using kiln::HexNodes;
 using kiln::Point;
-using Matrix = std::array<std::array<double, 3>, 3>;
-
-Matrix multiply(const Matrix &a, const Matrix &b)
-{
-  Matrix c{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        c[i][j] += a[i][k] * b[k][j];
-  return c;
-}
-
-Point apply(const Matrix &a, const Point &x)
-{
-  Point y{0, 0, 0};
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      y[i] += a[i][k] * x[k];
-  return y;
-}
-
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/// The unit cube [0,1]^3 in Exodus HEX8 order.
-HexNodes unit_cube()
-{
-  return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
-}
-
-/// The cell after x -> M x + b.
-HexNodes mapped(const HexNodes &x, const Matrix &m, const Point &b)
-{
-  HexNodes y;
-  for (int i = 0; i < 8; ++i)
-  {
-    y[i] = apply(m, x[i]);
-    for (int d = 0; d < 3; ++d)
-      y[i][d] += b[d];
-  }
-  return y;
-}
+using kiln_test::dot;
+using kiln_test::mapped;
+using kiln_test::multiply;
+using kiln_test::unit_cube;
+using Matrix = kiln_test::Matrix3;
 
 /// A non-affine cell: the unit cube with its top face stretched to [0,2] x [0,1] (volume 1.5,
 /// see hex_geometry_test), then every node moved by a different small amount, then rotated.
@@ -218,12 +180,7 @@ TEST(ElementValues, StiffnessMatrixOfUnitCube)
 TEST(ElementValues, InvertedCellThrows)
 {
   const HexNodes cube = unit_cube();
-  HexNodes mirrored;
-  for (int i = 0; i < 4; ++i)
-  {
-    mirrored[i] = cube[i + 4];
-    mirrored[i + 4] = cube[i];
-  }
+  const HexNodes mirrored = kiln_test::mirrored_cell(cube);
   ElementValues fe;
   EXPECT_THROW(fe.reinit(mirrored), kiln::InternalError);
   HexNodes flat = cube;

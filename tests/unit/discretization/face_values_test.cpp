@@ -6,6 +6,7 @@
 
 #include "base/errors.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "support/reference_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,29 +18,9 @@ namespace
 using kiln::FaceValues;
 using kiln::Point;
 using kiln::QuadNodes;
-using Matrix = std::array<std::array<double, 3>, 3>;
-
-Point apply(const Matrix &a, const Point &x)
-{
-  Point y{0, 0, 0};
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      y[i] += a[i][k] * x[k];
-  return y;
-}
-
-/// The face after x -> A x + b.
-QuadNodes mapped(const QuadNodes &x, const Matrix &A, const Point &b)
-{
-  QuadNodes y;
-  for (int i = 0; i < 4; ++i)
-  {
-    y[i] = apply(A, x[i]);
-    for (int d = 0; d < 3; ++d)
-      y[i][d] += b[d];
-  }
-  return y;
-}
+using kiln_test::mapped_face;
+using kiln_test::times;
+using Matrix = kiln_test::Matrix3;
 
 double total_area(const FaceValues &fe)
 {
@@ -53,7 +34,8 @@ TEST(FaceValues, RotatedRectangleAreaAndNormal)
 {
   // A 3 x 2 rectangle in z = 0, counterclockwise seen from +z (normal +z), rotated and shifted.
   const Matrix A = kiln::rotation_matrix(45, -30);
-  const QuadNodes x = mapped({{{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {0, 2, 0}}}, A, {1.0, 2.0, -3.0});
+  const QuadNodes x =
+      mapped_face({{{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {0, 2, 0}}}, A, {1.0, 2.0, -3.0});
   FaceValues fe;
   fe.reinit(x);
   ASSERT_EQ(fe.n_qpoints(), 4);
@@ -140,17 +122,16 @@ TEST(FaceValues, HexFacesHaveOutwardNormals)
 {
   // The unit cube, rotated: face k of hex_face_nodes has outward normal A n_k.
   const Matrix A = kiln::rotation_matrix(45, -30);
-  const std::array<Point, 8> cube = {
-      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+  const kiln::HexNodes cube = kiln_test::unit_cube();
   const Point outward[6] = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
   FaceValues fe;
   for (int f = 0; f < kiln::n_hex_faces; ++f)
   {
     QuadNodes x;
     for (int i = 0; i < 4; ++i)
-      x[i] = apply(A, cube[kiln::hex_face_nodes[f][i]]);
+      x[i] = times(A, cube[kiln::hex_face_nodes[f][i]]);
     fe.reinit(x);
-    const Point n = apply(A, outward[f]);
+    const Point n = times(A, outward[f]);
     EXPECT_NEAR(total_area(fe), 1.0, 1e-14) << "face " << f;
     for (int q = 0; q < fe.n_qpoints(); ++q)
       for (int d = 0; d < 3; ++d)

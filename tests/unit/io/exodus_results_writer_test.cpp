@@ -10,6 +10,9 @@
 #include "mesh/exodus_io.hpp"
 #include "mesh/gap_splitter.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "support/parallel.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/results_files.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -31,17 +34,16 @@
 namespace
 {
 using kiln::Mesh;
+using kiln_test::rank_of;
+using kiln_test::same;
+using kiln_test::shared_test_folder;
+using kiln_test::step_cycle;
+using kiln_test::step_dt;
+using kiln_test::step_time;
 using testing::HasSubstr;
 
 constexpr int n_steps = 2;
 const double nan = std::numeric_limits<double>::quiet_NaN();
-
-int rank_of(const MPI_Comm comm)
-{
-  int r = 0;
-  MPI_Comm_rank(comm, &r);
-  return r;
-}
 
 /// The contact box, 4 x 2 x 2 cells, split at side set 10; side set 1 named "left" and side
 /// set 3 named "gap" (a clash with the gap's name).
@@ -84,19 +86,8 @@ Ownership make_ownership(const Mesh &mesh)
   return o;
 }
 
-// The field values, as functions of the step, the global id and the coordinates.
-double step_time(const int step)
-{
-  return 0.5 + 1.25 * step;
-}
-double step_dt(const int step)
-{
-  return 0.125 * (step + 1);
-}
-int step_cycle(const int step)
-{
-  return 10 * step + 3;
-}
+// The field values, as functions of the step (step_time, step_dt, step_cycle), the global id
+// and the coordinates.
 double temperature(const int step, const int node, const kiln::Point &x)
 {
   return 300.0 + x[0] + 10.0 * x[1] + 100.0 * x[2] + 1000.0 * step + 1e-3 * node;
@@ -119,29 +110,6 @@ double stress(const int step, const int cell, const int v)
   if (cell == 3 && v == 2)
     return nan;
   return 100.0 * v + cell + 0.5 * step;
-}
-
-bool same(const double a, const double b)
-{
-  return (std::isnan(a) && std::isnan(b)) || a == b;
-}
-
-std::string shared_test_folder(const MPI_Comm comm, const std::string &name)
-{
-  std::string folder;
-  if (rank_of(comm) == 0)
-  {
-    folder = (std::filesystem::temp_directory_path() /
-              ("kiln_" + name + "_" + std::to_string(::getpid())))
-                 .string();
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-  }
-  int length = static_cast<int>(folder.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  folder.resize(length);
-  MPI_Bcast(folder.data(), length, MPI_CHAR, 0, comm);
-  return folder;
 }
 
 void write_step(kiln::ExodusResultsWriter &writer, const Mesh &mesh, const Ownership &o,
@@ -554,16 +522,13 @@ TEST(ExodusResultsWriter, MissingFolderIsAnInputErrorNamingThePathOnEveryRank)
   const Mesh mesh = split_box();
   const Ownership o = make_ownership(mesh);
   const std::string base = "/nonexistent_kiln_folder/sub/out";
-  std::string message;
-  try
-  {
-    kiln::ExodusResultsWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank);
+  const std::string message = kiln_test::input_error_message(
+      [&] {
+        kiln::ExodusResultsWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells,
+                                         o.cell_rank);
+      });
+  if (message.empty())
     ADD_FAILURE() << "no exception";
-  }
-  catch (const kiln::InputError &e)
-  {
-    message = e.what();
-  }
   EXPECT_THAT(message, HasSubstr(base + ".exo"));
   EXPECT_THAT(message, HasSubstr("does not exist"));
   MPI_Barrier(comm); // every rank got here: the test did not hang

@@ -6,6 +6,9 @@
 
 #include "base/errors.hpp"
 #include "cmake/xdmf_check.hpp"
+#include "support/parallel.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/results_files.hpp"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -28,19 +31,18 @@
 namespace
 {
 using kiln::Mesh;
+using kiln_test::rank_of;
+using kiln_test::same;
+using kiln_test::shared_test_folder;
+using kiln_test::step_cycle;
+using kiln_test::step_dt;
+using kiln_test::step_time;
 
 constexpr int nx = 3; // cells along x, y, z
 constexpr int ny = 2;
 constexpr int nz = 2;
 constexpr int n_steps = 2;
 const double nan = std::numeric_limits<double>::quiet_NaN();
-
-int rank_of(const MPI_Comm comm)
-{
-  int r = 0;
-  MPI_Comm_rank(comm, &r);
-  return r;
-}
 
 int size_of(const MPI_Comm comm)
 {
@@ -100,20 +102,8 @@ Ownership make_ownership(const Mesh &mesh, const int rank,
   return o;
 }
 
-// The field values, as functions of the step, the global id and the coordinates.
-double step_time(const int step)
-{
-  return 0.5 + 1.25 * step;
-}
-double step_dt(const int step)
-{
-  return 0.125 * (step + 1);
-}
-int step_cycle(const int step)
-{
-  return 10 * step + 3;
-}
-
+// The field values, as functions of the step (step_time, step_dt, step_cycle), the global id
+// and the coordinates.
 double temperature(const int step, const int node, const kiln::Point &x)
 {
   if (node % 7 == 3 && step == 1)
@@ -133,29 +123,6 @@ double stress(const int step, const int cell, const int component)
   if (cell == 4 && component == 2)
     return nan;
   return 1e6 * cell + 10.0 * component - 0.5 * step;
-}
-
-bool same(const double a, const double b)
-{
-  return (std::isnan(a) && std::isnan(b)) || a == b;
-}
-
-std::string shared_test_folder(const MPI_Comm comm, const std::string &name)
-{
-  std::string folder;
-  if (rank_of(comm) == 0)
-  {
-    folder = (std::filesystem::temp_directory_path() /
-              ("kiln_" + name + "_" + std::to_string(::getpid())))
-                 .string();
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-  }
-  int length = static_cast<int>(folder.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  folder.resize(length);
-  MPI_Bcast(folder.data(), length, MPI_CHAR, 0, comm);
-  return folder;
 }
 
 /// Writes the mesh and n_steps steps, each rank giving the values of its owned rows.
@@ -394,16 +361,12 @@ TEST(Hdf5XdmfWriter, MissingFolderIsAnInputErrorOnEveryRank)
   const Ownership o =
       make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
   const std::string base = "/nonexistent_kiln_folder/sub/out";
-  std::string message;
-  try
-  {
-    kiln::Hdf5XdmfWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank);
+  const std::string message = kiln_test::input_error_message(
+      [&] {
+        kiln::Hdf5XdmfWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank);
+      });
+  if (message.empty())
     ADD_FAILURE() << "no exception";
-  }
-  catch (const kiln::InputError &e)
-  {
-    message = e.what();
-  }
   EXPECT_NE(message.find(base + ".h5"), std::string::npos) << message;
   EXPECT_NE(message.find("exists and is writable"), std::string::npos) << message;
   // Every rank got here: the test did not hang.

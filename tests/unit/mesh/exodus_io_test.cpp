@@ -5,6 +5,7 @@
 #include "mesh/exodus_io.hpp"
 
 #include "base/errors.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <exodusII.h>
 #include <gmock/gmock.h>
@@ -277,16 +278,11 @@ void write_one_element_file(const std::string &path, const int n_dim, const char
 
 std::string read_error(const std::string &path)
 {
-  try
-  {
-    kiln::read_exodus_mesh(path, 1.0);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError for " << path;
-  return "";
+  const std::string message =
+      kiln_test::input_error_message([&] { kiln::read_exodus_mesh(path, 1.0); });
+  if (message.empty())
+    ADD_FAILURE() << "no InputError for " << path;
+  return message;
 }
 
 TEST(ExodusIo, MissingFileNamesThePath)

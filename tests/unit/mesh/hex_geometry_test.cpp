@@ -3,6 +3,8 @@
 // KILN_TEST_NP: 1
 #include "mesh/hex_geometry.hpp"
 
+#include "support/reference_cells.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,62 +15,14 @@ namespace
 using kiln::HexNodes;
 using kiln::Point;
 using kiln::QuadNodes;
-using Matrix = std::array<std::array<double, 3>, 3>;
-
-Matrix multiply(const Matrix &a, const Matrix &b)
-{
-  Matrix c{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        c[i][j] += a[i][k] * b[k][j];
-  return c;
-}
-
-Point apply(const Matrix &a, const Point &x)
-{
-  Point y{0, 0, 0};
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      y[i] += a[i][k] * x[k];
-  return y;
-}
-
-double determinant(const Matrix &m)
-{
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-Point cross(const Point &a, const Point &b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double norm(const Point &a)
-{
-  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
-
-/// The unit cube [0,1]^3 in Exodus HEX8 order.
-HexNodes unit_cube()
-{
-  return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
-}
-
-/// The cube after x -> M x + b.
-HexNodes mapped(const HexNodes &x, const Matrix &m, const Point &b)
-{
-  HexNodes y;
-  for (int i = 0; i < 8; ++i)
-  {
-    y[i] = apply(m, x[i]);
-    for (int d = 0; d < 3; ++d)
-      y[i][d] += b[d];
-  }
-  return y;
-}
+using kiln_test::cross;
+using kiln_test::determinant;
+using kiln_test::mapped;
+using kiln_test::multiply;
+using kiln_test::norm;
+using kiln_test::times;
+using kiln_test::unit_cube;
+using Matrix = kiln_test::Matrix3;
 
 TEST(HexGeometry, RotationMatrixIsRxThetaTimesRyPhi)
 {
@@ -109,11 +63,11 @@ TEST(HexGeometry, RotationMatrixOfSingleAxisRotations)
 {
   // phi = 90 about y takes x to -z and z to x; theta = 90 about x takes y to z.
   const Matrix Ay = kiln::rotation_matrix(90, 0);
-  const Point x_image = apply(Ay, {1, 0, 0}), z_image = apply(Ay, {0, 0, 1});
+  const Point x_image = times(Ay, {1, 0, 0}), z_image = times(Ay, {0, 0, 1});
   EXPECT_NEAR(x_image[2], -1.0, 1e-15);
   EXPECT_NEAR(z_image[0], 1.0, 1e-15);
   const Matrix Ax = kiln::rotation_matrix(0, 90);
-  EXPECT_NEAR(apply(Ax, {0, 1, 0})[2], 1.0, 1e-15);
+  EXPECT_NEAR(times(Ax, {0, 1, 0})[2], 1.0, 1e-15);
   const Matrix I = kiln::rotation_matrix(0, 0);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -174,12 +128,7 @@ TEST(HexGeometry, MirroredNodeOrderHasNegativeJacobian)
 {
   // Top and bottom faces exchanged: a reflection in z.
   const HexNodes cube = unit_cube();
-  HexNodes mirrored;
-  for (int i = 0; i < 4; ++i)
-  {
-    mirrored[i] = cube[i + 4];
-    mirrored[i + 4] = cube[i];
-  }
+  const HexNodes mirrored = kiln_test::mirrored_cell(cube);
   for (const Point &xi : kiln::hex_gauss_points())
     EXPECT_NEAR(kiln::hex_jacobian_determinant(mirrored, xi), -0.125, 1e-15);
   EXPECT_NEAR(kiln::hex_volume(mirrored), -1.0, 1e-15);
@@ -194,11 +143,11 @@ TEST(HexGeometry, QuadNodalAreasOfRotatedSquare)
   QuadNodes x;
   for (int i = 0; i < 4; ++i)
   {
-    x[i] = apply(A, flat[i]);
+    x[i] = times(A, flat[i]);
     for (int d = 0; d < 3; ++d)
       x[i][d] += shift[d];
   }
-  const Point normal = apply(A, {0, 0, 1});
+  const Point normal = times(A, {0, 0, 1});
   const kiln::QuadNodalAreas a = kiln::quad_nodal_areas(x);
   double total = 0.0;
   Point total_vector{0, 0, 0};

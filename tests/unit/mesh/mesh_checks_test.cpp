@@ -6,6 +6,7 @@
 #include "base/errors.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/gap_splitter.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
@@ -31,16 +32,11 @@ Mesh box()
 
 std::string check_error(const Mesh &mesh)
 {
-  try
-  {
-    kiln::check_mesh(mesh, "mesh.exo");
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
+  const std::string message =
+      kiln_test::input_error_message([&] { kiln::check_mesh(mesh, "mesh.exo"); });
+  if (message.empty())
+    ADD_FAILURE() << "no InputError";
+  return message;
 }
 
 TEST(MeshChecks, GoodMeshesPass)

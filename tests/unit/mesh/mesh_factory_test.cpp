@@ -8,6 +8,7 @@
 #include "base/errors.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/exodus_io.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -54,15 +55,8 @@ private:
 
 std::string build_error(const Teuchos::ParameterList &params, const std::string &mesh_file = "")
 {
-  try
-  {
-    kiln::MeshFactory(params, where, mesh_file).build();
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return kiln_test::input_error_message([&]
+                                        { kiln::MeshFactory(params, where, mesh_file).build(); });
 }
 } // namespace
 

@@ -8,6 +8,7 @@
 #include "io/input_reader.hpp"
 #include "physics/coupled_problem.hpp"
 #include "solvers/newton_solver.hpp"
+#include "support/simulation_runs.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -28,7 +29,7 @@ int calls(const std::string &name)
 TEST(AssemblyPasses, OneResidualPerNewtonIterationWithContact)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string deck = std::string(KILN_SOURCE_DIR) + "/inputs/contact-box-close.xml";
+  const std::string deck = kiln_test::inputs + "contact-box-close.xml";
   Teuchos::ParameterList input = kiln::read_input(deck, *comm);
   input.sublist("Output").set("Times", Teuchos::Array<double>(Teuchos::tuple(0.0, 50.0)));
   input.sublist("Output").set("File Base",

@@ -6,6 +6,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <gmock/gmock.h>
@@ -29,15 +30,7 @@ kiln::ConductivityModel make(const Teuchos::ParameterList &user)
 
 std::string error_of(const Teuchos::ParameterList &user)
 {
-  try
-  {
-    make(user);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return kiln_test::input_error_message([&] { make(user); });
 }
 
 Teuchos::ParameterList table(const std::vector<double> &temperatures,

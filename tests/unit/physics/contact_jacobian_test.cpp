@@ -22,16 +22,13 @@
 // KILN_TEST_NP: 1 2 3
 #include "physics/coupled_problem.hpp"
 
-#include "base/parameters.hpp"
-#include "mesh/box_mesh_generator.hpp"
-#include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
-#include "mesh/metis_partitioner.hpp"
-#include "physics/materials/material.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/problem_fixture.hpp"
+#include "support/tensors.hpp"
 
-#include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,17 +43,15 @@
 
 namespace
 {
+using namespace kiln_test;
 using kiln::GO;
 using kiln::LO;
-using kiln::Mesh;
 using kiln::Point;
 using Vector = kiln::NonlinearProblem::Vector;
 using Matrix = kiln::NonlinearProblem::Matrix;
-using Dense = std::vector<std::vector<double>>;
 
-/// Material: aluminium-like, E = 70 GPa, nu = 0.33, alpha = 2.2e-5 /K, T_ref = 298 K,
-/// k = 120 + 2 (T - 280) W/(m K) on (280, 400) K (states stay inside: no kink of k).
-constexpr double youngs = 7.0e10, poisson = 0.33, alpha = 2.2e-5, T_ref = 298.0;
+/// Material: TableMaterial (aluminium-like; states stay inside (280, 400) K: no kink of k).
+constexpr double T_ref = TableMaterial::T_ref;
 constexpr double phi = 30.0, theta = -20.0;
 /// Time of the evaluations [s] and a of the time derivative (T' = a T + b) [1/s].
 constexpr double t_now = 4.0, a_time = 3.0;
@@ -67,84 +62,12 @@ constexpr double tolerance = 1.0e-7;
 /// A pair's |P - c g| must be at least this fraction of max(|P|, |c g|).
 constexpr double margin_fraction = 0.1;
 
-Teuchos::Array<int> ids(const std::vector<int> &v)
-{
-  return Teuchos::Array<int>(v.begin(), v.end());
-}
-
-Teuchos::Array<double> values(const std::vector<double> &v)
-{
-  return Teuchos::Array<double>(v.begin(), v.end());
-}
-
-Teuchos::ParameterList constant_function(const double value)
-{
-  Teuchos::ParameterList f;
-  f.set("Type", "Constant");
-  f.set("Value", value);
-  return f;
-}
-
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /// The box 0.04 x 0.03 x 0.03 m, 4 x 3 x 3 cells, rotated by phi, theta; its nodes off the
 /// outer faces moved by up to 20% of a cell along each block axis (random, the same on every
 /// rank), those of the middle plane within it (so that the gap is plane); split at side set 10.
-Mesh split_box()
+kiln::Mesh split_box()
 {
-  const Point size{0.04, 0.03, 0.03};
-  const std::array<int, 3> cells{4, 3, 3};
-  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
-  p.set("Size", values({size[0], size[1], size[2]}));
-  p.set("Cells", ids({cells[0], cells[1], cells[2]}));
-  p.set("Phi", phi);
-  p.set("Theta", theta);
-  Mesh mesh = kiln::BoxMeshGenerator(p, "test/Box").generate();
-
-  std::vector<char> on_boundary(mesh.n_nodes(), 0), on_cut(mesh.n_nodes(), 0);
-  for (const kiln::SideSet &set : mesh.side_sets)
-    for (int s = 0; s < set.n_sides(); ++s)
-      for (const int i : kiln::hex_face_nodes[set.faces[s]])
-        (set.id == 10 ? on_cut : on_boundary)[mesh.connectivity[set.cells[s]][i]] = 1;
-  const auto A = kiln::rotation_matrix(phi, theta);
-  std::mt19937 random(20240611u);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int n = 0; n < mesh.n_nodes(); ++n)
-  {
-    if (on_boundary[n])
-      continue;
-    Point shift_block{};
-    for (int d = 0; d < 3; ++d)
-      shift_block[d] = 0.2 * unit(random) * size[d] / cells[d];
-    if (on_cut[n])
-      shift_block[0] = 0.0;
-    for (int d = 0; d < 3; ++d)
-      for (int e = 0; e < 3; ++e)
-        mesh.coordinates[n][d] += A[d][e] * shift_block[e];
-  }
-  kiln::split_gap(mesh, 10, "test");
-  return mesh;
-}
-
-kiln::Material material()
-{
-  Teuchos::ParameterList user;
-  user.set("Density", 2700.0);
-  user.set("Specific Heat", 900.0);
-  user.set("Young's Modulus", youngs);
-  user.set("Poisson's Ratio", poisson);
-  user.set("Thermal Expansion", alpha);
-  user.set("Reference Temperature", T_ref);
-  Teuchos::ParameterList &k = user.sublist("Conductivity");
-  k.set("Type", "Table");
-  k.set("Temperatures", values({200.0, 280.0, 400.0}));
-  k.set("Values", values({300.0, 120.0, 360.0}));
-  const Teuchos::ParameterList p =
-      kiln::validated(user, kiln::Material::valid_parameters(), "test.xml", "Kiln/Material");
-  return kiln::Material(p, "test.xml: Kiln/Material");
+  return distorted_box({{0.04, 0.03, 0.03}, {4, 3, 3}, phi, theta}, 0.2, 10, true);
 }
 
 enum class Conductance
@@ -230,13 +153,10 @@ struct PairStates
   double max_contact_row_error = 0.0; ///< closed pairs: |F_b - A c g| / (A c |g|)
 };
 
-/// Mesh, partition, unknowns, material and the node data of the states; CoupledProblem keeps
-/// references to the mesh and the unknowns, so this stays where it is built.
-struct Fixture
+/// The problem fixture on the split box, and the node data of the states.
+struct Fixture : ProblemFixture
 {
-  Fixture()
-      : mesh(split_box()), cell_rank(kiln::partition_cells(mesh, *comm, "test")),
-        dofs(mesh, cell_rank, comm, kiln::DofLayout{true, true, true})
+  Fixture() : ProblemFixture(split_box(), kiln::DofLayout{true, true, true})
   {
     const int N = mesh.n_nodes();
     normal = mesh.gap_pairs.at(0).normal;
@@ -268,18 +188,6 @@ struct Fixture
       for (double &u : noise_u[n])
         u = unit(random);
     }
-  }
-  Fixture(const Fixture &) = delete;
-  Fixture &operator=(const Fixture &) = delete;
-
-  Teuchos::RCP<kiln::CoupledProblem> problem(const Teuchos::ParameterList &thermal,
-                                             const Teuchos::ParameterList &mechanics) const
-  {
-    const Teuchos::ParameterList t = kiln::validated(
-        thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList m = kiln::validated(
-        mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
-    return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, mat, t, m, "test.xml: Kiln"));
   }
 
   /// Sets the time derivative T' = a T + b with b = -a (T_a or T_b - 1 K): T' about 3 K/s.
@@ -383,7 +291,7 @@ struct Fixture
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 4 * N, local.data(), global.data());
 
     PairStates s;
-    const double modulus = mat.lame_lambda() + 2.0 * mat.shear_modulus();
+    const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
     s.min_abs_P = s.min_abs_cg = 1e300;
     for (const kiln::GapPair &pair : mesh.gap_pairs)
     {
@@ -433,11 +341,6 @@ struct Fixture
     return s.str();
   }
 
-  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
-  Mesh mesh;
-  std::vector<int> cell_rank;
-  kiln::DofManager dofs;
-  kiln::Material mat = material();
   Point normal{};                ///< of the (plane) gap, from side a to side b
   std::vector<int> pair_of_node; ///< per mesh node: its gap pair or -1
   std::vector<char> side_b;      ///< per mesh node
@@ -446,30 +349,9 @@ struct Fixture
   std::vector<Point> noise_u;
 };
 
-/// Owned rows of J as dense rows over all global columns.
-Dense dense_rows(const Matrix &J, const GO n_columns)
-{
-  const std::size_t n_rows = J.getRowMap()->getNodeNumElements();
-  Dense rows(n_rows, std::vector<double>(n_columns, 0.0));
-  for (std::size_t i = 0; i < n_rows; ++i)
-  {
-    const std::size_t n = J.getNumEntriesInLocalRow(static_cast<LO>(i));
-    Matrix::nonconst_local_inds_host_view_type cols("cols", n);
-    Matrix::nonconst_values_host_view_type entries("values", n);
-    std::size_t count = 0;
-    J.getLocalRowCopy(static_cast<LO>(i), cols, entries, count);
-    for (std::size_t e = 0; e < count; ++e)
-      rows[i][J.getColMap()->getGlobalElement(cols(e))] += entries(e);
-  }
-  return rows;
-}
-
 /// Blocks: (rows T or u) x (columns T or u).
-int block_of(const GO row, const GO column)
-{
-  return 2 * (row % 4 != 0) + (column % 4 != 0);
-}
-const char *const block_names[4] = {"T-T", "T-u", "u-T", "u-u"};
+const auto block_of = thermo_mechanical_block;
+const auto &block_names = thermo_mechanical_block_names;
 
 struct JacobianCheck
 {
@@ -493,34 +375,17 @@ JacobianCheck check_jacobian(const Fixture &s, kiln::CoupledProblem &problem, Ve
   const auto map = problem.solution_map();
   const GO n_global = s.dofs.n_global_dofs();
   const std::size_t n_rows = map->getNodeNumElements();
-  Vector f(map), f_plus(map), f_minus(map);
+  Vector f(map);
   Matrix J(problem.jacobian_graph());
   problem.evaluate(x, &f, &J);
   EXPECT_EQ(problem.n_active_pairs(x), n_active) << name;
   const Dense rows = dense_rows(J, n_global);
 
   const auto start = std::chrono::steady_clock::now();
-  Dense fd(n_rows, std::vector<double>(n_global, 0.0));
-  for (GO j = 0; j < n_global; ++j)
-  {
-    const double eps = j % 4 == 0 ? eps_T : eps_u;
-    const LO lj = map->getLocalElement(j);
-    const bool mine = lj != Teuchos::OrdinalTraits<LO>::invalid();
-    const double x_j = mine ? x.getData()[lj] : 0.0;
-    if (mine)
-      x.replaceLocalValue(lj, x_j + eps);
-    problem.evaluate(x, &f_plus, nullptr);
-    result.count_changes += problem.n_active_pairs(x) != n_active;
-    if (mine)
-      x.replaceLocalValue(lj, x_j - eps);
-    problem.evaluate(x, &f_minus, nullptr);
-    result.count_changes += problem.n_active_pairs(x) != n_active;
-    if (mine)
-      x.replaceLocalValue(lj, x_j);
-    const auto r_plus = f_plus.getData(), r_minus = f_minus.getData();
-    for (std::size_t i = 0; i < n_rows; ++i)
-      fd[i][j] = (r_plus[i] - r_minus[i]) / (2.0 * eps);
-  }
+  const Dense fd = finite_difference_rows(
+      problem, x, [](const GO j) { return j % 4 == 0 ? eps_T : eps_u; },
+      [&](const Vector &perturbed)
+      { result.count_changes += problem.n_active_pairs(perturbed) != n_active; });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(result.count_changes, 0) << name << ": perturbations changed the active set";
 

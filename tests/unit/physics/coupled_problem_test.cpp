@@ -15,18 +15,16 @@
 #include "physics/coupled_problem.hpp"
 
 #include "base/log.hpp"
-#include "base/parameters.hpp"
-#include "mesh/box_mesh_generator.hpp"
-#include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
-#include "mesh/metis_partitioner.hpp"
-#include "physics/materials/material.hpp"
 #include "solvers/newton_solver.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parallel.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/problem_fixture.hpp"
+#include "support/tensors.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultComm.hpp>
-#include <Teuchos_Tuple.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,18 +37,18 @@
 
 namespace
 {
+using namespace kiln_test;
 using kiln::GO;
 using kiln::LO;
-using kiln::Mesh;
 using kiln::Point;
 using Vector = kiln::NonlinearProblem::Vector;
 using Matrix = kiln::NonlinearProblem::Matrix;
-using Tensor = std::array<std::array<double, 3>, 3>;
-using Dense = std::vector<std::vector<double>>;
+using Tensor = Matrix3;
+using Fixture = ProblemFixture;
 
-/// Material: aluminium-like, E = 70 GPa, nu = 0.33, alpha = 2.2e-5 /K, T_ref = 298 K,
-/// k = 120 + 2 (T - 280) W/(m K) on (280, 400) K (a table, so k' counts in the Jacobian).
-constexpr double youngs = 7.0e10, poisson = 0.33, alpha = 2.2e-5, T_ref = 298.0;
+/// Material: TableMaterial (aluminium-like, k(T) a table, so k' counts in the Jacobian).
+constexpr double youngs = TableMaterial::youngs, poisson = TableMaterial::poisson,
+                 alpha = TableMaterial::alpha, T_ref = TableMaterial::T_ref;
 
 /// Time of the finite-difference evaluations [s]: the Smooth Step conditions over [0, 10] s
 /// are then at s = 0.4, s^2 (3 - 2 s) = 0.352 of the way.
@@ -58,133 +56,6 @@ constexpr double t_now = 4.0;
 constexpr double step_fraction = 0.16 * (3.0 - 0.8);
 /// The prescribed normal displacement of side set 3 at t_now, and u_y on side set 2 [m].
 constexpr double g_3 = 5.0e-6 * step_fraction, g_2_y = -1.0e-6;
-
-Teuchos::Array<int> ids(const std::vector<int> &v)
-{
-  return Teuchos::Array<int>(v.begin(), v.end());
-}
-
-Teuchos::Array<double> values(const std::vector<double> &v)
-{
-  return Teuchos::Array<double>(v.begin(), v.end());
-}
-
-Teuchos::ParameterList constant_function(const double value)
-{
-  Teuchos::ParameterList f;
-  f.set("Type", "Constant");
-  f.set("Value", value);
-  return f;
-}
-
-Teuchos::ParameterList smooth_step(const double start_value, const double end_value)
-{
-  Teuchos::ParameterList f;
-  f.set("Type", "Smooth Step");
-  f.set("Start Time", 0.0);
-  f.set("End Time", 10.0);
-  f.set("Start Value", start_value);
-  f.set("End Value", end_value);
-  return f;
-}
-
-/// A box (block frame sizes `size`, rotated by phi, theta and translated by `shift`) whose
-/// nodes off the six outer faces are moved by up to `distortion` of a cell along each block
-/// axis (random, the same on every rank), so that the outer faces stay plane; then split at
-/// `gap_side_set` (0: not split).
-Mesh distorted_box(const Point &size, const std::array<int, 3> &cells, const double phi,
-                   const double theta, const Point &shift, const double distortion,
-                   const int gap_side_set)
-{
-  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
-  p.set("Size", values({size[0], size[1], size[2]}));
-  p.set("Cells", ids({cells[0], cells[1], cells[2]}));
-  p.set("Phi", phi);
-  p.set("Theta", theta);
-  p.set("Translation", values({shift[0], shift[1], shift[2]}));
-  Mesh mesh = kiln::BoxMeshGenerator(p, "test/Box").generate();
-
-  std::vector<char> on_boundary(mesh.n_nodes(), 0);
-  for (const kiln::SideSet &set : mesh.side_sets)
-    if (set.id >= 1 && set.id <= 6)
-      for (int s = 0; s < set.n_sides(); ++s)
-        for (const int i : kiln::hex_face_nodes[set.faces[s]])
-          on_boundary[mesh.connectivity[set.cells[s]][i]] = 1;
-  const auto A = kiln::rotation_matrix(phi, theta);
-  std::mt19937 random(20240611u);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int n = 0; n < mesh.n_nodes(); ++n)
-  {
-    if (on_boundary[n])
-      continue;
-    Point shift_block{};
-    for (int d = 0; d < 3; ++d)
-      shift_block[d] = distortion * unit(random) * size[d] / cells[d];
-    for (int d = 0; d < 3; ++d)
-      for (int e = 0; e < 3; ++e)
-        mesh.coordinates[n][d] += A[d][e] * shift_block[e];
-  }
-  if (gap_side_set != 0)
-    kiln::split_gap(mesh, gap_side_set, "test");
-  return mesh;
-}
-
-kiln::Material material()
-{
-  Teuchos::ParameterList user;
-  user.set("Density", 2700.0);
-  user.set("Specific Heat", 900.0);
-  user.set("Young's Modulus", youngs);
-  user.set("Poisson's Ratio", poisson);
-  user.set("Thermal Expansion", alpha);
-  user.set("Reference Temperature", T_ref);
-  Teuchos::ParameterList &k = user.sublist("Conductivity");
-  k.set("Type", "Table");
-  k.set("Temperatures", values({200.0, 280.0, 400.0}));
-  k.set("Values", values({300.0, 120.0, 360.0}));
-  const Teuchos::ParameterList p =
-      kiln::validated(user, kiln::Material::valid_parameters(), "test.xml", "Kiln/Material");
-  return kiln::Material(p, "test.xml: Kiln/Material");
-}
-
-/// Mesh, partition, unknowns and material of one test; CoupledProblem keeps references to
-/// the mesh and the unknowns, so this stays where it is built.
-struct Fixture
-{
-  Fixture(Mesh m, const kiln::DofLayout layout)
-      : mesh(std::move(m)), cell_rank(kiln::partition_cells(mesh, *comm, "test")),
-        dofs(mesh, cell_rank, comm, layout)
-  {
-  }
-  Fixture(const Fixture &) = delete;
-  Fixture &operator=(const Fixture &) = delete;
-
-  Teuchos::RCP<kiln::CoupledProblem> problem(const Teuchos::ParameterList &thermal,
-                                             const Teuchos::ParameterList &mechanics) const
-  {
-    const Teuchos::ParameterList t = kiln::validated(
-        thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList m = kiln::validated(
-        mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
-    return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, mat, t, m, "test.xml: Kiln"));
-  }
-  /// 1 for the nodes of the faces of side set `id`.
-  std::vector<char> nodes_of_side_set(const int id) const
-  {
-    std::vector<char> on(mesh.n_nodes(), 0);
-    const kiln::SideSet &set = *mesh.find_side_set(id);
-    for (int s = 0; s < set.n_sides(); ++s)
-      for (const int i : kiln::hex_face_nodes[set.faces[s]])
-        on[mesh.connectivity[set.cells[s]][i]] = 1;
-    return on;
-  }
-
-  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
-  Mesh mesh;
-  std::vector<int> cell_rank;
-  kiln::DofManager dofs;
-  kiln::Material mat = material();
-};
 
 /// The thermal block of the finite-difference test: the temperature on side set 1 (a smooth
 /// step 300 -> 320 K), convection on 2 and 6 (h = 50, ambient 290 -> 280 K), a heat flux on 3
@@ -253,87 +124,12 @@ void set_by_gid(Vector &v, const std::vector<double> &value)
   for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
     v.replaceLocalValue(static_cast<LO>(i), value[map->getGlobalElement(static_cast<LO>(i))]);
 }
-
-/// Owned rows of J as dense rows over all global columns.
-Dense dense_rows(const Matrix &J, const GO n_columns)
-{
-  const std::size_t n_rows = J.getRowMap()->getNodeNumElements();
-  Dense rows(n_rows, std::vector<double>(n_columns, 0.0));
-  for (std::size_t i = 0; i < n_rows; ++i)
-  {
-    const std::size_t n = J.getNumEntriesInLocalRow(static_cast<LO>(i));
-    Matrix::nonconst_local_inds_host_view_type cols("cols", n);
-    Matrix::nonconst_values_host_view_type entries("values", n);
-    std::size_t count = 0;
-    J.getLocalRowCopy(static_cast<LO>(i), cols, entries, count);
-    for (std::size_t e = 0; e < count; ++e)
-      rows[i][J.getColMap()->getGlobalElement(cols(e))] += entries(e);
-  }
-  return rows;
-}
-
-/// The whole of J on every rank.
-Dense dense_matrix(const Matrix &J, const GO n)
-{
-  const Dense rows = dense_rows(J, n);
-  std::vector<double> local(static_cast<std::size_t>(n * n), 0.0), global(local.size(), 0.0);
-  for (std::size_t i = 0; i < rows.size(); ++i)
-  {
-    const GO gi = J.getRowMap()->getGlobalElement(static_cast<LO>(i));
-    std::copy(rows[i].begin(), rows[i].end(), local.begin() + gi * n);
-  }
-  Teuchos::reduceAll(*J.getRowMap()->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n * n),
-                     local.data(), global.data());
-  Dense dense(n, std::vector<double>(n));
-  for (GO i = 0; i < n; ++i)
-    std::copy(global.begin() + i * n, global.begin() + (i + 1) * n, dense[i].begin());
-  return dense;
-}
-
-double global_max(const Teuchos::Comm<int> &comm, const double local)
-{
-  double global = 0.0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
-  return global;
-}
-
-int global_sum(const Teuchos::Comm<int> &comm, const int local)
-{
-  int global = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-  return global;
-}
-
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/// Column d of A (block axis d in the global frame).
-Point column(const Tensor &A, const int d)
-{
-  return {A[0][d], A[1][d], A[2][d]};
-}
-
-/// A diag(s) A^T.
-Tensor rotated_diagonal(const Tensor &A, const Point &s)
-{
-  Tensor t{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        t[i][j] += A[i][k] * s[k] * A[j][k];
-  return t;
-}
-
-/// Voigt index of tensor component (d, k): xx, yy, zz, xy, xz, yz.
-constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
 } // namespace
 
 TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
 {
   const double phi = 30.0, theta = -20.0;
-  Fixture s(distorted_box({0.04, 0.03, 0.03}, {4, 3, 3}, phi, theta, {0.0, 0.0, 0.0}, 0.2, 10),
+  Fixture s(distorted_box({{0.04, 0.03, 0.03}, {4, 3, 3}, phi, theta}, 0.2, 10),
             kiln::DofLayout{true, true, false});
   auto problem = s.problem(thermal_conditions(), mechanical_conditions());
   const auto map = problem->solution_map();
@@ -354,7 +150,7 @@ TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
       b_values[j] = -a * (298.0 + 4.0 * unit(random));
     }
   }
-  Vector x(map), b(map), f(map), f_plus(map), f_minus(map);
+  Vector x(map), b(map), f(map);
   set_by_gid(x, x_values);
   set_by_gid(b, b_values);
   problem->set_time_derivative(t_now, a, b);
@@ -363,7 +159,7 @@ TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
   const Dense rows = dense_rows(J, n_global);
 
   // The largest |J| of each block: (rows T or u) x (columns T or u).
-  const auto block = [](const GO row, const GO col) { return 2 * (row % 4 != 0) + (col % 4 != 0); };
+  const auto block = thermo_mechanical_block;
   std::array<double, 4> max_J{}, max_J_global{};
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (GO j = 0; j < n_global; ++j)
@@ -380,27 +176,17 @@ TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
   // Column by column, every rank in lock step (evaluate is collective). The residual is
   // quadratic in T between the table's points (k linear) and linear in u, so the central
   // difference is exact but for round-off.
+  const Dense fd_rows =
+      finite_difference_rows(*problem, x, [](const GO j) { return j % 4 == 0 ? 1.0e-3 : 1.0e-8; });
   std::array<double, 4> max_difference{}, max_difference_global{};
   int n_nonzero = 0;
   for (GO j = 0; j < n_global; ++j)
   {
-    const double eps = j % 4 == 0 ? 1.0e-3 : 1.0e-8;
-    const LO lj = map->getLocalElement(j);
-    const bool mine = lj != Teuchos::OrdinalTraits<LO>::invalid();
-    if (mine)
-      x.replaceLocalValue(lj, x_values[j] + eps);
-    problem->evaluate(x, &f_plus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_values[j] - eps);
-    problem->evaluate(x, &f_minus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_values[j]);
-    const auto r_plus = f_plus.getData(), r_minus = f_minus.getData();
     for (std::size_t i = 0; i < rows.size(); ++i)
     {
       const GO gi = map->getGlobalElement(static_cast<LO>(i));
       const int k = block(gi, j);
-      const double fd = (r_plus[i] - r_minus[i]) / (2 * eps);
+      const double fd = fd_rows[i][j];
       const double difference = std::abs(fd - rows[i][j]);
       EXPECT_LE(difference, 1e-7 * max_J_global[k])
           << "row " << gi << ", column " << j << ": J = " << rows[i][j] << ", finite difference "
@@ -413,10 +199,10 @@ TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
                      max_difference_global.data());
   if (s.comm->getRank() == 0)
   {
-    const char *names[4] = {"T-T", "T-u", "u-T", "u-u"};
     std::cout << "CoupledProblem (" << n_global << " unknowns):";
     for (int k = 0; k < 4; ++k)
-      std::cout << "\n  block " << names[k] << ": max |J| = " << max_J_global[k]
+      std::cout << "\n  block " << thermo_mechanical_block_names[k]
+                << ": max |J| = " << max_J_global[k]
                 << ", max |J - J_fd| = " << max_difference_global[k] << " (relative "
                 << (max_J_global[k] > 0 ? max_difference_global[k] / max_J_global[k] : 0.0) << ")";
     std::cout << "\n";
@@ -465,7 +251,7 @@ TEST(CoupledProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
 
 TEST(CoupledProblem, ElasticityJacobianWithRotatedRollersIsSymmetricPositiveDefinite)
 {
-  Fixture s(distorted_box({0.04, 0.03, 0.03}, {4, 3, 3}, 30.0, -20.0, {0.0, 0.0, 0.0}, 0.2, 10),
+  Fixture s(distorted_box({{0.04, 0.03, 0.03}, {4, 3, 3}, 30.0, -20.0}, 0.2, 10),
             kiln::DofLayout{false, true, false});
   auto problem = s.problem(Teuchos::ParameterList(), mechanical_conditions());
   const auto map = problem->solution_map();
@@ -491,9 +277,8 @@ TEST(CoupledProblem, ElasticityJacobianWithRotatedRollersIsSymmetricPositiveDefi
   // The same conditions in the Thermo-Elasticity layout give the same u-u block.
   double max_block_difference = 0.0;
   {
-    Fixture coupled(
-        distorted_box({0.04, 0.03, 0.03}, {4, 3, 3}, 30.0, -20.0, {0.0, 0.0, 0.0}, 0.2, 10),
-        kiln::DofLayout{true, true, false});
+    Fixture coupled(distorted_box({{0.04, 0.03, 0.03}, {4, 3, 3}, 30.0, -20.0}, 0.2, 10),
+                    kiln::DofLayout{true, true, false});
     auto coupled_problem = coupled.problem(thermal_conditions(), mechanical_conditions());
     const auto coupled_map = coupled_problem->solution_map();
     Vector x4(coupled_map), b4(coupled_map), f4(coupled_map);
@@ -547,7 +332,7 @@ void check_uniform_stress(const bool thermal, const double T0)
 {
   const double phi = 30.0, theta = 20.0;
   const Point size{0.04, 0.03, 0.05}, s_block{1.0e8, -5.0e7, 2.0e7};
-  Fixture s(distorted_box(size, {4, 3, 5}, phi, theta, {0.1, -0.2, 0.05}, 0.2, 0),
+  Fixture s(distorted_box({size, {4, 3, 5}, phi, theta, {0.1, -0.2, 0.05}}, 0.2, 0),
             kiln::DofLayout{thermal, true, false});
   const auto A = kiln::rotation_matrix(phi, theta);
 

@@ -14,6 +14,8 @@
 #include "discretization/local_system.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/mesh.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/reference_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,20 +28,11 @@
 
 namespace
 {
+using namespace kiln_test;
 using kiln::Point;
-using Edges = std::array<Point, 3>;
-using Dense = std::vector<std::vector<double>>;
-using Matrix = std::array<std::array<double, 3>, 3>;
+using Matrix = Matrix3;
 using NodalDisplacements = kiln::ElasticityKernel::NodalDisplacements;
 using NodalValues = kiln::ElasticityKernel::NodalValues;
-
-/// HEX8 (Exodus) corner i at (ξ, η, ζ) in {0, 1}^3; face (quad) corner i counterclockwise.
-constexpr int hex_corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                  {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-constexpr int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-
-/// Voigt index of tensor component (d, k): xx, yy, zz, xy, xz, yz.
-constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
 
 /// Steel-like constants: E = 200 GPa, nu = 0.3.
 const double youngs = 200.0e9, poisson = 0.3;
@@ -49,98 +42,15 @@ const double alpha = 1.2e-5, T_ref = 293.15;
 /// β = (3λ + 2G) α = E α / (1 − 2ν) [Pa/K].
 const double beta = youngs * alpha / (1 - 2 * poisson);
 
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Point cross(const Point &a, const Point &b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double norm(const Point &a)
-{
-  return std::sqrt(dot(a, a));
-}
-
-Point times(const Matrix &A, const Point &x)
-{
-  return {dot(A[0], x), dot(A[1], x), dot(A[2], x)};
-}
-
-/// ±1: the sign of ∂ℓ/∂ξ of the 1D linear function of corner coordinate c (ξ or 1 - ξ).
-double sign(const int c)
-{
-  return c == 1 ? 1.0 : -1.0;
-}
-
-/// ∫_0^1 ℓ_a ℓ_b dξ for the corner coordinates a, b: 1/3 if equal, 1/6 if not.
-double mass_1d(const int a, const int b)
-{
-  return a == b ? 1.0 / 3.0 : 1.0 / 6.0;
-}
-
-/// The cell x = origin + Σ_d ξ_d edges[d], ξ in [0, 1]^3, in HEX8 order.
-kiln::HexNodes parallelepiped(const Edges &edges, const Point &origin)
-{
-  kiln::HexNodes x;
-  for (int i = 0; i < 8; ++i)
-    for (int d = 0; d < 3; ++d)
-    {
-      x[i][d] = origin[d];
-      for (int e = 0; e < 3; ++e)
-        x[i][d] += hex_corner[i][e] * edges[e][d];
-    }
-  return x;
-}
-
-/// The face x = origin + s e1 + t e2, (s, t) in [0, 1]^2, counterclockwise about e1 x e2.
-kiln::QuadNodes parallelogram(const Point &e1, const Point &e2, const Point &origin)
-{
-  kiln::QuadNodes x;
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      x[i][d] = origin[d] + quad_corner[i][0] * e1[d] + quad_corner[i][1] * e2[d];
-  return x;
-}
-
-/// The columns of cof(A) = det(A) A^{-T} for A = [a1 a2 a3]: a2 x a3, a3 x a1, a1 x a2.
-Edges cofactor_columns(const Edges &a)
-{
-  return {cross(a[1], a[2]), cross(a[2], a[0]), cross(a[0], a[1])};
-}
-
-double volume(const Edges &a)
-{
-  return dot(a[0], cross(a[1], a[2]));
-}
-
 /// ∫ ∂_k φ_i ∂_l φ_j dΩ on a parallelepiped: with ∂_k φ = Σ_d cof_d[k] ∂_d φ̂ / V and
-/// dΩ = V dξ, it is (1/V) Σ_{d,e} cof_d[k] cof_e[l] ∫ ∂_d φ̂_i ∂_e φ̂_j dξ, the reference
-/// integral a product of ∫ℓ'ℓ' = sign sign, ∫ℓ'ℓ = sign/2 and mass_1d.
+/// dΩ = V dξ, it is (1/V) Σ_{d,e} cof_d[k] cof_e[l] ∫ ∂_d φ̂_i ∂_e φ̂_j dξ.
 double grad_grad_integral(const Edges &a, const int i, const int k, const int j, const int l)
 {
   const Edges c = cofactor_columns(a);
   double value = 0.0;
   for (int d = 0; d < 3; ++d)
     for (int e = 0; e < 3; ++e)
-    {
-      double reference = 1.0;
-      for (int f = 0; f < 3; ++f)
-      {
-        const int ci = hex_corner[i][f], cj = hex_corner[j][f];
-        if (f == d && f == e)
-          reference *= sign(ci) * sign(cj);
-        else if (f == d)
-          reference *= 0.5 * sign(ci);
-        else if (f == e)
-          reference *= 0.5 * sign(cj);
-        else
-          reference *= mass_1d(ci, cj);
-      }
-      value += c[d][k] * c[e][l] * reference / volume(a);
-    }
+      value += c[d][k] * c[e][l] * reference_grad_grad(i, d, j, e) / volume(a);
   return value;
 }
 
@@ -159,37 +69,6 @@ double shape_grad_integral(const Edges &a, const int i, const int k, const int j
   }
   return value;
 }
-
-double max_abs(const Dense &m)
-{
-  double v = 0.0;
-  for (const auto &row : m)
-    for (const double x : row)
-      v = std::max(v, std::abs(x));
-  return v;
-}
-
-double max_abs(const std::vector<double> &values)
-{
-  double v = 0.0;
-  for (const double x : values)
-    v = std::max(v, std::abs(x));
-  return v;
-}
-
-Dense jacobian_of(const kiln::LocalSystem &local)
-{
-  const int n = local.size();
-  Dense j(n, std::vector<double>(n));
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c)
-      j[r][c] = local.jacobian_values()[r * n + c];
-  return j;
-}
-
-/// A sheared, stretched and rotated cell (volume checked in the tests).
-const Edges skew_edges = {{{1.2, 0.3, -0.2}, {-0.4, 0.9, 0.25}, {0.3, -0.1, 0.7}}};
-const Point skew_origin{0.5, -1.0, 2.0};
 
 /// The skew cell with every node moved by up to ~0.1 (a non-affine, warped cell), then
 /// rotated by Rx(40°) Ry(25°) and scaled to millimetres.
@@ -284,19 +163,9 @@ TEST(ElasticityKernel, JacobianMatchesFiniteDifferencesOnADistortedCell)
   unpack(state, u, T);
   kiln::LocalSystem local(8, 4);
   kernel.evaluate(fe, u, T, b, 1, 0, local);
-  const Dense J = jacobian_of(local);
-
-  Dense fd(32, std::vector<double>(32));
-  for (int c = 0; c < 32; ++c)
-  {
-    const double eps = c % 4 == 0 ? 1e-1 : 1e-7; // [K] or [m]
-    std::vector<double> plus = state, minus = state;
-    plus[c] += eps;
-    minus[c] -= eps;
-    const std::vector<double> r_plus = residual(plus), r_minus = residual(minus);
-    for (int r = 0; r < 32; ++r)
-      fd[r][c] = (r_plus[r] - r_minus[r]) / (2 * eps);
-  }
+  const Dense J = local_jacobian(local);
+  const Dense fd = finite_difference_jacobian(
+      residual, state, [](const int c) { return c % 4 == 0 ? 1e-1 : 1e-7; }); // [K] or [m]
 
   // Relative errors of the u-u and the u-T blocks, each against its own size; the T rows are
   // the heat kernels' and must stay zero.
@@ -352,7 +221,7 @@ TEST(ElasticityKernel, JacobianEqualsClosedFormIntegralsOnAnAffineCell)
   T.fill(T_ref);
   kiln::LocalSystem local(8, 4);
   kernel.evaluate(fe, u, T, {0, 0, 0}, 1, 0, local);
-  const double scale = max_abs(jacobian_of(local));
+  const double scale = max_abs(local_jacobian(local));
   double scale_T = 0.0;
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j)

@@ -16,6 +16,8 @@
 #include "discretization/local_system.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/materials/conductivity_model.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/reference_cells.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <gtest/gtest.h>
@@ -29,72 +31,8 @@
 
 namespace
 {
+using namespace kiln_test;
 using kiln::Point;
-using Edges = std::array<Point, 3>;
-using Dense = std::vector<std::vector<double>>;
-
-/// HEX8 (Exodus) corner i at (ξ, η, ζ) in {0, 1}^3; face (quad) corner i counterclockwise.
-constexpr int hex_corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                  {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-constexpr int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-
-double dot(const Point &a, const Point &b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Point cross(const Point &a, const Point &b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-/// ±1: the sign of ∂ℓ/∂ξ of the 1D linear function of corner coordinate c (ξ or 1 - ξ).
-double sign(const int c)
-{
-  return c == 1 ? 1.0 : -1.0;
-}
-
-/// ∫_0^1 ℓ_a ℓ_b dξ for the corner coordinates a, b: 1/3 if equal, 1/6 if not.
-double mass_1d(const int a, const int b)
-{
-  return a == b ? 1.0 / 3.0 : 1.0 / 6.0;
-}
-
-/// The cell x = origin + Σ_d ξ_d edges[d], ξ in [0, 1]^3, in HEX8 order.
-kiln::HexNodes parallelepiped(const Edges &edges, const Point &origin)
-{
-  kiln::HexNodes x;
-  for (int i = 0; i < 8; ++i)
-    for (int d = 0; d < 3; ++d)
-    {
-      x[i][d] = origin[d];
-      for (int e = 0; e < 3; ++e)
-        x[i][d] += hex_corner[i][e] * edges[e][d];
-    }
-  return x;
-}
-
-/// The face x = origin + s e1 + t e2, (s, t) in [0, 1]^2, counterclockwise about e1 x e2.
-kiln::QuadNodes parallelogram(const Point &e1, const Point &e2, const Point &origin)
-{
-  kiln::QuadNodes x;
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      x[i][d] = origin[d] + quad_corner[i][0] * e1[d] + quad_corner[i][1] * e2[d];
-  return x;
-}
-
-/// The columns of cof(A) = det(A) A^{-T} for A = [a1 a2 a3]: a2 x a3, a3 x a1, a1 x a2
-/// (the area vectors of the cell's faces).
-Edges cofactor_columns(const Edges &a)
-{
-  return {cross(a[1], a[2]), cross(a[2], a[0]), cross(a[0], a[1])};
-}
-
-double volume(const Edges &a)
-{
-  return dot(a[0], cross(a[1], a[2]));
-}
 
 /// ∫ ∇φ_i dΩ = det(A) A^{-T} ∫ ∇_ξ φ̂_i dξ = (1/4) Σ_d sign_d cof_d on a parallelepiped.
 Point integral_of_gradient(const Edges &a, const int i)
@@ -120,8 +58,7 @@ Dense mass_matrix(const Edges &a)
 }
 
 /// Stiffness matrix ∫ ∇φ_i·∇φ_j dΩ of a parallelepiped: with ∇φ = A^{-T} ∇_ξ φ̂ and
-/// A^{-T} = cof(A) / V, K_ij = (1/V) Σ_{d,e} (cof_d·cof_e) ∫ ∂_d φ̂_i ∂_e φ̂_j dξ, where the
-/// reference integral is a product of ∫ℓ'ℓ' = sign sign, ∫ℓ'ℓ = sign/2 and mass_1d.
+/// A^{-T} = cof(A) / V, K_ij = (1/V) Σ_{d,e} (cof_d·cof_e) ∫ ∂_d φ̂_i ∂_e φ̂_j dξ.
 Dense stiffness_matrix(const Edges &a)
 {
   const Edges c = cofactor_columns(a);
@@ -130,22 +67,7 @@ Dense stiffness_matrix(const Edges &a)
     for (int j = 0; j < 8; ++j)
       for (int d = 0; d < 3; ++d)
         for (int e = 0; e < 3; ++e)
-        {
-          double reference = 1.0;
-          for (int f = 0; f < 3; ++f)
-          {
-            const int ci = hex_corner[i][f], cj = hex_corner[j][f];
-            if (f == d && f == e)
-              reference *= sign(ci) * sign(cj);
-            else if (f == d)
-              reference *= 0.5 * sign(ci);
-            else if (f == e)
-              reference *= 0.5 * sign(cj);
-            else
-              reference *= mass_1d(ci, cj);
-          }
-          k[i][j] += dot(c[d], c[e]) * reference / volume(a);
-        }
+          k[i][j] += dot(c[d], c[e]) * reference_grad_grad(i, d, j, e) / volume(a);
   return k;
 }
 
@@ -158,53 +80,6 @@ Dense face_mass_matrix(const double area)
       m[i][j] = area * mass_1d(quad_corner[i][0], quad_corner[j][0]) *
                 mass_1d(quad_corner[i][1], quad_corner[j][1]);
   return m;
-}
-
-double max_abs(const Dense &m)
-{
-  double v = 0.0;
-  for (const auto &row : m)
-    for (const double x : row)
-      v = std::max(v, std::abs(x));
-  return v;
-}
-
-Dense jacobian_of(const kiln::LocalSystem &local)
-{
-  const int n = local.size();
-  Dense j(n, std::vector<double>(n));
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c)
-      j[r][c] = local.jacobian_values()[r * n + c];
-  return j;
-}
-
-/// Central differences dR/dT of residual(T) (n unknowns), column by column.
-Dense finite_difference_jacobian(
-    const std::function<std::vector<double>(const std::vector<double> &)> &residual,
-    const std::vector<double> &T, const double eps)
-{
-  const int n = static_cast<int>(T.size());
-  Dense j(n, std::vector<double>(n));
-  for (int c = 0; c < n; ++c)
-  {
-    std::vector<double> plus = T, minus = T;
-    plus[c] += eps;
-    minus[c] -= eps;
-    const std::vector<double> r_plus = residual(plus), r_minus = residual(minus);
-    for (int r = 0; r < n; ++r)
-      j[r][c] = (r_plus[r] - r_minus[r]) / (2 * eps);
-  }
-  return j;
-}
-
-double max_difference(const Dense &a, const Dense &b)
-{
-  double d = 0.0;
-  for (std::size_t r = 0; r < a.size(); ++r)
-    for (std::size_t c = 0; c < a[r].size(); ++c)
-      d = std::max(d, std::abs(a[r][c] - b[r][c]));
-  return d;
 }
 
 /// k = 100 W/(m K) at 250 K, 300 at 350 K, 150 at 450 K: slope 2 W/(m K^2) on (250, 350).
@@ -220,18 +95,10 @@ kiln::ConductivityModel table_conductivity()
 }
 
 const Edges unit_edges = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-/// A sheared, stretched and rotated cell (volume checked in the tests).
-const Edges skew_edges = {{{1.2, 0.3, -0.2}, {-0.4, 0.9, 0.25}, {0.3, -0.1, 0.7}}};
-const Point skew_origin{0.5, -1.0, 2.0};
 
 /// An orthonormal pair (e1 x e2 = (2, -2, 1)/3) for rotated faces.
 const Point u1{1.0 / 3, 2.0 / 3, 2.0 / 3};
 const Point u2{2.0 / 3, 1.0 / 3, -2.0 / 3};
-
-Point scaled(const double s, const Point &v)
-{
-  return {s * v[0], s * v[1], s * v[2]};
-}
 
 using NodalValues = kiln::HeatConductionKernel::NodalValues;
 
@@ -340,7 +207,7 @@ TEST(HeatConductionKernel, JacobianOfConstantConductivityIsMassPlusStiffness)
     }
     kiln::LocalSystem local(8, 1);
     kernel.evaluate(fe, T, T_dot, a, local);
-    const Dense J = jacobian_of(local);
+    const Dense J = local_jacobian(local);
     const Dense M = mass_matrix(edges), K = stiffness_matrix(edges);
     const double V = volume(edges), scale = max_abs(J);
     ASSERT_GT(scale, 0.0);
@@ -387,7 +254,7 @@ TEST(HeatConductionKernel, JacobianMatchesFiniteDifferencesWithTableConductivity
   }
   kiln::LocalSystem local(8, 1);
   kernel.evaluate(fe, T, T_dot, a, local);
-  const Dense J = jacobian_of(local);
+  const Dense J = local_jacobian(local);
 
   // T_dot = a T + b moves with T: keep b = T_dot - a T fixed.
   NodalValues b{};
@@ -437,7 +304,7 @@ TEST(ConvectionKernel, RectangleAtUniformTemperature)
   EXPECT_NEAR(sum, h * (T0 - T_amb) * a * b, 1e-12 * h * T0 * a * b);
 
   // Jacobian = h times the face mass matrix (diagonal ab/9, edge ab/18, across ab/36).
-  const Dense J = jacobian_of(local), M = face_mass_matrix(a * b);
+  const Dense J = local_jacobian(local), M = face_mass_matrix(a * b);
   double total = 0.0;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
@@ -542,7 +409,7 @@ TEST(GapConductanceKernel, ConservativeAndJacobianMatchesFiniteDifferences)
 
   kiln::LocalSystem local(8, 1);
   kernel.evaluate(fv, {T[0], T[1], T[2], T[3]}, {T[4], T[5], T[6], T[7]}, local);
-  const Dense J = jacobian_of(local);
+  const Dense J = local_jacobian(local);
   const Dense fd = finite_difference_jacobian(residual, T, 1e-3);
   const double scale = max_abs(J);
   EXPECT_LT(max_difference(J, fd), 1e-8 * scale);

@@ -6,6 +6,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -26,15 +27,7 @@ kiln::Material make(const Teuchos::ParameterList &user)
 
 std::string error_of(const Teuchos::ParameterList &user)
 {
-  try
-  {
-    make(user);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return kiln_test::input_error_message([&] { make(user); });
 }
 
 Teuchos::ParameterList E_nu(const double E, const double nu)

@@ -11,18 +11,16 @@
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
 #include "discretization/element_values.hpp"
-#include "mesh/box_mesh_generator.hpp"
-#include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
-#include "mesh/metis_partitioner.hpp"
 #include "physics/heat/convection_condition.hpp"
 #include "physics/heat/heat_flux_condition.hpp"
 #include "physics/heat/thermal_conditions.hpp"
-#include "physics/materials/material.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parallel.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/problem_fixture.hpp"
 
 #include <Teuchos_Array.hpp>
-#include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_Tuple.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -39,6 +37,7 @@ using testing::HasSubstr;
 
 namespace
 {
+using namespace kiln_test;
 using kiln::GO;
 using kiln::LO;
 using kiln::Mesh;
@@ -47,11 +46,11 @@ using Vector = kiln::NonlinearProblem::Vector;
 using Matrix = kiln::NonlinearProblem::Matrix;
 
 constexpr double Lx = 0.04, Ly = 0.02, Lz = 0.02;
-/// Material: rho c [J/(m^3 K)]; k = 120 + 2 (T - 280) W/(m K) on (280, 400) K.
-constexpr double rho_c = 2700.0 * 900.0;
+/// Material: TableMaterial, rho c [J/(m^3 K)]; k = 120 + 2 (T - 280) W/(m K) on (280, 400) K.
+constexpr double rho_c = TableMaterial::density * TableMaterial::specific_heat;
 double k_table(const double T)
 {
-  return 120.0 + 2.0 * (T - 280.0);
+  return TableMaterial::conductivity(T);
 }
 /// Time of the evaluations [s]; the prescribed temperature, a smooth step 300 -> 320 K over
 /// [0, 10] s, is then 300 + 20 s^2 (3 - 2 s), s = 0.4; the ambient temperature, a table
@@ -63,36 +62,7 @@ constexpr double h_convection = 50.0, q_flux = 2.0e4, h_gap = 1.0e4;
 
 Mesh split_box()
 {
-  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
-  p.set("Size", Teuchos::Array<double>(Teuchos::tuple(Lx, Ly, Lz)));
-  p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(4, 2, 2)));
-  p.set("Phi", 30.0);
-  p.set("Theta", -20.0);
-  Mesh mesh = kiln::BoxMeshGenerator(p, "test/Box").generate();
-  kiln::split_gap(mesh, 10, "test");
-  return mesh;
-}
-
-kiln::Material table_material()
-{
-  Teuchos::ParameterList user;
-  user.set("Density", 2700.0);
-  user.set("Specific Heat", 900.0);
-  Teuchos::ParameterList &k = user.sublist("Conductivity");
-  k.set("Type", "Table");
-  k.set("Temperatures", Teuchos::Array<double>(Teuchos::tuple(200.0, 280.0, 400.0)));
-  k.set("Values", Teuchos::Array<double>(Teuchos::tuple(300.0, 120.0, 360.0)));
-  const Teuchos::ParameterList p =
-      kiln::validated(user, kiln::Material::valid_parameters(), "test.xml", "Kiln/Material");
-  return kiln::Material(p, "test.xml: Kiln/Material");
-}
-
-Teuchos::ParameterList constant_function(const double value)
-{
-  Teuchos::ParameterList f;
-  f.set("Type", "Constant");
-  f.set("Value", value);
-  return f;
+  return box_mesh({{Lx, Ly, Lz}, {4, 2, 2}, 30.0, -20.0}, 10);
 }
 
 void add_temperature_bc(Teuchos::ParameterList &thermal)
@@ -100,12 +70,7 @@ void add_temperature_bc(Teuchos::ParameterList &thermal)
   Teuchos::ParameterList &bc = thermal.sublist("Boundary Conditions").sublist("hot end");
   bc.set("Type", "Temperature");
   bc.set("Side Sets", Teuchos::Array<int>(Teuchos::tuple(1)));
-  Teuchos::ParameterList &T = bc.sublist("Temperature");
-  T.set("Type", "Smooth Step");
-  T.set("Start Time", 0.0);
-  T.set("End Time", 10.0);
-  T.set("Start Value", 300.0);
-  T.set("End Value", 320.0);
+  bc.set("Temperature", smooth_step(300.0, 320.0));
 }
 
 void add_flux_bcs(Teuchos::ParameterList &thermal)
@@ -138,34 +103,10 @@ Teuchos::ParameterList thermal_list(const bool temperature, const bool fluxes,
   return thermal;
 }
 
-struct Fixture
+/// The split box with a temperature unknown per node.
+struct Fixture : ProblemFixture
 {
-  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
-  Mesh mesh = split_box();
-  std::vector<int> cell_rank = kiln::partition_cells(mesh, *comm, "test");
-  kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{true, false, false}};
-  kiln::Material material = table_material();
-
-  std::unique_ptr<kiln::CoupledProblem> problem(const Teuchos::ParameterList &user) const
-  {
-    const Teuchos::ParameterList p =
-        kiln::validated(user, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-    const Teuchos::ParameterList none =
-        kiln::validated(Teuchos::ParameterList(), kiln::MechanicalPhysics::valid_parameters(),
-                        "test.xml", "Kiln/Mechanics");
-    return std::make_unique<kiln::CoupledProblem>(mesh, dofs, material, p, none, "test.xml: Kiln");
-  }
-  bool is_twin(const int node) const { return mesh.parent_node[node] != node; }
-  /// 1 for the nodes of the faces of side set `id`.
-  std::vector<char> nodes_of_side_set(const int id) const
-  {
-    std::vector<char> on(mesh.n_nodes(), 0);
-    const kiln::SideSet &set = *mesh.find_side_set(id);
-    for (int s = 0; s < set.n_sides(); ++s)
-      for (const int i : kiln::hex_face_nodes[set.faces[s]])
-        on[mesh.connectivity[set.cells[s]][i]] = 1;
-    return on;
-  }
+  Fixture() : ProblemFixture(split_box(), kiln::DofLayout{true, false, false}) {}
 };
 
 /// v_i = value(node of row i) on the owned rows (one unknown per node: gid = node).
@@ -185,37 +126,6 @@ double nonuniform_state(const Fixture &s, const int n)
          (s.is_twin(n) ? 3.0 : 0.0);
 }
 
-/// Owned rows of J as dense rows over all global columns.
-std::vector<std::vector<double>> dense_rows(const Matrix &J, const GO n_columns)
-{
-  const std::size_t n_rows = J.getRowMap()->getNodeNumElements();
-  std::vector<std::vector<double>> rows(n_rows, std::vector<double>(n_columns, 0.0));
-  for (std::size_t i = 0; i < n_rows; ++i)
-  {
-    const std::size_t n = J.getNumEntriesInLocalRow(static_cast<LO>(i));
-    Matrix::nonconst_local_inds_host_view_type cols("cols", n);
-    Matrix::nonconst_values_host_view_type values("values", n);
-    std::size_t count = 0;
-    J.getLocalRowCopy(static_cast<LO>(i), cols, values, count);
-    for (std::size_t e = 0; e < count; ++e)
-      rows[i][J.getColMap()->getGlobalElement(cols(e))] += values(e);
-  }
-  return rows;
-}
-
-double global_max(const Teuchos::Comm<int> &comm, const double local)
-{
-  double global = 0.0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
-  return global;
-}
-
-double global_sum(const Teuchos::Comm<int> &comm, const double local)
-{
-  double global = 0.0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-  return global;
-}
 } // namespace
 
 TEST(ThermalProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
@@ -228,7 +138,7 @@ TEST(ThermalProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
 
   // BDF2-like: a = 1.5 / dt, b = -(2 x_n - x_{n-1} / 2) / dt, here a smooth nonuniform field.
   const double dt = 0.5, a = 1.5 / dt;
-  Vector x(map), b(map), f(map), f_plus(map), f_minus(map);
+  Vector x(map), b(map), f(map);
   set_field(x, [&](const int n) { return nonuniform_state(s, n); });
   set_field(b,
             [&](const int n)
@@ -250,25 +160,14 @@ TEST(ThermalProblem, JacobianMatchesFiniteDifferencesWithAllConditions)
 
   // Column by column, every rank in lock step (evaluate is collective).
   const double eps = 1e-3;
+  const Dense fd_rows = finite_difference_rows(*problem, x, [eps](GO) { return eps; });
   double max_difference = 0.0;
   int n_nonzero = 0;
   for (GO j = 0; j < n_global; ++j)
   {
-    const LO lj = map->getLocalElement(j);
-    const bool mine = lj != Teuchos::OrdinalTraits<LO>::invalid();
-    const double x_j = mine ? x.getData()[lj] : 0.0;
-    if (mine)
-      x.replaceLocalValue(lj, x_j + eps);
-    problem->evaluate(x, &f_plus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_j - eps);
-    problem->evaluate(x, &f_minus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_j);
-    const auto r_plus = f_plus.getData(), r_minus = f_minus.getData();
     for (std::size_t i = 0; i < rows.size(); ++i)
     {
-      const double fd = (r_plus[i] - r_minus[i]) / (2 * eps);
+      const double fd = fd_rows[i][j];
       const double difference = std::abs(fd - rows[i][j]);
       EXPECT_LT(difference, 1e-6 * max_J)
           << "row " << map->getGlobalElement(static_cast<LO>(i)) << ", column " << j
@@ -458,15 +357,7 @@ std::unique_ptr<kiln::BoundaryCondition> make_bc(const Mesh &mesh,
 
 std::string bc_error(const Mesh &mesh, const Teuchos::ParameterList &user)
 {
-  try
-  {
-    make_bc(mesh, user);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return input_error_message([&] { make_bc(mesh, user); });
 }
 
 Teuchos::ParameterList temperature_on(const Teuchos::Array<int> &side_sets)

@@ -5,6 +5,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <gmock/gmock.h>
@@ -28,27 +29,14 @@ kiln::TimeFunction make(const Teuchos::ParameterList &user)
 
 std::string error_of(const Teuchos::ParameterList &user)
 {
-  try
-  {
-    make(user);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return kiln_test::input_error_message([&] { make(user); });
 }
 
+/// A Smooth Step from y0 at x0 to y1 at x1.
 Teuchos::ParameterList smooth_step(const double x0, const double x1, const double y0,
                                    const double y1)
 {
-  Teuchos::ParameterList p;
-  p.set("Type", "Smooth Step");
-  p.set("Start Time", x0);
-  p.set("End Time", x1);
-  p.set("Start Value", y0);
-  p.set("End Value", y1);
-  return p;
+  return kiln_test::smooth_step(y0, y1, x0, x1);
 }
 
 Teuchos::ParameterList table(const std::vector<double> &times, const std::vector<double> &values)

@@ -8,6 +8,7 @@
 #include "solvers/newton_solver.hpp"
 
 #include "base/errors.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -374,15 +375,9 @@ TEST_F(NewtonSolverTest, MaximumIterationsIsNotConverged)
 std::string input_error(const RCP<const Teuchos::Comm<int>> &comm, const Teuchos::ParameterList &p)
 {
   auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 11, 1));
-  try
-  {
-    NewtonSolver solver(p, problem, quiet());
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "no InputError";
+  const std::string message =
+      kiln_test::input_error_message([&] { NewtonSolver solver(p, problem, quiet()); });
+  return message.empty() ? "no InputError" : message;
 }
 
 TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)

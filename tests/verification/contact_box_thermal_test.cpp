@@ -5,8 +5,9 @@
 // relative.
 // KILN_TEST_NP: 1 2
 #include "io/input_reader.hpp"
-#include "unit/physics/heat_test_support.hpp"
+#include "support/simulation_runs.hpp"
 
+#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 #include <map>
@@ -14,7 +15,7 @@
 
 namespace
 {
-const std::string inputs = std::string(KILN_SOURCE_DIR) + "/inputs/";
+using kiln_test::inputs;
 
 /// For each node, the node at its mirror image x' -> -x' in the box frame (phi 45,
 /// theta -30), on the other side of the gap.
@@ -59,19 +60,19 @@ void check_variant_a(const std::string &name, const double final_temperature)
   problem.initial_condition(0.0, x);
   std::vector<double> times_seen;
   std::vector<double> final_T;
-  sim->time_stepper().run(problem, sim->newton_solver(), x, 0.0, {0.0, 50.0, 53.0, 150.0},
-                          [&](const double t, int, double, const kiln_test::Vector &state)
-                          {
-                            times_seen.push_back(t);
-                            const auto T = kiln_test::all_node_values(*sim, state);
-                            double asymmetry = 0.0;
-                            for (int n = 0; n < sim->mesh().n_nodes(); ++n)
-                              asymmetry = std::max(asymmetry, std::abs(T[n] - T[mirror[n]]));
-                            std::cout << name << ": t = " << t
-                                      << " s, max |T - T_mirror| = " << asymmetry << " K\n";
-                            EXPECT_LE(asymmetry, 1e-8 * final_temperature) << "t = " << t;
-                            final_T = T;
-                          });
+  kiln_test::run_from(*sim, x, {0.0, 50.0, 53.0, 150.0},
+                      [&](const double t, int, double, const kiln_test::Vector &state)
+                      {
+                        times_seen.push_back(t);
+                        const auto T = kiln_test::all_node_values(*sim, state);
+                        double asymmetry = 0.0;
+                        for (int n = 0; n < sim->mesh().n_nodes(); ++n)
+                          asymmetry = std::max(asymmetry, std::abs(T[n] - T[mirror[n]]));
+                        std::cout << name << ": t = " << t
+                                  << " s, max |T - T_mirror| = " << asymmetry << " K\n";
+                        EXPECT_LE(asymmetry, 1e-8 * final_temperature) << "t = " << t;
+                        final_T = T;
+                      });
   EXPECT_EQ(times_seen, (std::vector<double>{0.0, 50.0, 53.0, 150.0}));
   double deviation = 0.0;
   for (const double T : final_T)

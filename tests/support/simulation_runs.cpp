@@ -1,37 +1,32 @@
-#pragma once
-/// Shared by the heat-conduction tests: build a Kiln run from an XML string and drive its
-/// time loop from an initial state of the test's own; integrate fields over the mesh.
-#include "app/simulation.hpp"
+#include "support/simulation_runs.hpp"
+
 #include "mesh/hex_geometry.hpp"
-#include "physics/coupled_problem.hpp"
 #include "solvers/newton_solver.hpp"
-#include "solvers/time_stepper.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include <cmath>
-#include <functional>
-#include <memory>
-#include <string>
-#include <vector>
+#include <iomanip>
+#include <sstream>
 
 namespace kiln_test
 {
-using Vector = kiln::NonlinearProblem::Vector;
-
-/// Replaces every `key` in `text` by `value`.
-inline void replace(std::string &text, const std::string &key, const std::string &value)
+void replace(std::string &text, const std::string &key, const std::string &value)
 {
   for (std::size_t at = text.find(key); at != std::string::npos;
        at = text.find(key, at + value.size()))
     text.replace(at, key.size(), value);
 }
 
-/// A set-up Simulation (mesh, partition, CoupledProblem, Newton, stepper) from a Kiln
-/// input given as XML text.
-inline std::unique_ptr<kiln::Simulation>
+std::string number(const double value)
+{
+  std::ostringstream s;
+  s << std::setprecision(17) << value;
+  return s.str();
+}
+
+std::unique_ptr<kiln::Simulation>
 make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const auto input = Teuchos::getParametersFromXmlString(xml);
@@ -40,8 +35,30 @@ make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<i
   return sim;
 }
 
-/// The temperature of every mesh node on every rank (the owned values, summed).
-inline std::vector<double> all_node_values(const kiln::Simulation &sim, const Vector &x)
+void set_solver_tolerances(Teuchos::ParameterList &input, const double absolute,
+                           const double relative, const double gmres)
+{
+  Teuchos::ParameterList &solver = input.sublist("Solver");
+  solver.set("Absolute Tolerance", absolute);
+  solver.set("Relative Tolerance", relative);
+  solver.sublist("Linear Solver")
+      .sublist("Linear Solver Types")
+      .sublist("Belos")
+      .sublist("Solver Types")
+      .sublist("Pseudo Block GMRES")
+      .set("Convergence Tolerance", gmres);
+}
+
+kiln::TimeStepper::Statistics run_from(kiln::Simulation &sim, Vector &x,
+                                       const std::vector<double> &times,
+                                       const kiln::TimeStepper::OutputFunction &output)
+{
+  const kiln::TimeStepper::OutputFunction none = [](double, int, double, const Vector &) {};
+  return sim.time_stepper().run(sim.problem(), sim.newton_solver(), x, 0.0, times,
+                                output ? output : none);
+}
+
+std::vector<double> all_node_values(const kiln::Simulation &sim, const Vector &x)
 {
   const auto &dofs = sim.dofs();
   std::vector<double> local(sim.mesh().n_nodes(), 0.0), global(local.size(), 0.0);
@@ -53,19 +70,16 @@ inline std::vector<double> all_node_values(const kiln::Simulation &sim, const Ve
   return global;
 }
 
-/// Sets x at every owned node to f(coordinates).
-inline void interpolate(const kiln::Simulation &sim,
-                        const std::function<double(const kiln::Point &)> &f, Vector &x)
+void interpolate(const kiln::Simulation &sim, const std::function<double(const kiln::Point &)> &f,
+                 Vector &x)
 {
   const auto &dofs = sim.dofs();
   for (const int n : dofs.owned_nodes())
     x.replaceGlobalValue(dofs.dof(n, kiln::Field::T), f(sim.mesh().coordinates[n]));
 }
 
-/// sqrt(∫ (T_h - T)^2 dΩ) over the mesh with 3x3x3 Gauss points per cell; T_h is the
-/// trilinear interpolant of the nodal values (all nodes, replicated).
-inline double l2_error(const kiln::Simulation &sim, const std::vector<double> &nodal,
-                       const std::function<double(const kiln::Point &)> &exact)
+double l2_error(const kiln::Simulation &sim, const std::vector<double> &nodal,
+                const std::function<double(const kiln::Point &)> &exact)
 {
   static const double g[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
   static const double w[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};

@@ -5,8 +5,9 @@
 // doc/mechanics.md), a range check on the mean over the first steps, never a fixed count.
 // KILN_TEST_NP: 2
 #include "io/input_reader.hpp"
-#include "unit/physics/heat_test_support.hpp"
+#include "support/simulation_runs.hpp"
 
+#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 namespace
@@ -14,7 +15,7 @@ namespace
 double iterations_per_solve(const int n, const bool mechanics)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const std::string path = std::string(KILN_SOURCE_DIR) + "/inputs/contact-box-close.xml";
+  const std::string path = kiln_test::inputs + "contact-box-close.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
   input.sublist("Mesh").sublist("Box").set("Cells", Teuchos::Array<int>(3, n));
   if (!mechanics)
@@ -28,8 +29,7 @@ double iterations_per_solve(const int n, const bool mechanics)
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   // Steps of 1 s then 5 s: the first three solves of the real run.
-  const auto stats = sim.time_stepper().run(problem, sim.newton_solver(), x, 0.0, {11.0},
-                                            [](double, int, double, const kiln_test::Vector &) {});
+  const auto stats = kiln_test::run_from(sim, x, {11.0});
   const double mean = double(stats.linear_iterations) / stats.newton_iterations;
   std::cout << (mechanics ? "thermo-elastic, " : "heat conduction, ") << n
             << "^3 cells: " << stats.newton_iterations << " Newton iterations, "

@@ -20,9 +20,16 @@
 //   600 s.
 // KILN_TEST_NP: 1 2
 #include "io/input_reader.hpp"
-#include "unit/app/contact_box_support.hpp"
+#include "support/contact_box.hpp"
+#include "support/parallel.hpp"
+#include "support/results_files.hpp"
+#include "support/simulation_runs.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
@@ -118,14 +125,7 @@ Teuchos::ParameterList contact_box_deck(const std::string &deck, const MeshKind 
       .set("File Base", base)
       .set("Times", Teuchos::Array<double>(times.begin(), times.end()));
   input.sublist("Time Stepping").set("Maximum Step", 2.0);
-  Teuchos::ParameterList &solver = input.sublist("Solver");
-  solver.set("Relative Tolerance", 1e-12).set("Absolute Tolerance", 1e-11);
-  solver.sublist("Linear Solver")
-      .sublist("Linear Solver Types")
-      .sublist("Belos")
-      .sublist("Solver Types")
-      .sublist("Pseudo Block GMRES")
-      .set("Convergence Tolerance", 1e-13);
+  set_solver_tolerances(input, 1e-11, 1e-12, 1e-13);
   return input;
 }
 

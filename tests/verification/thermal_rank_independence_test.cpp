@@ -3,8 +3,9 @@
 // same temperatures at every output time to 1e-9 relative.
 // KILN_TEST_NP: 2
 #include "io/input_reader.hpp"
-#include "unit/physics/heat_test_support.hpp"
+#include "support/simulation_runs.hpp"
 
+#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 namespace
@@ -12,26 +13,18 @@ namespace
 /// The temperatures (all nodes) at each output time.
 std::vector<std::vector<double>> run(const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
-  const std::string path = std::string(KILN_SOURCE_DIR) + "/inputs/contact-box-close.xml";
+  const std::string path = kiln_test::inputs + "contact-box-close.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  Teuchos::ParameterList &solver = input.sublist("Solver");
-  solver.set("Absolute Tolerance", 1e-12);
-  solver.set("Relative Tolerance", 1e-14);
-  solver.sublist("Linear Solver")
-      .sublist("Linear Solver Types")
-      .sublist("Belos")
-      .sublist("Solver Types")
-      .sublist("Pseudo Block GMRES")
-      .set("Convergence Tolerance", 1e-13);
+  kiln_test::set_solver_tolerances(input, 1e-12, 1e-14, 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
   kiln::CoupledProblem &problem = sim.problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   std::vector<std::vector<double>> states;
-  sim.time_stepper().run(problem, sim.newton_solver(), x, 0.0, {50.0, 53.0, 150.0},
-                         [&](double, int, double, const kiln_test::Vector &state)
-                         { states.push_back(kiln_test::all_node_values(sim, state)); });
+  kiln_test::run_from(sim, x, {50.0, 53.0, 150.0},
+                      [&](double, int, double, const kiln_test::Vector &state)
+                      { states.push_back(kiln_test::all_node_values(sim, state)); });
   return states;
 }
 } // namespace

@@ -4,8 +4,9 @@
 // is linear in each slab, which Q1 represents exactly, so the computed jump at every gap
 // node pair matches the analytic one to the solver tolerance (1e-10 relative).
 // KILN_TEST_NP: 1 2
-#include "unit/physics/heat_test_support.hpp"
+#include "support/simulation_runs.hpp"
 
+#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 namespace
@@ -56,8 +57,7 @@ TEST(GapConductance, TwoSlabJumpMatchesAnalytic)
   kiln::CoupledProblem &problem = sim->problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
-  const auto stats = sim->time_stepper().run(problem, sim->newton_solver(), x, 0.0, {1.0},
-                                             [](double, int, double, const kiln_test::Vector &) {});
+  const auto stats = kiln_test::run_from(*sim, x, {1.0});
   ASSERT_EQ(stats.steps, 1);
 
   // Material defaults: aluminium, k = 240 W/(m K).

@@ -12,9 +12,15 @@
 // - np 1 and np 2 give the same contact-box-open states at every output time.
 // KILN_TEST_NP: 1 2
 #include "io/input_reader.hpp"
-#include "unit/app/contact_box_support.hpp"
+#include "support/contact_box.hpp"
+#include "support/parallel.hpp"
+#include "support/results_files.hpp"
+#include "support/simulation_runs.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -296,9 +302,7 @@ TEST(ContactBoxMechanics, ElasticCubeMaximumDisplacement)
   kiln::CoupledProblem &problem = sim.problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
-  const kiln::TimeStepper::Statistics stats =
-      sim.time_stepper().run(problem, sim.newton_solver(), x, 0.0, {0.0},
-                             [](double, int, double, const kiln_test::Vector &) {});
+  const kiln::TimeStepper::Statistics stats = run_from(sim, x, {0.0});
   double largest = 0.0;
   for (const Point &u : problem.node_displacements(x))
     for (const double ud : u)
@@ -325,36 +329,27 @@ open_box_displacements(const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const std::string path = inputs + "contact-box-open.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  Teuchos::ParameterList &solver = input.sublist("Solver");
-  solver.set("Absolute Tolerance", 1e-12);
-  solver.set("Relative Tolerance", 1e-12);
-  solver.sublist("Linear Solver")
-      .sublist("Linear Solver Types")
-      .sublist("Belos")
-      .sublist("Solver Types")
-      .sublist("Pseudo Block GMRES")
-      .set("Convergence Tolerance", 1e-13);
+  set_solver_tolerances(input, 1e-12, 1e-12, 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
   kiln::CoupledProblem &problem = sim.problem();
   kiln_test::Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);
   std::vector<std::vector<double>> states;
-  sim.time_stepper().run(
-      problem, sim.newton_solver(), x, 0.0, {50.0, 53.0, 150.0},
-      [&](double, int, double, const kiln_test::Vector &state)
-      {
-        const auto u = problem.node_displacements(state);
-        const auto &owned = sim.dofs().owned_nodes();
-        std::vector<double> local(3 * static_cast<std::size_t>(sim.mesh().n_nodes()), 0.0);
-        std::vector<double> global(local.size(), 0.0);
-        for (std::size_t i = 0; i < owned.size(); ++i)
-          for (int d = 0; d < 3; ++d)
-            local[3 * owned[i] + d] = u[i][d];
-        Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
-                           global.data());
-        states.push_back(global);
-      });
+  run_from(sim, x, {50.0, 53.0, 150.0},
+           [&](double, int, double, const kiln_test::Vector &state)
+           {
+             const auto u = problem.node_displacements(state);
+             const auto &owned = sim.dofs().owned_nodes();
+             std::vector<double> local(3 * static_cast<std::size_t>(sim.mesh().n_nodes()), 0.0);
+             std::vector<double> global(local.size(), 0.0);
+             for (std::size_t i = 0; i < owned.size(); ++i)
+               for (int d = 0; d < 3; ++d)
+                 local[3 * owned[i] + d] = u[i][d];
+             Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
+                                local.data(), global.data());
+             states.push_back(global);
+           });
   return states;
 }
 } // namespace

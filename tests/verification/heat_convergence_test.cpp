@@ -10,8 +10,9 @@
 //   (1 - cos(theta)) / (2 + cos(theta)), theta = pi h / L. The error against it is the
 //   time-stepping error alone: order 1 for backward Euler, 2 for BDF2.
 // KILN_TEST_NP: 2
-#include "unit/physics/heat_test_support.hpp"
+#include "support/simulation_runs.hpp"
 
+#include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,9 +111,7 @@ Result run(const int nx, const int ny, const std::string &method, const double d
   kiln_test::Vector x(problem.solution_map());
   kiln_test::interpolate(
       *r.sim, [](const kiln::Point &p) { return T0 + A * mode(p); }, x);
-  const auto stats =
-      r.sim->time_stepper().run(problem, r.sim->newton_solver(), x, 0.0, {t_end},
-                                [](double, int, double, const kiln_test::Vector &) {});
+  const auto stats = kiln_test::run_from(*r.sim, x, {t_end});
   EXPECT_EQ(stats.steps, static_cast<int>(std::lround(t_end / dt)));
   r.nodal = kiln_test::all_node_values(*r.sim, x);
   return r;

@@ -1,0 +1,116 @@
+#include "support/problem_fixture.hpp"
+
+#include "base/parameters.hpp"
+#include "mesh/box_mesh_generator.hpp"
+#include "mesh/gap_splitter.hpp"
+#include "mesh/hex_geometry.hpp"
+#include "mesh/metis_partitioner.hpp"
+#include "support/parameter_lists.hpp"
+
+#include <random>
+
+namespace kiln_test
+{
+kiln::Material TableMaterial::make()
+{
+  Teuchos::ParameterList user;
+  user.set("Density", density);
+  user.set("Specific Heat", specific_heat);
+  user.set("Young's Modulus", youngs);
+  user.set("Poisson's Ratio", poisson);
+  user.set("Thermal Expansion", alpha);
+  user.set("Reference Temperature", T_ref);
+  Teuchos::ParameterList &k = user.sublist("Conductivity");
+  k.set("Type", "Table");
+  k.set("Temperatures", values({200.0, 280.0, 400.0}));
+  k.set("Values", values({300.0, 120.0, 360.0}));
+  const Teuchos::ParameterList p =
+      kiln::validated(user, kiln::Material::valid_parameters(), "test.xml", "Kiln/Material");
+  return kiln::Material(p, "test.xml: Kiln/Material");
+}
+
+namespace
+{
+kiln::Mesh generate(const BoxShape &box)
+{
+  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
+  p.set("Size", values({box.size[0], box.size[1], box.size[2]}));
+  p.set("Cells", ids({box.cells[0], box.cells[1], box.cells[2]}));
+  p.set("Phi", box.phi);
+  p.set("Theta", box.theta);
+  p.set("Translation", values({box.shift[0], box.shift[1], box.shift[2]}));
+  return kiln::BoxMeshGenerator(p, "test/Box").generate();
+}
+} // namespace
+
+kiln::Mesh box_mesh(const BoxShape &box, const int gap_side_set)
+{
+  kiln::Mesh mesh = generate(box);
+  if (gap_side_set != 0)
+    kiln::split_gap(mesh, gap_side_set, "test");
+  return mesh;
+}
+
+kiln::Mesh distorted_box(const BoxShape &box, const double distortion, const int gap_side_set,
+                         const bool plane_gap)
+{
+  kiln::Mesh mesh = generate(box);
+  std::vector<char> on_boundary(mesh.n_nodes(), 0), on_gap(mesh.n_nodes(), 0);
+  for (const kiln::SideSet &set : mesh.side_sets)
+  {
+    const bool outer = set.id >= 1 && set.id <= 6;
+    const bool gap = plane_gap && set.id == gap_side_set;
+    if (outer || gap)
+      for (int s = 0; s < set.n_sides(); ++s)
+        for (const int i : kiln::hex_face_nodes[set.faces[s]])
+          (outer ? on_boundary : on_gap)[mesh.connectivity[set.cells[s]][i]] = 1;
+  }
+  const auto A = kiln::rotation_matrix(box.phi, box.theta);
+  std::mt19937 random(20240611u);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+  {
+    if (on_boundary[n])
+      continue;
+    kiln::Point shift_block{};
+    for (int d = 0; d < 3; ++d)
+      shift_block[d] = distortion * unit(random) * box.size[d] / box.cells[d];
+    if (on_gap[n])
+      shift_block[0] = 0.0;
+    for (int d = 0; d < 3; ++d)
+      for (int e = 0; e < 3; ++e)
+        mesh.coordinates[n][d] += A[d][e] * shift_block[e];
+  }
+  if (gap_side_set != 0)
+    kiln::split_gap(mesh, gap_side_set, "test");
+  return mesh;
+}
+
+ProblemFixture::ProblemFixture(kiln::Mesh m, const kiln::DofLayout layout,
+                               kiln::Material material_in)
+    : mesh(std::move(m)), cell_rank(kiln::partition_cells(mesh, *comm, "test")),
+      dofs(mesh, cell_rank, comm, layout), material(std::move(material_in))
+{
+}
+
+Teuchos::RCP<kiln::CoupledProblem>
+ProblemFixture::problem(const Teuchos::ParameterList &thermal,
+                        const Teuchos::ParameterList &mechanics) const
+{
+  const Teuchos::ParameterList t = kiln::validated(
+      thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  const Teuchos::ParameterList m = kiln::validated(
+      mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
+  return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, material, t, m, "test.xml: Kiln"));
+}
+
+std::vector<char> ProblemFixture::nodes_of_side_set(const int id) const
+{
+  std::vector<char> on(mesh.n_nodes(), 0);
+  const kiln::SideSet &set = *mesh.find_side_set(id);
+  for (int s = 0; s < set.n_sides(); ++s)
+    for (const int i : kiln::hex_face_nodes[set.faces[s]])
+      on[mesh.connectivity[set.cells[s]][i]] = 1;
+  return on;
+}
+} // namespace kiln_test

@@ -1,0 +1,78 @@
+#pragma once
+/// What the tests of the assembled problem (CoupledProblem) build before they evaluate: a
+/// material with a k(T) table, generated boxes (rotated, their interior nodes moved, split at
+/// a gap), and a fixture holding the mesh, its partition, the unknowns and the material, which
+/// makes problems from Thermal and Mechanics lists.
+#include "discretization/dof_manager.hpp"
+#include "mesh/mesh.hpp"
+#include "physics/coupled_problem.hpp"
+#include "physics/materials/material.hpp"
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <array>
+#include <vector>
+
+namespace kiln_test
+{
+/// The material of the problem tests: aluminium-like, rho = 2700 kg/m^3, c = 900 J/(kg K),
+/// E = 70 GPa, nu = 0.33, alpha = 2.2e-5 /K, T_ref = 298 K, and k(T) a table through
+/// (200 K, 300), (280 K, 120), (400 K, 360) W/(m K): k = 120 + 2 (T - 280) on (280, 400) K, so
+/// that k'(T) counts in the Jacobian.
+struct TableMaterial
+{
+  static constexpr double density = 2700.0, specific_heat = 900.0;
+  static constexpr double youngs = 7.0e10, poisson = 0.33, alpha = 2.2e-5, T_ref = 298.0;
+  /// k(T) [W/(m K)] on (280, 400) K.
+  static double conductivity(const double T) { return 120.0 + 2.0 * (T - 280.0); }
+  static kiln::Material make();
+};
+
+/// A generated box (BoxMeshGenerator): block-frame sizes, cells, rotation and translation.
+struct BoxShape
+{
+  kiln::Point size;
+  std::array<int, 3> cells;
+  double phi = 0.0, theta = 0.0; ///< [degrees]
+  kiln::Point shift{0.0, 0.0, 0.0};
+};
+
+/// The box, split at side set `gap_side_set` (0: not split).
+kiln::Mesh box_mesh(const BoxShape &box, int gap_side_set);
+
+/// The box with its nodes off the six outer faces moved by up to `distortion` of a cell along
+/// each block axis (random, the same on every rank), so that the outer faces stay plane; with
+/// `plane_gap` the nodes of side set `gap_side_set` move within it only (the gap stays plane);
+/// then split at `gap_side_set` (0: not split).
+kiln::Mesh distorted_box(const BoxShape &box, double distortion, int gap_side_set,
+                         bool plane_gap = false);
+
+/// Mesh, partition, unknowns and material of one test. CoupledProblem keeps references to the
+/// mesh and the unknowns, so a fixture stays where it is built.
+struct ProblemFixture
+{
+  ProblemFixture(kiln::Mesh mesh, kiln::DofLayout layout,
+                 kiln::Material material = TableMaterial::make());
+  ProblemFixture(const ProblemFixture &) = delete;
+  ProblemFixture &operator=(const ProblemFixture &) = delete;
+
+  /// A CoupledProblem of the fixture's unknowns with the Thermal and Mechanics lists (each
+  /// validated, its defaults set).
+  Teuchos::RCP<kiln::CoupledProblem>
+  problem(const Teuchos::ParameterList &thermal,
+          const Teuchos::ParameterList &mechanics = Teuchos::ParameterList()) const;
+  /// 1 for the nodes of the faces of side set `id`.
+  std::vector<char> nodes_of_side_set(int id) const;
+  /// A twin node made by the gap split.
+  bool is_twin(const int node) const { return mesh.parent_node[node] != node; }
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
+  kiln::Mesh mesh;
+  std::vector<int> cell_rank;
+  kiln::DofManager dofs;
+  kiln::Material material;
+};
+} // namespace kiln_test

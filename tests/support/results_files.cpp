@@ -1,0 +1,77 @@
+#include "support/results_files.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace kiln_test
+{
+std::string temporary_base(const std::string &name, const Teuchos::Comm<int> &comm)
+{
+  int pid = static_cast<int>(getpid());
+  Teuchos::broadcast(comm, 0, Teuchos::outArg(pid));
+  return (std::filesystem::temp_directory_path() /
+          ("kiln_" + name + "_np" + std::to_string(comm.getSize()) + "_" + std::to_string(pid)))
+      .string();
+}
+
+void remove_results(const std::string &base, const Teuchos::Comm<int> &comm)
+{
+  comm.barrier();
+  if (comm.getRank() == 0)
+  {
+    std::remove((base + ".h5").c_str());
+    std::remove((base + ".xmf").c_str());
+  }
+}
+
+std::vector<double> read_step(const std::string &h5_path, const std::string &field, const int step,
+                              double &time)
+{
+  std::vector<double> values;
+  const hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(file, 0) << h5_path;
+  if (file < 0)
+    return values;
+  H5G_info_t steps{};
+  EXPECT_GE(H5Gget_info_by_name(file, "/steps", &steps, H5P_DEFAULT), 0) << h5_path;
+  const int index = step < 0 ? static_cast<int>(steps.nlinks) - 1 : step;
+  EXPECT_LT(index, static_cast<int>(steps.nlinks)) << h5_path << ": no output step " << index;
+  char group[32];
+  std::snprintf(group, sizeof group, "/steps/%06d", index);
+  time = std::nan("");
+  if (H5Lexists(file, group, H5P_DEFAULT) > 0)
+  {
+    const hid_t attribute = H5Aopen_by_name(file, group, "time", H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(H5Aread(attribute, H5T_NATIVE_DOUBLE, &time), 0);
+    H5Aclose(attribute);
+    const std::string path = std::string(group) + "/" + field;
+    const hid_t dataset = H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0
+                              ? H5Dopen2(file, path.c_str(), H5P_DEFAULT)
+                              : H5I_INVALID_HID;
+    EXPECT_GE(dataset, 0) << h5_path << ": no " << path;
+    if (dataset >= 0)
+    {
+      const hid_t space = H5Dget_space(dataset);
+      values.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+      H5Sclose(space);
+      EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+                0);
+      H5Dclose(dataset);
+    }
+  }
+  H5Fclose(file);
+  return values;
+}
+
+std::vector<double> read_last_step(const std::string &h5_path, const std::string &field,
+                                   double &time)
+{
+  return read_step(h5_path, field, -1, time);
+}
+} // namespace kiln_test
