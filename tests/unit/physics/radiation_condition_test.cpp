@@ -20,6 +20,8 @@
 #include "physics/heat/thermal_conditions.hpp"
 #include "physics/heat/thermal_physics.hpp"
 #include "solvers/newton_solver.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parameter_lists.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -55,21 +57,13 @@ kiln::Mesh box()
   return kiln::BoxMeshGenerator(p, "test/Box").generate();
 }
 
-Teuchos::ParameterList constant_function(const double value)
-{
-  Teuchos::ParameterList f;
-  f.set("Type", "Constant");
-  f.set("Value", value);
-  return f;
-}
-
 Teuchos::ParameterList radiation(const Teuchos::Array<int> &side_sets)
 {
   Teuchos::ParameterList p;
   p.set("Type", "Radiation");
   p.set("Side Sets", side_sets);
   p.set("Emissivity", eps);
-  p.set("Ambient Temperature", constant_function(T_amb));
+  p.set("Ambient Temperature", kiln_test::constant_function(T_amb));
   return p;
 }
 
@@ -89,15 +83,7 @@ std::unique_ptr<kiln::BoundaryCondition> read(const kiln::Mesh &mesh,
 
 std::string error(const kiln::Mesh &mesh, const Teuchos::ParameterList &user)
 {
-  try
-  {
-    read(mesh, user);
-  }
-  catch (const kiln::InputError &e)
-  {
-    return e.what();
-  }
-  return "";
+  return kiln_test::input_error_message([&] { read(mesh, user); });
 }
 
 /// The face terms of `condition` on a parallelogram at nodal temperatures T.
@@ -147,22 +133,13 @@ TEST(RadiationCondition, LocalJacobianMatchesFiniteDifferences)
   const auto condition = read(mesh, radiation(Teuchos::Array<int>(1, 2)));
   const std::array<double, 4> T = {450.0, 610.0, 820.0, 530.0};
   const kiln::LocalSystem local = face_terms(*condition, T);
-  const double h = 1e-3;
-  double worst = 0.0, largest = 0.0;
-  for (int j = 0; j < 4; ++j)
-  {
-    std::array<double, 4> plus = T, minus = T;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto r_plus = face_terms(*condition, plus).residual_values();
-    const auto r_minus = face_terms(*condition, minus).residual_values();
-    for (int i = 0; i < 4; ++i)
-    {
-      const double fd = (r_plus[i] - r_minus[i]) / (2.0 * h);
-      worst = std::max(worst, std::abs(fd - local.jacobian_values()[4 * i + j]));
-      largest = std::max(largest, std::abs(fd));
-    }
-  }
+  const kiln_test::Dense fd = kiln_test::finite_difference_jacobian(
+      [&](const std::vector<double> &state) {
+        return face_terms(*condition, {state[0], state[1], state[2], state[3]}).residual_values();
+      },
+      {T.begin(), T.end()}, 1e-3);
+  const double worst = kiln_test::max_difference(kiln_test::local_jacobian(local), fd);
+  const double largest = kiln_test::max_abs(fd);
   EXPECT_LT(worst, 1e-8 * largest);
   // A residual-only system gets the same residual and no Jacobian.
   kiln::FaceValues fv;
@@ -244,7 +221,7 @@ TEST(RadiationCondition, ProblemJacobianMatchesFiniteDifferences)
   const auto sim = bar(900.0, 15.0);
   kiln::CoupledProblem &problem = sim->problem();
   const auto map = problem.solution_map();
-  Vector x(map), b(map), f(map), f_plus(map), f_minus(map);
+  Vector x(map), b(map), f(map);
   problem.set_time_derivative(0.0, 0.0, b);
   // A non-uniform state: T = 500 + 3000 s^2 along the bar's axis (s in [0, 0.1] m).
   const auto A = kiln::rotation_matrix(30.0, -20.0);
@@ -257,42 +234,15 @@ TEST(RadiationCondition, ProblemJacobianMatchesFiniteDifferences)
   Matrix J(problem.jacobian_graph());
   problem.evaluate(x, &f, &J);
   const long long n_global = static_cast<long long>(map->getGlobalNumElements());
-  double worst = 0.0, largest = 0.0;
-  const double h = 1e-2;
-  for (long long j = 0; j < n_global; ++j)
-  {
-    const auto lj = map->getLocalElement(j);
-    const bool mine = lj != Teuchos::OrdinalTraits<kiln::LO>::invalid();
-    const double x_j = mine ? x.getData()[lj] : 0.0;
-    if (mine)
-      x.replaceLocalValue(lj, x_j + h);
-    problem.evaluate(x, &f_plus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_j - h);
-    problem.evaluate(x, &f_minus, nullptr);
-    if (mine)
-      x.replaceLocalValue(lj, x_j);
-    const auto r_plus = f_plus.getData(), r_minus = f_minus.getData();
-    for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
-    {
-      const long long row = map->getGlobalElement(static_cast<kiln::LO>(i));
-      double J_ij = 0.0;
-      Teuchos::Array<long long> columns(J.getNumEntriesInGlobalRow(row));
-      Teuchos::Array<double> values(columns.size());
-      std::size_t count = 0;
-      J.getGlobalRowCopy(row, columns(), values(), count);
-      for (std::size_t e = 0; e < count; ++e)
-        if (columns[e] == j)
-          J_ij = values[e];
-      const double fd = (r_plus[i] - r_minus[i]) / (2.0 * h);
-      worst = std::max(worst, std::abs(fd - J_ij));
-      largest = std::max(largest, std::abs(fd));
-    }
-  }
+  const kiln_test::Dense rows = kiln_test::dense_rows(J, n_global);
+  const kiln_test::Dense fd =
+      kiln_test::finite_difference_rows(problem, x, [](kiln_test::GO) { return 1e-2; });
   const auto &comm = *map->getComm();
   double global_worst = 0.0, global_largest = 0.0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global_worst));
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, largest, Teuchos::outArg(global_largest));
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, kiln_test::max_difference(rows, fd),
+                     Teuchos::outArg(global_worst));
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, kiln_test::max_abs(fd),
+                     Teuchos::outArg(global_largest));
   std::cout << "problem Jacobian with radiation: max |J - J_fd| = " << global_worst << " of "
             << global_largest << "\n";
   EXPECT_LT(global_worst, 1e-9 * global_largest);
