@@ -36,8 +36,9 @@ namespace
 using Matrix = std::array<std::array<double, 3>, 3>;
 using Voigt = std::array<double, 6>;
 
-const char *const voigt_names[6] = {"xx", "yy", "zz", "xy", "xz", "yz"};
-const int voigt_i[6] = {0, 1, 2, 0, 0, 1};
+/// The tensor components in the order of the results file (doc/output-format.md).
+const char *const voigt_names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+const int voigt_i[6] = {0, 1, 2, 0, 1, 0};
 const int voigt_j[6] = {0, 1, 2, 1, 2, 2};
 
 /// A problem with the deck or the results: reported, exit status 1.
@@ -66,7 +67,7 @@ Matrix rotation(const double phi_degrees, const double theta_degrees)
   return A;
 }
 
-/// A S A^T of a diagonal tensor S = diag(d), in Voigt order (tensor shear components).
+/// A S A^T of a diagonal tensor S = diag(d), in the file's order (tensor shear components).
 /// Components below 1e-14 of the largest are round-off of the rotation and set to 0.
 Voigt rotated_diagonal(const Matrix &A, const std::array<double, 3> &d)
 {

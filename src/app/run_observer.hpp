@@ -14,6 +14,12 @@
 
 namespace kiln
 {
+namespace internal
+{
+/// Now, UTC, ISO 8601.
+std::string utc_now();
+} // namespace internal
+
 /// Watches the time loop (TimeStepper::Observer): writes the state at every output time to
 /// every results writer, writes the checkpoints the schedule asks for, and turns a SIGTERM
 /// or SIGINT into a stop after the current step. Keeps count of the output steps and of

@@ -10,6 +10,7 @@
 #include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
 #include "io/hdf5_xdmf_writer.hpp"
+#include "io/results_replay.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gap_splitter.hpp"
 #include "mesh/mesh_factory.hpp"
@@ -167,7 +168,6 @@ Simulation::Ending Simulation::run()
   const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), output_base(),
                                        input_path_ + ": Kiln/Checkpoint");
   TimeStepper::State state;
-  int output_steps = 0;
   if (restart_.empty())
   {
     solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
@@ -177,10 +177,12 @@ Simulation::Ending Simulation::run()
     state = stepper_->initial_state(0.0, *solution_);
   }
   else
-  {
-    state = resume(output_steps);
-  }
+    state = resume();
+  // A continued run's results start with the earlier run's, read before the new files open.
+  const std::string earlier_results = restart_.empty() ? "" : earlier_results_file();
   open_results();
+  const int output_steps =
+      earlier_results.empty() ? 0 : continue_results(earlier_results, state.time);
   RunObserver observer({*problem_, mesh_, *field_output_, writers_, output_times(), checkpoints,
                         RunFingerprint::of(mesh_, layout_, params_),
                         CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}},
@@ -214,6 +216,10 @@ Simulation::Ending Simulation::run()
   if (!finished)
   {
     const std::string path = observer.checkpoint(state);
+    std::ostringstream status;
+    status << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
+           << " s; continued by kiln --restart " << path;
+    finish_results(status.str());
     *out_ << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
           << " s after step " << stats.steps << "; checkpoint " << path << "; continue with: kiln "
           << input_path_ << " --restart " << path << "\n";
@@ -221,6 +227,7 @@ Simulation::Ending Simulation::run()
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
+  finish_results("complete");
   *out_ << "done: " << stats.steps << " steps (" << stats.error_rejections
         << " repeated for the error estimate, " << stats.newton_failures << " for Newton), "
         << stats.newton_iterations << " Newton and " << stats.linear_iterations
@@ -228,7 +235,7 @@ Simulation::Ending Simulation::run()
   return Ending::finished;
 }
 
-TimeStepper::State Simulation::resume(int &output_steps)
+TimeStepper::State Simulation::resume()
 {
   Checkpoint c = read_checkpoint(restart_, problem_->solution_map(), *comm_);
   const std::string difference =
@@ -250,9 +257,53 @@ TimeStepper::State Simulation::resume(int &output_steps)
   if (active != saved_active)
     *out_ << "warning: the checkpoint says " << saved_active
           << " gap pairs were in contact; its state gives " << active << "\n";
-  output_steps = c.info.output_steps;
+  restart_output_steps_ = c.info.output_steps;
   solution_ = c.state.x;
   return c.state;
+}
+
+std::string Simulation::earlier_results_file() const
+{
+  // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
+  // name), else BASE.h5.
+  const std::string base = output_base();
+  if (std::filesystem::exists(base + ".running.h5"))
+  {
+    const std::string moved = base + ".interrupted.h5";
+    if (comm_->getRank() == 0)
+      std::filesystem::rename(base + ".running.h5", moved);
+    comm_->barrier();
+    *out_ << "results: " << base << ".running.h5 of a run that was cut off is kept as " << moved
+          << "\n";
+    return moved;
+  }
+  if (std::filesystem::exists(base + ".h5"))
+    return base + ".h5";
+  *out_ << "warning: " << base
+        << ".h5 (the earlier run's results) is missing; the results start at the restart\n";
+  return "";
+}
+
+int Simulation::continue_results(const std::string &source, const double time)
+{
+  std::vector<ResultsWriter *> writers;
+  for (const auto &w : writers_)
+    writers.push_back(w.get());
+  const int n = replay_results(
+      source, time, {mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells()},
+      writers, *comm_);
+  *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
+        << " continue in " << output_files(false) << "\n";
+  if (n != restart_output_steps_)
+    *out_ << "warning: the checkpoint was written after " << restart_output_steps_
+          << " output steps, but " << source << " holds " << n << " up to its time\n";
+  return n;
+}
+
+void Simulation::finish_results(const std::string &status)
+{
+  for (const auto &writer : writers_)
+    writer->finish(status);
 }
 
 std::vector<double> Simulation::output_times() const

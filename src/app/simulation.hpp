@@ -74,7 +74,14 @@ private:
   void print_header() const;
   /// The state of the checkpoint of set_restart(), checked against this run; the output
   /// steps written before it.
-  TimeStepper::State resume(int &output_steps);
+  TimeStepper::State resume();
+  /// The HDF5 results of the run a restart continues, or "" if there are none.
+  std::string earlier_results_file() const;
+  /// The earlier run's output steps in `source` up to `time` into this run's results;
+  /// returns their number.
+  int continue_results(const std::string &source, double time);
+  /// Gives the results files their final names, recording `status`.
+  void finish_results(const std::string &status);
   /// The results writers of Output/"Format" and the field output.
   void open_results();
   std::vector<double> output_times() const;
@@ -85,7 +92,8 @@ private:
   std::string input_path_;
   std::string input_xml_; ///< the input as given
   std::string mesh_file_;
-  std::string restart_; ///< the checkpoint to continue from, or ""
+  std::string restart_;          ///< the checkpoint to continue from, or ""
+  int restart_output_steps_ = 0; ///< the output steps written before the checkpoint
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Mesh mesh_;

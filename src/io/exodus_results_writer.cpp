@@ -5,6 +5,9 @@
 #include "io/exodus_variables.hpp"
 #include "io/row_gather.hpp"
 
+#include "base/errors.hpp"
+
+#include <cstdio>
 #include <utility>
 
 namespace kiln
@@ -39,6 +42,7 @@ struct ExodusResultsWriter::Impl
 
   MPI_Comm comm;
   int rank = 0;
+  std::string base;
   std::string path;
   internal::RowGather node_rows;
   internal::RowGather cell_rows;
@@ -56,7 +60,7 @@ struct ExodusResultsWriter::Impl
 ExodusResultsWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_path,
                                 const Mesh &mesh, const std::vector<int> &owned_nodes,
                                 const std::vector<int> &owned_cells)
-    : comm(communicator), path(base_path + ".exo"),
+    : comm(communicator), base(base_path), path(base_path + ".running.exo"),
       node_rows(communicator, owned_nodes, mesh.n_nodes()),
       cell_rows(communicator, owned_cells, mesh.n_cells())
 {
@@ -106,7 +110,8 @@ void ExodusResultsWriter::Impl::write_step(const bool first_step,
 ExodusResultsWriter::ExodusResultsWriter(const MPI_Comm comm, const std::string &base_path,
                                          const Mesh &mesh, const std::vector<int> &owned_nodes,
                                          const std::vector<int> &owned_cells,
-                                         const std::vector<int> &cell_rank)
+                                         const std::vector<int> &cell_rank,
+                                         const ResultsMetadata & /*metadata*/)
 {
   // The ownership must be a partition of the rows; a mistake here is the caller's.
   internal::check_row_partition(comm, mesh, owned_nodes, owned_cells, cell_rank);
@@ -162,6 +167,25 @@ void ExodusResultsWriter::end_step()
   values.swap(m.step_values); // released when this call ends, written or not
   internal::run_on_rank_zero(m.comm, [&] { m.write_step(first_step, values); });
   ++m.n_steps;
+}
+
+void ExodusResultsWriter::finish(const std::string & /*status*/)
+{
+  Impl &m = *impl_;
+  if (m.in_step) // the same on every rank: the calls are collective
+    throw InternalError(m.path + ": finish() while a step is open; call end_step() first");
+  const std::string final_path = m.base + ".exo";
+  internal::run_on_rank_zero(m.comm,
+                             [&]
+                             {
+                               m.file.reset();
+                               KILN_CHECK_INPUT(
+                                   std::rename(m.path.c_str(), final_path.c_str()) == 0, final_path,
+                                   "cannot rename " << m.path
+                                                    << " to its final name; check "
+                                                       "the folder's permissions");
+                             });
+  m.path = final_path;
 }
 
 std::string ExodusResultsWriter::exo_path() const

@@ -38,12 +38,14 @@ namespace kiln
 class ExodusResultsWriter final : public ResultsWriter
 {
 public:
-  /// Creates `base_path`.exo (collective on `comm`) and writes the mesh. `owned_nodes` and
-  /// `owned_cells` are this rank's rows, in increasing order; every node and cell is owned
-  /// by exactly one rank. `cell_rank` is the owner of every cell (replicated).
+  /// Creates `base_path`.running.exo (collective on `comm`) and writes the mesh; finish()
+  /// renames it `base_path`.exo. `owned_nodes` and `owned_cells` are this rank's rows, in
+  /// increasing order; every node and cell is owned by exactly one rank. `cell_rank` is the
+  /// owner of every cell (replicated). The metadata is not written (Exodus info records
+  /// hold 80 characters each): the QA record names Kiln and the date.
   ExodusResultsWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                       const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
-                      const std::vector<int> &cell_rank);
+                      const std::vector<int> &cell_rank, const ResultsMetadata &metadata = {});
   ~ExodusResultsWriter() override;
   ExodusResultsWriter(const ExodusResultsWriter &) = delete;
   ExodusResultsWriter &operator=(const ExodusResultsWriter &) = delete;
@@ -59,7 +61,10 @@ public:
                         const std::vector<double> &values) override;
   /// Writes the step (the first one also defines the variables) and flushes the file.
   void end_step() override;
+  /// Closes the file and renames it BASE.exo (the status shows in the log only).
+  void finish(const std::string &status) override;
 
+  /// The file's current path (BASE.running.exo until finish(), then BASE.exo).
   std::string exo_path() const;
 
   /// The Exodus variable names of a field: {name} for 1 component, name_x/_y/_z for 3,

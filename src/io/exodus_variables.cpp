@@ -1,6 +1,7 @@
 #include "io/exodus_variables.hpp"
 
 #include "io/collective_checks.hpp"
+#include "io/field_catalog.hpp"
 
 #include <algorithm>
 #include <set>
@@ -13,21 +14,23 @@ std::vector<std::string> ExodusVariables::names(const std::string &name, const i
 {
   if (n_components == 1)
     return {name};
-  if (n_components == 3)
-    return {name + "_x", name + "_y", name + "_z"};
-  if (n_components == 6)
-    return {name + "_xx", name + "_yy", name + "_zz", name + "_xy", name + "_yz", name + "_xz"};
+  // A field of the catalog names its components; others: x y z for 3, the tensor
+  // components for 6, numbers otherwise.
+  const FieldDescription *known = describe_field(name);
+  std::vector<std::string> components =
+      known != nullptr && known->n_components() == n_components ? known->components
+      : n_components == 3 ? std::vector<std::string>{"x", "y", "z"}
+      : n_components == 6 ? tensor_components()
+                          : std::vector<std::string>{};
   std::vector<std::string> result;
   for (int k = 0; k < n_components; ++k)
-    result.push_back(name + "_" + std::to_string(k));
+    result.push_back(name + "_" + (components.empty() ? std::to_string(k) : components[k]));
   return result;
 }
 
 std::vector<int> ExodusVariables::components(const int n_components)
 {
-  // Kiln's Voigt order is xx yy zz xy xz yz; the variables are written xx yy zz xy yz xz.
-  if (n_components == 6)
-    return {0, 1, 2, 3, 5, 4};
+  // The fields come in the order of their names (tensors in tensor_components() order).
   std::vector<int> result;
   for (int k = 0; k < n_components; ++k)
     result.push_back(k);

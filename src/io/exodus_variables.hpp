@@ -21,8 +21,8 @@ public:
   /// The variable names of a field: {name} for 1 component, name_x/_y/_z for 3,
   /// name_xx/_yy/_zz/_xy/_yz/_xz for 6 (a Voigt tensor), name_0 ... otherwise.
   static std::vector<std::string> names(const std::string &name, int n_components);
-  /// The component of the field (0-based, Kiln's order) each variable of names() holds:
-  /// identity except for 6 components, where _yz is Voigt index 5 and _xz index 4.
+  /// The component of the field (0-based) each variable of names() holds: the fields come in
+  /// the order their names give (tensors: xx yy zz xy yz xz, tensor_components()).
   static std::vector<int> components(int n_components);
 
   bool defined() const { return defined_; }

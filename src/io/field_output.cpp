@@ -1,6 +1,7 @@
 #include "io/field_output.hpp"
 
 #include "contact/gap_opening.hpp"
+#include "physics/mechanics/stress_measures.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -29,16 +30,29 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
     for (const Point &v : u)
       values.insert(values.end(), v.begin(), v.end());
     writer.write_node_field("displacement", 3, values);
-    std::vector<double> stress, strain, thermal_strain;
+    std::vector<double> stress, strain, thermal_strain, von_mises_stress, mean_pressure,
+        principal_stress;
+    // The Voigt order of the kernels (xx yy zz xy xz yz) into the written order of
+    // tensor_components() (xx yy zz xy yz xz).
+    const auto append = [](std::vector<double> &out, const Voigt &v) {
+      out.insert(out.end(), {v[0], v[1], v[2], v[3], v[5], v[4]});
+    };
     for (const auto &c : problem_.cell_averages(x))
     {
-      stress.insert(stress.end(), c.stress.begin(), c.stress.end());
-      strain.insert(strain.end(), c.strain.begin(), c.strain.end());
-      thermal_strain.insert(thermal_strain.end(), c.thermal_strain.begin(), c.thermal_strain.end());
+      append(stress, c.stress);
+      append(strain, c.strain);
+      append(thermal_strain, c.thermal_strain);
+      von_mises_stress.push_back(von_mises(c.stress));
+      mean_pressure.push_back(pressure(c.stress));
+      const auto p = principal_values(c.stress);
+      principal_stress.insert(principal_stress.end(), p.begin(), p.end());
     }
     writer.write_cell_field("stress", 6, stress);
     writer.write_cell_field("strain", 6, strain);
     writer.write_cell_field("thermal_strain", 6, thermal_strain);
+    writer.write_cell_field("von_mises_stress", 1, von_mises_stress);
+    writer.write_cell_field("pressure", 1, mean_pressure);
+    writer.write_cell_field("principal_stress", 3, principal_stress);
   }
   writer.write_node_field("gap_opening", 1, gap_opening(u));
   if (problem_.has_contact())
@@ -52,6 +66,14 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
     }
     writer.write_node_field("gap_normal_traction", 1, traction);
     writer.write_node_field("contact_active", 1, active);
+  }
+  if (layout.temperature && !mesh_.gap_pairs.empty())
+  {
+    const std::vector<double> flux = problem_.gap_heat_flux(x);
+    std::vector<double> owned;
+    for (const int n : dofs_.owned_nodes())
+      owned.push_back(flux[n]);
+    writer.write_node_field("gap_heat_flux", 1, owned);
   }
   writer.end_step();
 }

@@ -32,6 +32,13 @@ public:
 
   hid_t get() const { return id_; }
   bool valid() const { return id_ >= 0; }
+  /// Gives up the identifier without closing it.
+  hid_t release()
+  {
+    const hid_t id = id_;
+    id_ = -1;
+    return id;
+  }
   void reset()
   {
     if (id_ >= 0 && closer_ != nullptr)

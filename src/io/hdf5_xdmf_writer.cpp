@@ -2,10 +2,12 @@
 
 #include "base/errors.hpp"
 #include "io/collective_checks.hpp"
+#include "io/field_catalog.hpp"
 #include "io/parallel_hdf5_file.hpp"
 #include "io/xdmf_index.hpp"
 
 #include <cstdint>
+#include <cstdio>
 
 namespace kiln
 {
@@ -17,6 +19,8 @@ struct Hdf5XdmfWriter::Impl
 {
   Impl(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
        const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells);
+  /// The unit, components and meaning of a field of the catalog on its dataset.
+  void describe(const std::string &name) const;
 
   void write_mesh(const Mesh &mesh, const std::vector<int> &owned_nodes,
                   const std::vector<int> &owned_cells, const std::vector<int> &cell_rank) const;
@@ -25,6 +29,7 @@ struct Hdf5XdmfWriter::Impl
   std::string step_name() const { return internal::step_group_name(index.n_steps() - 1); }
 
   MPI_Comm comm;
+  std::string base;
   internal::OwnedRows node_rows;
   internal::OwnedRows cell_rows;
   internal::ParallelHdf5File file;
@@ -37,10 +42,26 @@ struct Hdf5XdmfWriter::Impl
 Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_path,
                            const Mesh &mesh, const std::vector<int> &owned_nodes,
                            const std::vector<int> &owned_cells)
-    : comm(communicator), node_rows(owned_nodes, mesh.n_nodes()),
-      cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".h5"),
-      index(communicator, base_path + ".xmf", file.path(), mesh.n_nodes(), mesh.n_cells())
+    : comm(communicator), base(base_path), node_rows(owned_nodes, mesh.n_nodes()),
+      cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".running.h5"),
+      index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells())
 {
+}
+
+void Hdf5XdmfWriter::Impl::describe(const std::string &name) const
+{
+  const FieldDescription *known = describe_field(name);
+  if (known == nullptr)
+    return;
+  std::string components;
+  for (const std::string &c : known->components)
+    components += (components.empty() ? "" : ",") + c;
+  const internal::H5Handle dataset = file.open_dataset(step_group.get(), name);
+  file.write_attributes(dataset.get(),
+                        {{"unit", known->unit},
+                         {"components", components.empty() ? std::string("scalar") : components},
+                         {"meaning", known->meaning}},
+                        "describing field " + name);
 }
 
 void Hdf5XdmfWriter::Impl::write_mesh(const Mesh &mesh, const std::vector<int> &owned_nodes,
@@ -90,17 +111,24 @@ void Hdf5XdmfWriter::Impl::write_field(const FieldSpec &field, const std::vector
 
   file.write_rows(step_group.get(), name, field.center == Center::node ? node_rows : cell_rows,
                   field.n_components, values);
+  describe(name);
   index.add_field(field);
 }
 
 Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                                const std::vector<int> &owned_nodes,
                                const std::vector<int> &owned_cells,
-                               const std::vector<int> &cell_rank)
+                               const std::vector<int> &cell_rank, const ResultsMetadata &metadata)
 {
   // The ownership must be a partition of the rows; a mistake here is the caller's.
   internal::check_row_partition(comm, mesh, owned_nodes, owned_cells, cell_rank);
   impl_ = std::make_unique<Impl>(comm, base_path, mesh, owned_nodes, owned_cells);
+  impl_->file.write_attributes(impl_->file.root(),
+                               {{"kiln_version", metadata.kiln_version},
+                                {"created", metadata.created},
+                                {"input_path", metadata.input_path},
+                                {"input", metadata.input}},
+                               "writing the run's metadata");
   impl_->write_mesh(mesh, owned_nodes, owned_cells, cell_rank);
   impl_->file.flush();
   impl_->index.write();
@@ -142,9 +170,33 @@ void Hdf5XdmfWriter::end_step()
   m.index.write();
 }
 
+void Hdf5XdmfWriter::finish(const std::string &status)
+{
+  Impl &m = *impl_;
+  if (m.in_step) // the same on every rank: the calls are collective
+    throw InternalError(m.file.path() + ": finish() while step " + m.step_name() +
+                        " is open; call end_step() first");
+  m.file.write_attributes(m.file.root(), {{"status", status}}, "writing the status");
+  const std::string running_h5 = m.file.path(), running_xmf = m.index.path();
+  m.file.close();
+  int rank = 0;
+  MPI_Comm_rank(m.comm, &rank);
+  bool ok = true;
+  if (rank == 0)
+    ok = std::rename(running_h5.c_str(), (m.base + ".h5").c_str()) == 0;
+  internal::check_input_collectively(m.comm, ok, m.base + ".h5",
+                                     "cannot rename " + running_h5 +
+                                         " to its final name; check the folder's permissions");
+  m.index.rename(m.base + ".xmf", m.base + ".h5");
+  m.index.write();
+  if (rank == 0)
+    std::remove(running_xmf.c_str());
+  finished_h5_ = m.base + ".h5";
+}
+
 std::string Hdf5XdmfWriter::h5_path() const
 {
-  return impl_->file.path();
+  return finished_h5_.empty() ? impl_->file.path() : finished_h5_;
 }
 
 std::string Hdf5XdmfWriter::xdmf_path() const

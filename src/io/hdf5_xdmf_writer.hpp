@@ -8,8 +8,12 @@
 ///   /steps/NNNNNN/      attributes time, cycle, dt; node fields (nodes) or
 ///                       (nodes x c), cell fields (cells) or (cells x c)
 /// Rows are in global-id order whatever the number of ranks: each rank writes
-/// the rows it owns. After each step the file is flushed and the XDMF file is
-/// rewritten, so a run that fails later leaves readable results behind.
+/// the rows it owns. The root holds the run's metadata (kiln_version, created,
+/// input_path, input, status); each dataset of a field of the catalog its unit,
+/// components and meaning. While the run goes the files are BASE.running.h5 and
+/// BASE.running.xmf; after each step the file is flushed and the XDMF file is
+/// rewritten, so a run that fails later leaves readable results behind; finish()
+/// renames them BASE.h5 and BASE.xmf.
 /// Before the first step the XDMF file shows the mesh alone (one grid, no time).
 /// Every member function is collective on the communicator, which must outlive the
 /// writer; errors are thrown on all ranks alike (kiln::InputError when the files
@@ -30,13 +34,13 @@ namespace kiln
 class Hdf5XdmfWriter final : public ResultsWriter
 {
 public:
-  /// Creates `base_path`.h5 and `base_path`.xmf (collective on `comm`) and
-  /// writes /mesh. `owned_nodes` and `owned_cells` are this rank's rows, in
-  /// increasing order; every node and cell is owned by exactly one rank.
+  /// Creates `base_path`.running.h5 and .running.xmf (collective on `comm`) and
+  /// writes /mesh and the metadata. `owned_nodes` and `owned_cells` are this rank's
+  /// rows, in increasing order; every node and cell is owned by exactly one rank.
   /// `cell_rank` is the owner of every cell (replicated).
   Hdf5XdmfWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                  const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
-                 const std::vector<int> &cell_rank);
+                 const std::vector<int> &cell_rank, const ResultsMetadata &metadata = {});
   ~Hdf5XdmfWriter() override;
   Hdf5XdmfWriter(const Hdf5XdmfWriter &) = delete;
   Hdf5XdmfWriter &operator=(const Hdf5XdmfWriter &) = delete;
@@ -53,12 +57,16 @@ public:
                         const std::vector<double> &values) override;
   /// Closes the step group, flushes the file and rewrites the XDMF file.
   void end_step() override;
+  /// Writes the root attribute "status", closes the file and renames both files.
+  void finish(const std::string &status) override;
 
+  /// The files' current paths (BASE.running.* until finish(), then BASE.*).
   std::string h5_path() const;
   std::string xdmf_path() const;
 
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  std::string finished_h5_; ///< the final path, once finished
 };
 } // namespace kiln

@@ -2,6 +2,8 @@
 
 #include "io/collective_checks.hpp"
 
+#include <algorithm>
+
 namespace kiln
 {
 namespace internal
@@ -88,6 +90,21 @@ void ParallelHdf5File::flush() const
   check_io(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "flushing the file");
 }
 
+H5Handle ParallelHdf5File::open_dataset(const hid_t location, const std::string &name) const
+{
+  H5Handle dataset(H5Dopen2(location, name.c_str(), H5P_DEFAULT), H5Dclose);
+  check_io(dataset.valid(), "opening dataset \"" + name + "\"");
+  return dataset;
+}
+
+void ParallelHdf5File::close()
+{
+  const bool ok = !file_.valid() || H5Fclose(file_.release()) >= 0;
+  check_io(ok, "closing the file");
+  dxpl_.reset();
+  fapl_.reset();
+}
+
 void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
                                   const OwnedRows &rows, const int n_components,
                                   const std::vector<double> &values) const
@@ -156,6 +173,17 @@ void ParallelHdf5File::write_attributes(const hid_t location,
   bool ok = true;
   for (const ScalarAttribute &a : attributes)
   {
+    if (const auto *text = std::get_if<std::string>(&a.value))
+    {
+      const H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+      H5Tset_size(type.get(), std::max<std::size_t>(text->size(), 1));
+      const H5Handle attribute(
+          H5Acreate2(location, a.name, type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT),
+          H5Aclose);
+      ok = ok && attribute.valid() &&
+           H5Awrite(attribute.get(), type.get(), text->empty() ? "" : text->data()) >= 0;
+      continue;
+    }
     const bool is_double = std::holds_alternative<double>(a.value);
     const hid_t file_type = is_double ? H5T_IEEE_F64LE : H5T_STD_I32LE;
     const hid_t memory_type = is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT32;

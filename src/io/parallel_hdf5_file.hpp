@@ -33,11 +33,12 @@ struct OwnedRows
   std::vector<Run> runs;
 };
 
-/// An attribute holding one double (written as IEEE F64LE) or 32-bit integer (STD I32LE).
+/// An attribute holding one double (written as IEEE F64LE), 32-bit integer (STD I32LE) or
+/// text (a fixed-length string).
 struct ScalarAttribute
 {
   const char *name;
-  std::variant<double, std::int32_t> value;
+  std::variant<double, std::int32_t, std::string> value;
 };
 
 class ParallelHdf5File
@@ -61,8 +62,14 @@ public:
   /// Writes the attributes on `location`, in order; `what` names them in the error message.
   void write_attributes(hid_t location, const std::vector<ScalarAttribute> &attributes,
                         const std::string &what) const;
+  /// Opens the dataset `name` in `location`.
+  H5Handle open_dataset(hid_t location, const std::string &name) const;
+  /// The file itself, as a location (for root attributes).
+  hid_t root() const { return file_.get(); }
   /// Flushes everything written so far to disk.
   void flush() const;
+  /// Closes the file (every handle on it must be closed); nothing can be written after.
+  void close();
   /// InputError on every rank, naming the file and "`what` failed", unless `local_ok` is
   /// true on every rank.
   void check_io(bool local_ok, const std::string &what) const;

@@ -5,8 +5,20 @@
 
 namespace kiln
 {
-/// One results file, written step after step. Every member function is collective; values
-/// are this rank's owned nodes or cells in increasing order, n_components values each.
+/// What a results file says of the run that wrote it.
+struct ResultsMetadata
+{
+  std::string kiln_version;
+  std::string created;    ///< UTC, ISO 8601
+  std::string input_path; ///< the input file
+  std::string input;      ///< the input as given (XML)
+};
+
+/// One results file, written step after step. While the run goes it has a temporary name
+/// (BASE.running.*), readable after every step; finish() gives it its final name, so a run
+/// that crashes never leaves a half-written file in place of a good one. Every member function is
+/// collective; values are this rank's owned nodes or cells in increasing order, n_components values
+/// each.
 class ResultsWriter
 {
 public:
@@ -19,5 +31,8 @@ public:
                                 const std::vector<double> &values) = 0;
   /// Completes the step on disk (a run that stops later leaves it readable).
   virtual void end_step() = 0;
+  /// Records `status` ("complete", or why the run stopped) and renames the files to their
+  /// final names; nothing can be written after.
+  virtual void finish(const std::string &status) = 0;
 };
 } // namespace kiln

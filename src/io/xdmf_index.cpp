@@ -1,6 +1,7 @@
 #include "io/xdmf_index.hpp"
 
 #include "io/collective_checks.hpp"
+#include "io/field_catalog.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -20,6 +21,20 @@ std::string file_name_of(const std::string &path)
 }
 } // namespace
 
+/// Scalar, Vector (x y z), Tensor6 (xx yy zz xy yz xz, as ParaView labels it) or Matrix.
+const char *attribute_type(const FieldSpec &f)
+{
+  const FieldDescription *known = describe_field(f.name);
+  const std::vector<std::string> xyz = {"x", "y", "z"};
+  if (f.n_components == 1)
+    return "Scalar";
+  if (f.n_components == 3 && (known == nullptr || known->components == xyz))
+    return "Vector";
+  if (f.n_components == 6 && (known == nullptr || known->components == tensor_components()))
+    return "Tensor6";
+  return "Matrix";
+}
+
 std::string step_group_name(const int step)
 {
   std::ostringstream s;
@@ -32,6 +47,12 @@ XdmfIndex::XdmfIndex(const MPI_Comm comm, const std::string &xmf_path, const std
     : comm_(comm), xmf_path_(xmf_path), h5_name_(file_name_of(h5_path)), n_nodes_(n_nodes),
       n_cells_(n_cells)
 {
+}
+
+void XdmfIndex::rename(const std::string &xmf_path, const std::string &h5_path)
+{
+  xmf_path_ = xmf_path;
+  h5_name_ = file_name_of(h5_path);
 }
 
 void XdmfIndex::add_step(const double time)
@@ -90,7 +111,7 @@ void XdmfIndex::write_grid(std::ostream &out, const std::string &indent, const S
     for (const auto &f : step->fields)
     {
       const bool on_nodes = f.center == Center::node;
-      const char *type = f.n_components == 1 ? "Scalar" : f.n_components == 3 ? "Vector" : "Matrix";
+      const char *type = attribute_type(f);
       std::string dimensions = on_nodes ? nodes : cells;
       if (f.n_components > 1)
         dimensions += " " + std::to_string(f.n_components);

@@ -25,6 +25,8 @@ public:
   XdmfIndex(MPI_Comm comm, const std::string &xmf_path, const std::string &h5_path, int n_nodes,
             int n_cells);
   const std::string &path() const { return xmf_path_; }
+  /// From now on the index is `xmf_path` and points at `h5_path` (the final names).
+  void rename(const std::string &xmf_path, const std::string &h5_path);
 
   /// Adds an output step at `time` [s]; add_field() adds its fields.
   void add_step(double time);

@@ -92,10 +92,13 @@ TEST(OutputFormat, HdfAndExodusHoldTheSameSteps)
     }
     ++found;
   }
-  // temperature, displacement_x/y/z, gap_opening, gap_normal_traction, contact_active
-  EXPECT_EQ(found, 7);
+  // temperature, displacement_x/y/z, gap_opening, gap_normal_traction, contact_active,
+  // gap_heat_flux
+  EXPECT_EQ(found, 8);
   ex_get_variable_param(exo, EX_ELEM_BLOCK, &n_vars);
-  EXPECT_EQ(n_vars, 18); // stress, strain, thermal_strain: 6 named components each
+  // stress, strain, thermal_strain: 6 named components each; von_mises_stress, pressure;
+  // principal_stress_1, _2, _3
+  EXPECT_EQ(n_vars, 23);
   ex_close(exo);
 }
 

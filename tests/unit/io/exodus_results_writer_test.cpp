@@ -104,7 +104,7 @@ double gap_opening(const Mesh &mesh, const int step, const int node)
                   [&](const kiln::GapPair &p) { return p.node_a == node || p.node_b == node; });
   return on_gap ? 1e-5 * (step + 1) + 1e-8 * node : nan;
 }
-/// Component v (Kiln's Voigt order xx yy zz xy xz yz) of cell c: 100 v + c + 0.5 step.
+/// Component v (the written order xx yy zz xy yz xz) of cell c: 100 v + c + 0.5 step.
 double stress(const int step, const int cell, const int v)
 {
   if (cell == 3 && v == 2)
@@ -366,8 +366,8 @@ void check_steps(const ExodusReader &file, const Mesh &mesh, const int n_written
       for (int n = 0; n < n_nodes; ++n)
         EXPECT_EQ(u[n], displacement(s, n, d)) << "step " << s << " node " << n << " dir " << d;
     }
-    // stress_xx yy zz xy yz xz hold Kiln's Voigt components 0 1 2 3 5 4.
-    const int voigt[6] = {0, 1, 2, 3, 5, 4};
+    // stress_xx yy zz xy yz xz hold the components in the order written.
+    const int voigt[6] = {0, 1, 2, 3, 4, 5};
     for (const int id : {1, 2})
     {
       std::vector<int> cells;
@@ -394,7 +394,10 @@ TEST(ExodusResultsWriter, VariableNamesAndTheirComponents)
   EXPECT_EQ(W::variable_names("u", 3), (Names{"u_x", "u_y", "u_z"}));
   EXPECT_EQ(W::variable_names("s", 6), (Names{"s_xx", "s_yy", "s_zz", "s_xy", "s_yz", "s_xz"}));
   EXPECT_EQ(W::variable_names("q", 2), (Names{"q_0", "q_1"}));
-  EXPECT_EQ(W::variable_components(6), (std::vector<int>{0, 1, 2, 3, 5, 4}));
+  EXPECT_EQ(W::variable_components(6), (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  // A field of the catalog names its components.
+  EXPECT_EQ(W::variable_names("principal_stress", 3),
+            (Names{"principal_stress_1", "principal_stress_2", "principal_stress_3"}));
   EXPECT_EQ(W::variable_components(3), (std::vector<int>{0, 1, 2}));
 }
 
@@ -407,7 +410,7 @@ TEST(ExodusResultsWriter, SplitBoxReadBackWithTheExodusLibrary)
   const std::string base = folder + "/out";
   {
     kiln::ExodusResultsWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank);
-    EXPECT_EQ(writer.exo_path(), base + ".exo");
+    EXPECT_EQ(writer.exo_path(), base + ".running.exo");
     for (int s = 0; s < n_steps; ++s)
     {
       write_step(writer, mesh, o, s);
@@ -415,13 +418,17 @@ TEST(ExodusResultsWriter, SplitBoxReadBackWithTheExodusLibrary)
       MPI_Barrier(comm);
       if (rank_of(comm) == 0)
       {
-        const ExodusReader file(base + ".exo");
+        const ExodusReader file(base + ".running.exo");
         ASSERT_GE(file.id(), 0);
         check_steps(file, mesh, s + 1);
       }
       MPI_Barrier(comm);
     }
+    writer.finish("complete");
+    EXPECT_EQ(writer.exo_path(), base + ".exo");
   }
+  if (rank_of(comm) == 0)
+    EXPECT_FALSE(std::filesystem::exists(base + ".running.exo"));
   MPI_Barrier(comm);
   if (rank_of(comm) == 0)
   {
@@ -505,7 +512,7 @@ TEST(ExodusResultsWriter, StepsThatDoNotMatchTheFirstAreInternalErrorsOnEveryRan
   MPI_Barrier(comm);
   if (rank == 0)
   {
-    const ExodusReader file(folder + "/out.exo");
+    const ExodusReader file(folder + "/out.running.exo"); // not finished: its running name
     EXPECT_EQ(ex_inquire_int(file.id(), EX_INQ_TIME), 2);
     EXPECT_EQ(file.names(EX_NODAL, 4, true),
               (Names{"temperature", "displacement_x", "displacement_y", "displacement_z"}));
@@ -529,7 +536,7 @@ TEST(ExodusResultsWriter, MissingFolderIsAnInputErrorNamingThePathOnEveryRank)
       });
   if (message.empty())
     ADD_FAILURE() << "no exception";
-  EXPECT_THAT(message, HasSubstr(base + ".exo"));
+  EXPECT_THAT(message, HasSubstr(base + ".running.exo"));
   EXPECT_THAT(message, HasSubstr("does not exist"));
   MPI_Barrier(comm); // every rank got here: the test did not hang
 }

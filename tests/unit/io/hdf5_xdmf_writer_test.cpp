@@ -125,13 +125,15 @@ double stress(const int step, const int cell, const int component)
   return 1e6 * cell + 10.0 * component - 0.5 * step;
 }
 
-/// Writes the mesh and n_steps steps, each rank giving the values of its owned rows.
+/// Writes the mesh and n_steps steps, each rank giving the values of its owned rows; with
+/// `finish`, completes the files (else they keep their running names, as after a crash).
 void write_results(const MPI_Comm comm, const std::string &base, const Mesh &mesh,
-                   const Ownership &o)
+                   const Ownership &o, const bool finish = true)
 {
-  kiln::Hdf5XdmfWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank);
-  EXPECT_EQ(writer.h5_path(), base + ".h5");
-  EXPECT_EQ(writer.xdmf_path(), base + ".xmf");
+  kiln::Hdf5XdmfWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank,
+                              {"9.9.9", "2026-01-01T00:00:00Z", "test.xml", "<Kiln/>"});
+  EXPECT_EQ(writer.h5_path(), base + ".running.h5");
+  EXPECT_EQ(writer.xdmf_path(), base + ".running.xmf");
   MPI_Barrier(comm);
   if (rank_of(comm) == 0) // before any step: a valid mesh-only XDMF file
   {
@@ -157,6 +159,11 @@ void write_results(const MPI_Comm comm, const std::string &base, const Mesh &mes
     writer.write_cell_field("stress", 6, sigma);
     writer.end_step();
   }
+  if (!finish)
+    return;
+  writer.finish("complete");
+  EXPECT_EQ(writer.h5_path(), base + ".h5");
+  EXPECT_EQ(writer.xdmf_path(), base + ".xmf");
 }
 
 // ---- serial read-back helpers (rank 0) ----
@@ -199,6 +206,29 @@ T read_attribute(const hid_t file, const std::string &group, const char *name,
     EXPECT_GE(H5Aread(attribute, memory_type, &value), 0);
     H5Aclose(attribute);
   }
+  return value;
+}
+
+/// A text attribute of the object at `path` (rank 0 reads), or "" if missing.
+std::string text_attribute(const std::string &file_path, const std::string &path,
+                           const std::string &name)
+{
+  const hid_t file = H5Fopen(file_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t object = H5Oopen(file, path.c_str(), H5P_DEFAULT);
+  std::string value;
+  if (object >= 0 && H5Aexists(object, name.c_str()) > 0)
+  {
+    const hid_t attribute = H5Aopen(object, name.c_str(), H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute);
+    value.assign(H5Tget_size(type), '\0');
+    H5Aread(attribute, type, value.data());
+    value.resize(std::min(value.size(), value.find('\0')));
+    H5Tclose(type);
+    H5Aclose(attribute);
+  }
+  if (object >= 0)
+    H5Oclose(object);
+  H5Fclose(file);
   return value;
 }
 
@@ -308,12 +338,54 @@ void write_and_check(const std::string &name, const std::function<int(int, int)>
     EXPECT_EQ(kiln::check_xdmf(base + ".xmf"), "");
     EXPECT_EQ(n_xdmf_steps(base + ".xmf"), n_steps);
     EXPECT_FALSE(std::filesystem::exists(base + ".xmf.tmp"));
+    // finish() renamed both; the index points at the final file.
+    EXPECT_FALSE(std::filesystem::exists(base + ".running.h5"));
+    EXPECT_FALSE(std::filesystem::exists(base + ".running.xmf"));
+    std::ifstream xmf(base + ".xmf");
+    const std::string index((std::istreambuf_iterator<char>(xmf)),
+                            std::istreambuf_iterator<char>());
+    EXPECT_NE(index.find(">out.h5:/steps/"), std::string::npos);
+    EXPECT_EQ(index.find("running"), std::string::npos);
+    // The run's metadata and the fields' units and components.
+    EXPECT_EQ(text_attribute(base + ".h5", "/", "status"), "complete");
+    EXPECT_EQ(text_attribute(base + ".h5", "/", "kiln_version"), "9.9.9");
+    EXPECT_EQ(text_attribute(base + ".h5", "/", "input"), "<Kiln/>");
+    EXPECT_EQ(text_attribute(base + ".h5", "/steps/000000/stress", "unit"), "Pa");
+    EXPECT_EQ(text_attribute(base + ".h5", "/steps/000000/stress", "components"),
+              "xx,yy,zz,xy,yz,xz");
+    EXPECT_EQ(text_attribute(base + ".h5", "/steps/000000/displacement", "unit"), "m");
+    EXPECT_NE(index.find("AttributeType=\"Tensor6\""), std::string::npos);
     if (!::testing::Test::HasFailure())
       std::filesystem::remove_all(folder);
   }
   MPI_Barrier(comm);
 }
 } // namespace
+
+TEST(Hdf5XdmfWriter, AnUnfinishedRunKeepsItsRunningNames)
+{
+  // A run that ends without finish() (a crash) leaves BASE.running.h5 and .xmf, readable up to
+  // its last step, and no BASE.h5 that would look complete.
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  const Mesh mesh = box_mesh();
+  const Ownership o =
+      make_ownership(mesh, rank_of(comm), [&](const int c) { return c % size_of(comm); });
+  const std::string folder = shared_test_folder(comm, "h5_unfinished");
+  const std::string base = folder + "/out";
+  write_results(comm, base, mesh, o, false);
+  MPI_Barrier(comm);
+  if (rank_of(comm) == 0)
+  {
+    EXPECT_FALSE(std::filesystem::exists(base + ".h5"));
+    EXPECT_FALSE(std::filesystem::exists(base + ".xmf"));
+    check_h5_contents(base + ".running.h5", mesh, o.cell_rank);
+    EXPECT_EQ(kiln::check_xdmf(base + ".running.xmf"), "");
+    EXPECT_EQ(n_xdmf_steps(base + ".running.xmf"), n_steps);
+    if (!::testing::Test::HasFailure())
+      std::filesystem::remove_all(folder);
+  }
+  MPI_Barrier(comm);
+}
 
 TEST(Hdf5XdmfWriter, NonContiguousOwnedRowsGiveTheSameFileOnAnyNumberOfRanks)
 {
@@ -367,7 +439,7 @@ TEST(Hdf5XdmfWriter, MissingFolderIsAnInputErrorOnEveryRank)
       });
   if (message.empty())
     ADD_FAILURE() << "no exception";
-  EXPECT_NE(message.find(base + ".h5"), std::string::npos) << message;
+  EXPECT_NE(message.find(base + ".running.h5"), std::string::npos) << message;
   EXPECT_NE(message.find("exists and is writable"), std::string::npos) << message;
   // Every rank got here: the test did not hang.
   MPI_Barrier(comm);
@@ -410,7 +482,9 @@ TEST(Hdf5XdmfWriter, ErrorsInAStepAreThrownOnEveryRankAndCloseEverything)
   MPI_Barrier(comm);
   if (rank == 0)
   {
-    EXPECT_EQ(kiln::check_xdmf(base + ".xmf"), ""); // the mesh-only file written at creation
+    // The mesh-only index written at creation; the files keep their running names.
+    EXPECT_EQ(kiln::check_xdmf(base + ".running.xmf"), "");
+    EXPECT_FALSE(std::filesystem::exists(base + ".h5"));
     if (!::testing::Test::HasFailure())
       std::filesystem::remove_all(folder);
   }

@@ -1,0 +1,135 @@
+#include "io/results_replay.hpp"
+
+#include "base/errors.hpp"
+#include "io/field_catalog.hpp"
+#include "io/h5_handle.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+/// The names of the links in a group, in name order.
+std::vector<std::string> links_of(const hid_t group)
+{
+  std::vector<std::string> names;
+  H5Literate(
+      group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char *name, const H5L_info_t *, void *data) -> herr_t
+      {
+        static_cast<std::vector<std::string> *>(data)->emplace_back(name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+template <typename T> T read_attribute(const hid_t object, const char *name)
+{
+  const H5Handle a(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  T value{};
+  if (!a.valid() ||
+      H5Aread(a.get(), std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, &value) < 0)
+    throw std::runtime_error(std::string("cannot read the attribute ") + name);
+  return value;
+}
+} // namespace
+} // namespace internal
+
+int replay_results(const std::string &path, const double until, const ReplayRows &rows,
+                   const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm)
+{
+  using internal::H5Handle;
+  struct Field
+  {
+    std::string name;
+    bool on_nodes;
+    int n_components;
+    std::vector<double> values; ///< this rank's rows
+  };
+  struct Step
+  {
+    double time, dt;
+    int cycle;
+    std::vector<Field> fields;
+  };
+  // Every rank reads the steps (serial HDF5, read-only), then each writes its rows.
+  std::vector<Step> steps;
+  std::string error;
+  H5E_auto2_t old_function = nullptr;
+  void *old_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try
+  {
+    const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!file.valid())
+      throw std::runtime_error("not a readable HDF5 file");
+    const H5Handle all(H5Gopen2(file.get(), "steps", H5P_DEFAULT), H5Gclose);
+    if (!all.valid())
+      throw std::runtime_error("no /steps group: not a Kiln results file");
+    for (const std::string &name : internal::links_of(all.get()))
+    {
+      const H5Handle group(H5Gopen2(all.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+      Step step{internal::read_attribute<double>(group.get(), "time"),
+                internal::read_attribute<double>(group.get(), "dt"),
+                internal::read_attribute<int>(group.get(), "cycle"),
+                {}};
+      if (step.time > until + 1e-12 * std::max(1.0, std::abs(until)))
+        break;
+      for (const std::string &field : internal::links_of(group.get()))
+      {
+        const H5Handle set(H5Dopen2(group.get(), field.c_str(), H5P_DEFAULT), H5Dclose);
+        const H5Handle space(H5Dget_space(set.get()), H5Sclose);
+        hsize_t dims[2] = {0, 1};
+        const int rank = H5Sget_simple_extent_ndims(space.get());
+        H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+        const FieldDescription *known = describe_field(field);
+        const bool on_nodes = known != nullptr ? known->on_nodes : dims[0] == rows.n_nodes;
+        if (rank < 1 || rank > 2 ||
+            dims[0] != static_cast<hsize_t>(on_nodes ? rows.n_nodes : rows.n_cells))
+          throw std::runtime_error("step " + name + "/" + field + " has " +
+                                   std::to_string(dims[0]) +
+                                   " rows, which fit neither this mesh's nodes nor its cells");
+        const int n_components = rank == 2 ? static_cast<int>(dims[1]) : 1;
+        std::vector<double> all_rows(dims[0] * static_cast<hsize_t>(n_components));
+        if (H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, all_rows.data()) <
+            0)
+          throw std::runtime_error("cannot read step " + name + "/" + field);
+        Field f{field, on_nodes, n_components, {}};
+        for (const int r : on_nodes ? rows.owned_nodes : rows.owned_cells)
+          f.values.insert(f.values.end(), all_rows.begin() + std::size_t(r) * n_components,
+                          all_rows.begin() + std::size_t(r + 1) * n_components);
+        step.fields.push_back(std::move(f));
+      }
+      steps.push_back(std::move(step));
+    }
+  }
+  catch (const std::exception &e)
+  {
+    error = e.what();
+  }
+  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
+  check_collectively(comm, error.empty(), path,
+                     "cannot continue the results of the earlier run from this file: " + error);
+  for (const Step &step : steps)
+    for (ResultsWriter *writer : writers)
+    {
+      writer->begin_step(step.time, step.cycle, step.dt);
+      for (const Field &f : step.fields)
+        if (f.on_nodes)
+          writer->write_node_field(f.name, f.n_components, f.values);
+        else
+          writer->write_cell_field(f.name, f.n_components, f.values);
+      writer->end_step();
+    }
+  return static_cast<int>(steps.size());
+}
+} // namespace kiln

@@ -1,0 +1,27 @@
+#pragma once
+/// A continued run's results hold the whole time series: the earlier run's steps, then its own.
+#include "io/results_writer.hpp"
+
+#include <Teuchos_Comm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// This rank's rows of the mesh.
+struct ReplayRows
+{
+  int n_nodes = 0;
+  int n_cells = 0;
+  std::vector<int> owned_nodes; ///< increasing
+  std::vector<int> owned_cells; ///< increasing
+};
+
+/// Writes every output step of the HDF5 results file `path` (an earlier run of the same mesh)
+/// up to the time `until` [s] into each of `writers`, with the earlier step's time, cycle, dt
+/// and fields. Returns the number of steps. Throws InputError naming the file (on every rank)
+/// when it cannot be read or does not fit the mesh. Collective.
+int replay_results(const std::string &path, double until, const ReplayRows &rows,
+                   const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm);
+} // namespace kiln
