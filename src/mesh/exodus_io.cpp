@@ -1,6 +1,7 @@
 #include "mesh/exodus_io.hpp"
 
 #include "base/errors.hpp"
+#include "mesh/netcdf_header.hpp"
 
 #include <exodusII.h>
 
@@ -58,10 +59,11 @@ std::string to_upper(std::string s)
   return s;
 }
 
-bool is_hex8(const std::string &element_type)
+/// An 8-node hexahedron: Exodus names it "HEX8", "HEX" or "HEXAHEDRON" (any case; Cubit
+/// and other writers differ), so any name starting with HEX with 8 nodes per element.
+bool is_hex8(const std::string &element_type, const int n_per_elem)
 {
-  const std::string type = to_upper(element_type);
-  return type == "HEX8" || type == "HEX";
+  return to_upper(element_type).rfind("HEX", 0) == 0 && n_per_elem == n_hex_nodes;
 }
 
 /// Reads the element blocks (in file order) into mesh.connectivity and mesh.block_id.
@@ -77,11 +79,15 @@ void read_blocks(const int exo, const std::string &path, const int n_blocks, con
     int n_elems = 0, n_per_elem = 0, n_attr = 0;
     check_exodus(ex_get_elem_block(exo, id, type, &n_elems, &n_per_elem, &n_attr), path,
                  "reading the parameters of element block " + std::to_string(id));
-    KILN_CHECK_INPUT(is_hex8(type) && n_per_elem == n_hex_nodes, path,
+    KILN_CHECK_INPUT(is_hex8(type, n_per_elem), path,
                      "element block " << id << " has element type \"" << type << "\" with "
                                       << n_per_elem
-                                      << " nodes per element; Kiln supports HEX8 only: remesh "
+                                      << " nodes per element; Kiln supports 8-node hexahedra "
+                                         "only (HEX8, HEX or HEXAHEDRON with 8 nodes): remesh "
                                          "the block with 8-node hexahedra");
+    KILN_CHECK_INPUT(n_elems >= 0, path,
+                     "element block " << id << " announces " << n_elems
+                                      << " elements; the file is damaged: re-export it");
     if (n_elems == 0)
       continue;
     std::vector<int> conn(static_cast<std::size_t>(n_elems) * n_hex_nodes);
@@ -141,6 +147,9 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
     int n_sides = 0, n_dist = 0;
     check_exodus(ex_get_side_set_param(exo, set.id, &n_sides, &n_dist), path,
                  "reading the parameters of side set " + std::to_string(set.id));
+    KILN_CHECK_INPUT(n_sides >= 0, path,
+                     "side set " << set.id << " announces " << n_sides
+                                 << " sides; the file is damaged: re-export it");
     std::vector<int> elems(n_sides), sides(n_sides);
     if (n_sides > 0)
       check_exodus(ex_get_side_set(exo, set.id, elems.data(), sides.data()), path,
@@ -151,7 +160,12 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
                        "side set " << set.id << ", entry " << i + 1 << ": element " << elems[i]
                                    << " is outside 1.." << n_cells
                                    << "; the file is damaged: re-export it");
-      KILN_CHECK_INPUT(sides[i] >= 1 && sides[i] <= n_hex_faces, path,
+      KILN_CHECK_INPUT(sides[i] >= 1, path,
+                       "side set " << set.id << ", entry " << i + 1 << " (element " << elems[i]
+                                   << "): side number " << sides[i]
+                                   << " is not a side (they count from 1); the file is "
+                                      "damaged: re-export it");
+      KILN_CHECK_INPUT(sides[i] <= n_hex_faces, path,
                        "side set " << set.id << ", entry " << i + 1 << " (element " << elems[i]
                                    << "): side number " << sides[i]
                                    << " is outside 1..6, the sides of a HEX8; the side set "
@@ -208,6 +222,7 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   KILN_CHECK_INPUT(std::ifstream(path).good(), "",
                    "cannot open Exodus file \"" << path
                                                 << "\" (missing or not readable): check the path");
+  check_netcdf_file(path);
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0.0F;
   const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
@@ -222,6 +237,12 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   check_exodus(
       ex_get_init(id, title, &n_dim, &n_nodes, &n_elems, &n_blocks, &n_node_sets, &n_side_sets),
       path, "reading the file header");
+  KILN_CHECK_INPUT(n_nodes >= 0 && n_elems >= 0 && n_blocks >= 0 && n_side_sets >= 0, path,
+                   "the header announces negative counts (" << n_nodes << " nodes, " << n_elems
+                                                            << " elements, " << n_blocks
+                                                            << " blocks, " << n_side_sets
+                                                            << " side sets); the file is "
+                                                               "damaged: re-export it");
   KILN_CHECK_INPUT(n_dim == 3, path,
                    "the mesh is " << n_dim << "-dimensional; Kiln needs a 3D mesh of HEX8 "
                                   << "elements: mesh the geometry as a volume");
