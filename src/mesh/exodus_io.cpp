@@ -4,6 +4,7 @@
 #include "mesh/netcdf_header.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cctype>
@@ -66,15 +67,78 @@ bool is_hex8(const std::string &element_type, const int n_per_elem)
   return to_upper(element_type).rfind("HEX", 0) == 0 && n_per_elem == n_hex_nodes;
 }
 
+/// Exodus 6.02 reads whole netCDF variables (block and side set ids, connectivity, side
+/// sets) into the caller's buffer, sized from the counts in the header: in a damaged file
+/// whose variable holds more values, that overflowed Kiln's buffers (found by fuzzing).
+/// Throws InputError unless variable `name` is absent (Exodus reports that) or holds
+/// exactly `expected` values.
+void check_variable_size(const int exo, const std::string &path, const std::string &name,
+                         const long long expected, const std::string &what)
+{
+  int varid = -1, n_dims = 0;
+  if (nc_inq_varid(exo, name.c_str(), &varid) != NC_NOERR ||
+      nc_inq_varndims(exo, varid, &n_dims) != NC_NOERR || n_dims < 0 || n_dims > NC_MAX_VAR_DIMS)
+    return;
+  std::vector<int> dims(std::max(n_dims, 1));
+  if (nc_inq_vardimid(exo, varid, dims.data()) != NC_NOERR)
+    return;
+  long double size = 1;
+  for (int d = 0; d < n_dims; ++d)
+  {
+    std::size_t length = 0;
+    if (nc_inq_dimlen(exo, dims[d], &length) != NC_NOERR)
+      return;
+    size *= static_cast<long double>(length);
+  }
+  KILN_CHECK_INPUT(size == static_cast<long double>(expected), path,
+                   what << " (netCDF variable " << name << ") holds " << static_cast<double>(size)
+                        << " values where the header announces " << expected
+                        << "; the file is damaged: re-export it");
+}
+
+/// Exodus finds a block or side set by its id: with an id given twice, it would read one
+/// entity's data with the other's counts.
+void check_unique_ids(std::vector<int> ids, const std::string &path, const std::string &what)
+{
+  std::sort(ids.begin(), ids.end());
+  const auto twice = std::adjacent_find(ids.begin(), ids.end());
+  KILN_CHECK_INPUT(twice == ids.end(), path,
+                   what << " id " << (twice == ids.end() ? 0 : *twice)
+                        << " is given twice; the file is damaged: re-export it");
+}
+
+/// Exodus 6.02's ex_get_block copies block `index`'s (1-based) element type attribute whole
+/// into the caller's buffer of MAX_STR_LENGTH + 1 bytes: a longer one (a damaged file; found
+/// by fuzzing) overflowed Kiln's buffer. Refuse it before.
+void check_element_type_length(const int exo, const std::string &path, const int index,
+                               const int id)
+{
+  int varid = -1;
+  std::size_t length = 0;
+  if (nc_inq_varid(exo, ("connect" + std::to_string(index)).c_str(), &varid) != NC_NOERR ||
+      nc_inq_attlen(exo, varid, "elem_type", &length) != NC_NOERR)
+    return; // ex_get_elem_block reports what is missing
+  KILN_CHECK_INPUT(length <= MAX_STR_LENGTH, path,
+                   "element block " << id << ": its element type name is " << length
+                                    << " characters long, more than the " << MAX_STR_LENGTH
+                                    << " Exodus II allows; the file is damaged: re-export it");
+}
+
 /// Reads the element blocks (in file order) into mesh.connectivity and mesh.block_id.
 void read_blocks(const int exo, const std::string &path, const int n_blocks, const int n_nodes,
                  Mesh &mesh)
 {
   std::vector<int> ids(n_blocks);
   if (n_blocks > 0)
-    check_exodus(ex_get_elem_blk_ids(exo, ids.data()), path, "reading the element block ids");
-  for (const int id : ids)
   {
+    check_variable_size(exo, path, "eb_prop1", n_blocks, "the list of element block ids");
+    check_exodus(ex_get_elem_blk_ids(exo, ids.data()), path, "reading the element block ids");
+    check_unique_ids(ids, path, "element block");
+  }
+  for (int index = 1; index <= n_blocks; ++index)
+  {
+    const int id = ids[index - 1];
+    check_element_type_length(exo, path, index, id);
     char type[MAX_STR_LENGTH + 1] = {};
     int n_elems = 0, n_per_elem = 0, n_attr = 0;
     check_exodus(ex_get_elem_block(exo, id, type, &n_elems, &n_per_elem, &n_attr), path,
@@ -90,6 +154,9 @@ void read_blocks(const int exo, const std::string &path, const int n_blocks, con
                                       << " elements; the file is damaged: re-export it");
     if (n_elems == 0)
       continue;
+    check_variable_size(exo, path, "connect" + std::to_string(index),
+                        static_cast<long long>(n_elems) * n_hex_nodes,
+                        "the connectivity of element block " + std::to_string(id));
     std::vector<int> conn(static_cast<std::size_t>(n_elems) * n_hex_nodes);
     check_exodus(ex_get_elem_conn(exo, id, conn.data()), path,
                  "reading the connectivity of element block " + std::to_string(id));
@@ -136,7 +203,9 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
   if (n_side_sets == 0)
     return;
   std::vector<int> ids(n_side_sets);
+  check_variable_size(exo, path, "ss_prop1", n_side_sets, "the list of side set ids");
   check_exodus(ex_get_side_set_ids(exo, ids.data()), path, "reading the side set ids");
+  check_unique_ids(ids, path, "side set");
   const std::vector<std::string> names = read_side_set_names(exo, path, n_side_sets);
   const int n_cells = mesh.n_cells();
   for (int s = 0; s < n_side_sets; ++s)
@@ -151,6 +220,9 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
                      "side set " << set.id << " announces " << n_sides
                                  << " sides; the file is damaged: re-export it");
     std::vector<int> elems(n_sides), sides(n_sides);
+    for (const char *variable : {"elem_ss", "side_ss"})
+      check_variable_size(exo, path, variable + std::to_string(s + 1), n_sides,
+                          "side set " + std::to_string(set.id));
     if (n_sides > 0)
       check_exodus(ex_get_side_set(exo, set.id, elems.data(), sides.data()), path,
                    "reading side set " + std::to_string(set.id));
@@ -250,7 +322,11 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   Mesh mesh;
   std::vector<double> x(n_nodes), y(n_nodes), z(n_nodes);
   if (n_nodes > 0)
+  {
+    for (const char *variable : {"coordx", "coordy", "coordz"})
+      internal::check_variable_size(id, path, variable, n_nodes, "the coordinates");
     check_exodus(ex_get_coord(id, x.data(), y.data(), z.data()), path, "reading the coordinates");
+  }
   mesh.coordinates.resize(n_nodes);
   for (int i = 0; i < n_nodes; ++i)
     mesh.coordinates[i] = {scale * x[i], scale * y[i], scale * z[i]};

@@ -8,6 +8,7 @@
 #include <exodusII.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -338,5 +339,22 @@ TEST(ExodusIo, TruncatedFileIsReportedAsTruncated)
     EXPECT_THAT(message, HasSubstr("the file is truncated")) << n;
     EXPECT_THAT(message, testing::Not(HasSubstr("side set"))) << n;
   }
+}
+TEST(ExodusIo, OverlongElementTypeIsRejected)
+{
+  // Found by fuzz_exodus: Exodus copies the type name whole into a 33-byte buffer.
+  const TempFile file("long-type");
+  write_one_element_file(file.path(), 3, "HEX8", 5, -1);
+  // ex_put_elem_block overflows as well with such a name: set it with netCDF.
+  int nc = -1, varid = -1;
+  ASSERT_EQ(nc_open(file.path().c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_redef(nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "connect1", &varid), NC_NOERR);
+  const std::string type = "HEX8" + std::string(201, 'X');
+  ASSERT_EQ(nc_put_att_text(nc, varid, "elem_type", type.size(), type.c_str()), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+  EXPECT_THAT(read_error(file.path()),
+              HasSubstr("element block 5: its element type name is 205 characters long, more "
+                        "than the 32 Exodus II allows; the file is damaged"));
 }
 } // namespace
