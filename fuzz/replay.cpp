@@ -6,6 +6,7 @@
 #include "fuzz_targets.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,9 @@ int main(int argc, char **argv)
     return 2;
   }
   const bool input = std::string(argv[1]) == "input";
+  // KILN_REPLAY_VERBOSE=1 names each file before it runs (to find the one a tool such as
+  // valgrind complains about).
+  const bool verbose = std::getenv("KILN_REPLAY_VERBOSE") != nullptr;
   std::vector<std::filesystem::path> files;
   for (int i = 2; i < argc; ++i)
   {
@@ -39,6 +43,8 @@ int main(int argc, char **argv)
   int failures = 0;
   for (const auto &file : files)
   {
+    if (verbose)
+      std::cout << "replaying " << file.string() << std::endl;
     std::ifstream in(file, std::ios::binary);
     const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                           std::istreambuf_iterator<char>());

@@ -4,7 +4,7 @@
 #                                           target (default 300)
 # Builds the "sanitize" preset (clang, ASan + UBSan, -DKILN_FUZZ=ON) in build-sanitize, then
 # runs each target for SECONDS on one core, starting from fuzz/corpus/<target>. New corpus
-# entries go to fuzz-work/<target>/corpus, crashes to fuzz-work/<target>/artifacts. Prints the
+# entries go to build-sanitize/fuzz-work/<target>/corpus, crashes to .../artifacts. Prints the
 # executions run and the crashes found; exits 1 if there were any. A crash input, once fixed,
 # goes to fuzz/regressions/<target>/, which ctest replays with the normal build
 # (fuzz_replay_<target>).
@@ -27,7 +27,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0:detect_odr_violation=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 status=0
 for t in $targets; do
-  work=fuzz-work/$t
+  work=build-sanitize/fuzz-work/$t
   mkdir -p "$work/corpus" "$work/artifacts"
   dict=()
   [ "$t" = input ] && dict=(-dict=fuzz/xml.dict)

@@ -108,16 +108,25 @@ void check_unique_ids(std::vector<int> ids, const std::string &path, const std::
 }
 
 /// Exodus 6.02's ex_get_block copies block `index`'s (1-based) element type attribute whole
-/// into the caller's buffer of MAX_STR_LENGTH + 1 bytes: a longer one (a damaged file; found
-/// by fuzzing) overflowed Kiln's buffer. Refuse it before.
-void check_element_type_length(const int exo, const std::string &path, const int index,
-                               const int id)
+/// into the caller's buffer of MAX_STR_LENGTH + 1 bytes, and from an uninitialised buffer
+/// when the block's connectivity variable is missing: in a damaged file both overflowed
+/// Kiln's buffer (found by fuzzing). Refuse such a file before. A block without the
+/// dimension num_el_in_blk<index> is an empty ("NULL") block, for which Exodus reads no type.
+void check_element_type(const int exo, const std::string &path, const int index, const int id)
 {
-  int varid = -1;
+  const std::string n = std::to_string(index);
+  int dimid = -1, varid = -1;
+  if (nc_inq_dimid(exo, ("num_el_in_blk" + n).c_str(), &dimid) != NC_NOERR)
+    return;
+  nc_type type = NC_NAT;
   std::size_t length = 0;
-  if (nc_inq_varid(exo, ("connect" + std::to_string(index)).c_str(), &varid) != NC_NOERR ||
-      nc_inq_attlen(exo, varid, "elem_type", &length) != NC_NOERR)
-    return; // ex_get_elem_block reports what is missing
+  KILN_CHECK_INPUT(nc_inq_varid(exo, ("connect" + n).c_str(), &varid) == NC_NOERR &&
+                       nc_inq_att(exo, varid, "elem_type", &type, &length) == NC_NOERR &&
+                       type == NC_CHAR,
+                   path,
+                   "element block " << id << ": its connectivity (netCDF variable connect" << n
+                                    << ") or its element type is missing; the file is "
+                                       "damaged: re-export it");
   KILN_CHECK_INPUT(length <= MAX_STR_LENGTH, path,
                    "element block " << id << ": its element type name is " << length
                                     << " characters long, more than the " << MAX_STR_LENGTH
@@ -138,8 +147,9 @@ void read_blocks(const int exo, const std::string &path, const int n_blocks, con
   for (int index = 1; index <= n_blocks; ++index)
   {
     const int id = ids[index - 1];
-    check_element_type_length(exo, path, index, id);
-    char type[MAX_STR_LENGTH + 1] = {};
+    check_element_type(exo, path, index, id);
+    // Larger than Exodus' MAX_STR_LENGTH + 1 and zeroed: its copy ends inside.
+    char type[4 * (MAX_STR_LENGTH + 1)] = {};
     int n_elems = 0, n_per_elem = 0, n_attr = 0;
     check_exodus(ex_get_elem_block(exo, id, type, &n_elems, &n_per_elem, &n_attr), path,
                  "reading the parameters of element block " + std::to_string(id));
