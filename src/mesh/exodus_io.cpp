@@ -108,25 +108,34 @@ void check_unique_ids(std::vector<int> ids, const std::string &path, const std::
 }
 
 /// Exodus 6.02's ex_get_block copies block `index`'s (1-based) element type attribute whole
-/// into the caller's buffer of MAX_STR_LENGTH + 1 bytes, and from an uninitialised buffer
-/// when the block's connectivity variable is missing: in a damaged file both overflowed
-/// Kiln's buffer (found by fuzzing). Refuse such a file before. A block without the
-/// dimension num_el_in_blk<index> is an empty ("NULL") block, for which Exodus reads no type.
+/// into the caller's buffer of MAX_STR_LENGTH + 1 bytes, and copies uninitialised memory
+/// into it when the block's dimensions or connectivity variable are missing: in a damaged
+/// file both overflowed Kiln's buffer (found by fuzzing). Refuse such a file before. An
+/// empty ("NULL") block, eb_status 0, has none of these, and Exodus reads no type for it.
 void check_element_type(const int exo, const std::string &path, const int index, const int id)
 {
   const std::string n = std::to_string(index);
-  int dimid = -1, varid = -1;
-  if (nc_inq_dimid(exo, ("num_el_in_blk" + n).c_str(), &dimid) != NC_NOERR)
+  int varid = -1, status = 1;
+  const std::size_t position = static_cast<std::size_t>(index - 1);
+  if (nc_inq_varid(exo, "eb_status", &varid) == NC_NOERR &&
+      nc_get_var1_int(exo, varid, &position, &status) != NC_NOERR)
+    status = 1;
+  if (status == 0)
     return;
+  int dimid = -1;
   nc_type type = NC_NAT;
   std::size_t length = 0;
-  KILN_CHECK_INPUT(nc_inq_varid(exo, ("connect" + n).c_str(), &varid) == NC_NOERR &&
+  KILN_CHECK_INPUT(nc_inq_dimid(exo, ("num_el_in_blk" + n).c_str(), &dimid) == NC_NOERR &&
+                       nc_inq_dimid(exo, ("num_nod_per_el" + n).c_str(), &dimid) == NC_NOERR &&
+                       nc_inq_varid(exo, ("connect" + n).c_str(), &varid) == NC_NOERR &&
                        nc_inq_att(exo, varid, "elem_type", &type, &length) == NC_NOERR &&
                        type == NC_CHAR,
                    path,
-                   "element block " << id << ": its connectivity (netCDF variable connect" << n
-                                    << ") or its element type is missing; the file is "
-                                       "damaged: re-export it");
+                   "element block " << id
+                                    << ": its size, connectivity or element type (netCDF "
+                                       "num_el_in_blk"
+                                    << n << ", num_nod_per_el" << n << ", connect" << n
+                                    << ") is missing; the file is damaged: re-export it");
   KILN_CHECK_INPUT(length <= MAX_STR_LENGTH, path,
                    "element block " << id << ": its element type name is " << length
                                     << " characters long, more than the " << MAX_STR_LENGTH
