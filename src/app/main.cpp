@@ -76,9 +76,9 @@ int main(int argc, char **argv)
   {
     // May have happened on one rank only: abort so no rank hangs.
     std::cerr << "kiln: error: rank " << comm->getRank()
-              << " ran out of memory; the mesh and its matrices need more than this machine "
-                 "gives each rank: use fewer cells (Kiln/Mesh/Box/\"Cells\" or a coarser mesh) "
-                 "or more ranks on more nodes"
+              << " ran out of memory; the mesh (held whole on every rank) and its matrices "
+                 "need more than this machine gives: use fewer cells (Kiln/Mesh/Box/\"Cells\" "
+                 "or a coarser mesh)"
               << std::endl;
     MPI_Abort(MPI_COMM_WORLD, 2);
   }

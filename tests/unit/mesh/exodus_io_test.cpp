@@ -357,4 +357,20 @@ TEST(ExodusIo, OverlongElementTypeIsRejected)
               HasSubstr("element block 5: its element type name is 205 characters long, more "
                         "than the 32 Exodus II allows; the file is damaged"));
 }
+TEST(ExodusIo, IdGivenTwiceIsRejected)
+{
+  // Exodus finds a side set by its id: with one id twice it reads one side set's data with
+  // the other's count.
+  const TempFile file("twice");
+  kiln::write_exodus_mesh(kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm), file.path());
+  int nc = -1, varid = -1;
+  ASSERT_EQ(nc_open(file.path().c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "ss_prop1", &varid), NC_NOERR);
+  const std::size_t second = 1;
+  const int id = 1;
+  ASSERT_EQ(nc_put_var1_int(nc, varid, &second, &id), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+  EXPECT_THAT(read_error(file.path()),
+              HasSubstr("side set id 1 is given twice; the file is damaged: re-export it"));
+}
 } // namespace
