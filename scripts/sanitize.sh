@@ -11,10 +11,16 @@ command -v clang++ >/dev/null || { apt-get update -q && apt-get install -y -q cl
 [ -f build-sanitize/CMakeCache.txt ] || nice cmake --preset sanitize
 nice cmake --build build-sanitize -j 2
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-export ASAN_OPTIONS=detect_leaks=1:detect_odr_violation=0:abort_on_error=0
-export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp:print_suppressions=0
+# fast_unwind_on_malloc=0: Open MPI is built without frame pointers; the fast unwinder
+# loses the frames, and the suppressions below cannot match "<unknown module>".
+export ASAN_OPTIONS=detect_leaks=1:detect_odr_violation=0:abort_on_error=0:fast_unwind_on_malloc=0
+export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp:print_suppressions=0:fast_unwind_on_malloc=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 if [ $# -eq 0 ]; then
-  set -- -L 'unit|input_error' -R '^(unit_|input_error_|cli_|fuzz_replay|format|doc_|input_.*_check$)'
+  # The unit tests, the bad decks on one rank, the command-line tests and the fuzz corpus.
+  # Left out (slow under ASan, minutes each; run them by name): the contact-box and
+  # convergence studies of tests/unit/app and the MueLu refinement study.
+  set -- -L 'unit|input_error' -R '^(unit_|input_error_|cli_|fuzz_replay|doc_)' \
+    -E 'unit_contact_box|unit_thermal_rank_independence|unit_heat_convergence|unit_muelu_refinement|input_error_.*_np[23]$'
 fi
 nice ctest --test-dir build-sanitize -j 2 --timeout 1200 --output-on-failure "$@"

@@ -91,8 +91,8 @@ void check_variable_size(const int exo, const std::string &path, const std::stri
     size *= static_cast<long double>(length);
   }
   KILN_CHECK_INPUT(size == static_cast<long double>(expected), path,
-                   what << " (netCDF variable " << name << ") holds " << static_cast<double>(size)
-                        << " values where the header announces " << expected
+                   what << " (netCDF variable " << name << ") has size "
+                        << static_cast<double>(size) << " where the header announces " << expected
                         << "; the file is damaged: re-export it");
 }
 
@@ -149,7 +149,9 @@ void read_blocks(const int exo, const std::string &path, const int n_blocks, con
   std::vector<int> ids(n_blocks);
   if (n_blocks > 0)
   {
+    // ex_id_lkup reads the ids and the status flags whole, in every block call.
     check_variable_size(exo, path, "eb_prop1", n_blocks, "the list of element block ids");
+    check_variable_size(exo, path, "eb_status", n_blocks, "the element block status flags");
     check_exodus(ex_get_elem_blk_ids(exo, ids.data()), path, "reading the element block ids");
     check_unique_ids(ids, path, "element block");
   }
@@ -223,6 +225,7 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
     return;
   std::vector<int> ids(n_side_sets);
   check_variable_size(exo, path, "ss_prop1", n_side_sets, "the list of side set ids");
+  check_variable_size(exo, path, "ss_status", n_side_sets, "the side set status flags");
   check_exodus(ex_get_side_set_ids(exo, ids.data()), path, "reading the side set ids");
   check_unique_ids(ids, path, "side set");
   const std::vector<std::string> names = read_side_set_names(exo, path, n_side_sets);
