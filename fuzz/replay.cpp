@@ -30,6 +30,8 @@ int main(int argc, char **argv)
   for (int i = 2; i < argc; ++i)
   {
     const std::filesystem::path p(argv[i]);
+    if (!std::filesystem::exists(p))
+      continue; // e.g. fuzz/regressions/input while no crash has been found there
     if (std::filesystem::is_directory(p))
     {
       for (const auto &e : std::filesystem::recursive_directory_iterator(p))
