@@ -70,14 +70,21 @@ bool is_hex8(const std::string &element_type, const int n_per_elem)
 /// Exodus 6.02 reads whole netCDF variables (block and side set ids, connectivity, side
 /// sets) into the caller's buffer, sized from the counts in the header: in a damaged file
 /// whose variable holds more values, that overflowed Kiln's buffers (found by fuzzing).
-/// Throws InputError unless variable `name` is absent (Exodus reports that) or holds
-/// exactly `expected` values.
+/// Called before Kiln allocates for it, it also keeps a count in the header without data
+/// behind it from asking for gigabytes (found by fuzzing: an out-of-memory).
+/// Throws InputError unless variable `name` holds exactly `expected` values, or is absent
+/// and not `required`.
 void check_variable_size(const int exo, const std::string &path, const std::string &name,
-                         const long long expected, const std::string &what)
+                         const long long expected, const std::string &what,
+                         const bool required = true)
 {
   int varid = -1, n_dims = 0;
-  if (nc_inq_varid(exo, name.c_str(), &varid) != NC_NOERR ||
-      nc_inq_varndims(exo, varid, &n_dims) != NC_NOERR || n_dims < 0 || n_dims > NC_MAX_VAR_DIMS)
+  const bool present = nc_inq_varid(exo, name.c_str(), &varid) == NC_NOERR;
+  KILN_CHECK_INPUT(present || !required, path,
+                   what << ": netCDF variable " << name
+                        << " is missing; the file is damaged: re-export it");
+  if (!present || nc_inq_varndims(exo, varid, &n_dims) != NC_NOERR || n_dims < 0 ||
+      n_dims > NC_MAX_VAR_DIMS)
     return;
   std::vector<int> dims(std::max(n_dims, 1));
   if (nc_inq_vardimid(exo, varid, dims.data()) != NC_NOERR)
@@ -146,12 +153,15 @@ void check_element_type(const int exo, const std::string &path, const int index,
 void read_blocks(const int exo, const std::string &path, const int n_blocks, const int n_nodes,
                  Mesh &mesh)
 {
-  std::vector<int> ids(n_blocks);
   if (n_blocks > 0)
   {
     // ex_id_lkup reads the ids and the status flags whole, in every block call.
     check_variable_size(exo, path, "eb_prop1", n_blocks, "the list of element block ids");
-    check_variable_size(exo, path, "eb_status", n_blocks, "the element block status flags");
+    check_variable_size(exo, path, "eb_status", n_blocks, "the element block status flags", false);
+  }
+  std::vector<int> ids(n_blocks);
+  if (n_blocks > 0)
+  {
     check_exodus(ex_get_elem_blk_ids(exo, ids.data()), path, "reading the element block ids");
     check_unique_ids(ids, path, "element block");
   }
@@ -204,8 +214,10 @@ std::vector<std::string> read_side_set_names(const int exo, const std::string &p
                                              const int n_side_sets)
 {
   // Ask for the longest name the file holds, not the default 32 characters.
-  const int name_length =
-      std::max(static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 1);
+  // At most 255 (NC_MAX_NAME - 1): a damaged count would ask for gigabytes per name; Exodus
+  // shortens longer names to the length set here.
+  const int name_length = std::clamp(
+      static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH)), 1, NC_MAX_NAME - 1);
   check_exodus(ex_set_max_name_length(exo, name_length), path, "setting the name length");
   std::vector<std::vector<char>> buffers(n_side_sets, std::vector<char>(name_length + 1, '\0'));
   std::vector<char *> pointers;
@@ -223,9 +235,9 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
 {
   if (n_side_sets == 0)
     return;
-  std::vector<int> ids(n_side_sets);
   check_variable_size(exo, path, "ss_prop1", n_side_sets, "the list of side set ids");
-  check_variable_size(exo, path, "ss_status", n_side_sets, "the side set status flags");
+  check_variable_size(exo, path, "ss_status", n_side_sets, "the side set status flags", false);
+  std::vector<int> ids(n_side_sets);
   check_exodus(ex_get_side_set_ids(exo, ids.data()), path, "reading the side set ids");
   check_unique_ids(ids, path, "side set");
   const std::vector<std::string> names = read_side_set_names(exo, path, n_side_sets);
@@ -241,10 +253,11 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
     KILN_CHECK_INPUT(n_sides >= 0, path,
                      "side set " << set.id << " announces " << n_sides
                                  << " sides; the file is damaged: re-export it");
+    if (n_sides > 0)
+      for (const char *variable : {"elem_ss", "side_ss"})
+        check_variable_size(exo, path, variable + std::to_string(s + 1), n_sides,
+                            "side set " + std::to_string(set.id));
     std::vector<int> elems(n_sides), sides(n_sides);
-    for (const char *variable : {"elem_ss", "side_ss"})
-      check_variable_size(exo, path, variable + std::to_string(s + 1), n_sides,
-                          "side set " + std::to_string(set.id));
     if (n_sides > 0)
       check_exodus(ex_get_side_set(exo, set.id, elems.data(), sides.data()), path,
                    "reading side set " + std::to_string(set.id));
@@ -342,11 +355,19 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
                                   << "elements: mesh the geometry as a volume");
 
   Mesh mesh;
+  if (n_nodes > 0)
+  {
+    // Old files hold the coordinates in one variable "coord" (read piecewise by Exodus).
+    int coord = -1;
+    if (nc_inq_varid(id, "coord", &coord) == NC_NOERR)
+      internal::check_variable_size(id, path, "coord", 3LL * n_nodes, "the coordinates");
+    else
+      for (const char *variable : {"coordx", "coordy", "coordz"})
+        internal::check_variable_size(id, path, variable, n_nodes, "the coordinates");
+  }
   std::vector<double> x(n_nodes), y(n_nodes), z(n_nodes);
   if (n_nodes > 0)
   {
-    for (const char *variable : {"coordx", "coordy", "coordz"})
-      internal::check_variable_size(id, path, variable, n_nodes, "the coordinates");
     check_exodus(ex_get_coord(id, x.data(), y.data(), z.data()), path, "reading the coordinates");
   }
   mesh.coordinates.resize(n_nodes);
