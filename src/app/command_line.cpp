@@ -64,13 +64,27 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
       set_mode(CommandLine::Mode::check, a);
     else if (a == "--write-mesh")
     {
+      KILN_CHECK_INPUT(cl.mesh_output.empty(), "command line",
+                       "--write-mesh is given twice; give it once, with one output file" << hint);
       set_mode(CommandLine::Mode::write_mesh, a);
       cl.mesh_output = value("an output file name (OUT.exo)");
     }
     else if (a == "--mesh")
+    {
+      const std::string previous = cl.mesh_file;
       cl.mesh_file = value("an Exodus file name");
+      KILN_CHECK_INPUT(previous.empty(), "command line",
+                       "--mesh is given twice (\"" << previous << "\", \"" << cl.mesh_file
+                                                   << "\"); a run reads one mesh: give --mesh "
+                                                      "once"
+                                                   << hint);
+    }
     else if (a == "--restart")
+    {
+      KILN_CHECK_INPUT(cl.restart.empty(), "command line",
+                       "--restart is given twice; a run continues from one checkpoint" << hint);
       cl.restart = value("a checkpoint file name (NAME.h5)");
+    }
     else if (a.rfind("-", 0) == 0)
       KILN_CHECK_INPUT(false, "command line", "unknown option \"" << a << "\"" << hint);
     else

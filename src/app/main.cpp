@@ -13,6 +13,7 @@
 #include <mpi.h>
 
 #include <iostream>
+#include <new>
 
 namespace
 {
@@ -81,10 +82,24 @@ int main(int argc, char **argv)
       std::cerr << "kiln: error: " << e.what() << "\n";
     return 2;
   }
+  catch (const std::bad_alloc &)
+  {
+    // May have happened on one rank only: abort so no rank hangs.
+    std::cerr << "kiln: error: rank " << comm->getRank()
+              << " ran out of memory; the mesh (held whole on every rank) and its matrices "
+                 "need more than this machine gives: use fewer cells (Kiln/Mesh/Box/\"Cells\" "
+                 "or a coarser mesh)"
+              << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 2);
+  }
   catch (const std::exception &e)
   {
-    // Anything else may have happened on one rank only: abort so no rank hangs.
-    std::cerr << "kiln: internal error on rank " << comm->getRank() << ": " << e.what() << "\n";
+    // Anything else may have happened on one rank only: abort so no rank hangs. A library's
+    // exception text (Teuchos' source path, "Throw number") is put on one line.
+    std::cerr << "kiln: internal error on rank " << comm->getRank() << ": "
+              << kiln::one_line_library_message(e.what())
+              << "; this is a bug in Kiln or a library it uses: please report it with the input"
+              << std::endl;
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
   return 2;

@@ -3,6 +3,8 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_CommHelpers.hpp>
 
+#include <regex>
+#include <sstream>
 #include <vector>
 
 namespace kiln
@@ -22,6 +24,28 @@ void throw_internal_error(const char *file, const int line, const char *conditio
   throw InternalError(s.str());
 }
 } // namespace internal
+
+std::string one_line_library_message(const std::string &what)
+{
+  // "./packages/teuchos/.../Teuchos_XMLObject.cpp:137:", Teuchos' source location.
+  static const std::regex location(R"(^\S*\.(cpp|hpp|cc|h|c):[0-9]+:\s*)");
+  std::istringstream lines(what);
+  std::string line, result;
+  while (std::getline(lines, line))
+  {
+    line = std::regex_replace(line, location, "");
+    const auto first = line.find_first_not_of(" \t\r");
+    const auto last = line.find_last_not_of(" \t\r");
+    if (first == std::string::npos)
+      continue;
+    line = line.substr(first, last - first + 1);
+    if (line.rfind("Throw number =", 0) == 0 ||
+        line.rfind("Throw test that evaluated to true:", 0) == 0)
+      continue;
+    result += (result.empty() ? "" : "; ") + line;
+  }
+  return result;
+}
 
 void check_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
                         const std::string &where, const std::string &message)

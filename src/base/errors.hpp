@@ -49,6 +49,12 @@ namespace internal
                                        const std::string &message);
 } // namespace internal
 
+/// The text of an exception thrown by a Trilinos package (Teuchos' TEUCHOS_TEST_FOR_EXCEPTION
+/// and the like) on one line: without the source path and line, "Throw number = N" and
+/// "Throw test that evaluated to true: ...", blank lines and trailing spaces; the remaining
+/// lines joined by "; ". Other text is returned on one line the same way.
+std::string one_line_library_message(const std::string &what);
+
 /// Throws the same InputError on every rank if `local_ok` is false on any rank.
 /// `message` is taken from the lowest rank where the check failed.
 void check_collectively(const Teuchos::Comm<int> &comm, bool local_ok, const std::string &where,

@@ -7,6 +7,9 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
 
+#include <limits>
+#include <string>
+
 namespace kiln
 {
 Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
@@ -40,11 +43,28 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   }
   phi_ = p.get<double>("Phi");
   theta_ = p.get<double>("Theta");
+  // Odd: suggest the even counts next to it that are valid (1 has only 2).
+  const std::string even_choices =
+      cells_[0] > 1 ? std::to_string(cells_[0] - 1) + " or " + std::to_string(cells_[0] + 1)
+                    : std::string("2 (one cell on each side)");
   KILN_CHECK_INPUT(cells_[0] % 2 == 0, where + "/\"Cells\"",
                    "the x count is " << cells_[0]
                                      << " but must be even, so that the plane x = 0 between "
                                         "the two blocks is a cell face; use "
-                                     << cells_[0] + 1 << " or " << cells_[0] - 1);
+                                     << even_choices);
+  // Nodes and cells are numbered with int: refuse counts that overflow it before the
+  // generator computes them.
+  const long double n_nodes =
+      static_cast<long double>(cells_[0] + 1.0L) * (cells_[1] + 1.0L) * (cells_[2] + 1.0L);
+  const long double n_cells =
+      static_cast<long double>(cells_[0]) * static_cast<long double>(cells_[1]) * cells_[2];
+  KILN_CHECK_INPUT(n_nodes <= std::numeric_limits<int>::max(), where + "/\"Cells\"",
+                   "{" << cells_[0] << ", " << cells_[1] << ", " << cells_[2] << "} gives "
+                       << static_cast<double>(n_cells) << " cells and "
+                       << static_cast<double>(n_nodes) << " nodes, more than the "
+                       << std::numeric_limits<int>::max()
+                       << " a Kiln mesh can number (and far more than fits in memory): use "
+                          "fewer cells");
 }
 
 Mesh BoxMeshGenerator::generate() const

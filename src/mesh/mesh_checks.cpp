@@ -5,11 +5,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace kiln
 {
-void check_mesh(const Mesh &mesh, const std::string &where)
+namespace
+{
+/// The largest distance from node 0 of a cell to its other nodes.
+double cell_extent(const HexNodes &x)
+{
+  double d2 = 0.0;
+  for (int i = 1; i < n_hex_nodes; ++i)
+    d2 = std::max(d2, (x[i][0] - x[0][0]) * (x[i][0] - x[0][0]) +
+                          (x[i][1] - x[0][1]) * (x[i][1] - x[0][1]) +
+                          (x[i][2] - x[0][2]) * (x[i][2] - x[0][2]));
+  return std::sqrt(d2);
+}
+
+/// Cells outside [smallest_cell, largest_cell] metres come from a wrong scale, not from a
+/// continuum problem; below it volumes and areas underflow, and every later step fails
+/// with a message about something else (an inverted cell, a zero-area face).
+constexpr double smallest_cell = 1e-9, largest_cell = 1e6; // [m]
+
+void check_scale(const Mesh &mesh, const std::string &where, const std::string &scale_parameter)
+{
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+  {
+    const Point &p = mesh.coordinates[n];
+    KILN_CHECK_INPUT(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), where,
+                     "node " << n + 1 << " is at (" << p[0] << ", " << p[1] << ", " << p[2]
+                             << "), not a finite point; "
+                             << (scale_parameter.empty()
+                                     ? std::string("the mesh is damaged: fix it")
+                                     : "check " + scale_parameter));
+  }
+  int smallest = 0, largest = 0;
+  double smallest_extent = std::numeric_limits<double>::max(), largest_extent = 0.0;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+  {
+    const double extent = cell_extent(cell_nodes(mesh, c));
+    if (extent < smallest_extent)
+      smallest_extent = extent, smallest = c;
+    if (extent > largest_extent)
+      largest_extent = extent, largest = c;
+  }
+  const std::string hint =
+      scale_parameter.empty() ? std::string("fix the mesh") : "check " + scale_parameter;
+  // An extent of exactly 0 is a collapsed cell, which the Jacobian check below reports.
+  KILN_CHECK_INPUT(smallest_extent == 0.0 || smallest_extent >= smallest_cell, where,
+                   "cell " << smallest + 1 << " (block " << mesh.block_id[smallest] << ") is only "
+                           << smallest_extent << " m across, below " << smallest_cell
+                           << " m: Kiln takes coordinates in metres and cannot resolve cells "
+                              "this small; "
+                           << hint);
+  KILN_CHECK_INPUT(largest_extent <= largest_cell, where,
+                   "cell " << largest + 1 << " (block " << mesh.block_id[largest] << ") is "
+                           << largest_extent << " m across, above " << largest_cell
+                           << " m: Kiln takes coordinates in metres; " << hint);
+}
+} // namespace
+
+void check_mesh(const Mesh &mesh, const std::string &where, const std::string &scale_parameter)
 {
   KILN_CHECK_INPUT(mesh.n_cells() > 0, where, "the mesh has no cells");
   KILN_CHECK_INPUT(mesh.block_id.size() == mesh.connectivity.size(), where,
@@ -34,17 +91,13 @@ void check_mesh(const Mesh &mesh, const std::string &where)
                        where,
                        "side set " << s.id << " entry " << k + 1 << " (cell " << s.cells[k] + 1
                                    << ", side " << s.faces[k] + 1 << ") is not a face of the mesh");
+  check_scale(mesh, where, scale_parameter);
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     const HexNodes x = cell_nodes(mesh, c);
     // A flat cell's determinant is round-off of either sign: count as non-positive anything
     // below 1e-12 (d/2)^3, d the largest distance from node 0 (det ~ (h/2)^3 for a cube of side h).
-    double d2 = 0.0;
-    for (int i = 1; i < n_hex_nodes; ++i)
-      d2 = std::max(d2, (x[i][0] - x[0][0]) * (x[i][0] - x[0][0]) +
-                            (x[i][1] - x[0][1]) * (x[i][1] - x[0][1]) +
-                            (x[i][2] - x[0][2]) * (x[i][2] - x[0][2]));
-    const double half = 0.5 * std::sqrt(d2), det_tolerance = 1e-12 * half * half * half;
+    const double half = 0.5 * cell_extent(x), det_tolerance = 1e-12 * half * half * half;
     for (const Point &xi : hex_gauss_points())
     {
       const double det = hex_jacobian_determinant(x, xi);

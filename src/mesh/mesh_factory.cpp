@@ -7,6 +7,7 @@
 #include "mesh/mesh_checks.hpp"
 
 #include <filesystem>
+#include <sstream>
 
 namespace kiln
 {
@@ -79,7 +80,13 @@ Mesh MeshFactory::build() const
                               "meshes from other programs, 0.01 for Cubit meshes in cm)");
     mesh = read_exodus_mesh(exodus_file_, scale_);
   }
-  check_mesh(mesh, type_ == "Box" ? where_ + "/Box" : exodus_file_);
+  std::ostringstream scale;
+  if (type_ == "Box")
+    scale << where_ << "/Box/\"Size\" and \"Cells\"";
+  else
+    scale << where_ << "/Exodus/\"Coordinate Scale\" = " << scale_
+          << " (0.01 for a mesh in cm, 0.001 in mm)";
+  check_mesh(mesh, type_ == "Box" ? where_ + "/Box" : exodus_file_, scale.str());
   return mesh;
 }
 

@@ -1,8 +1,10 @@
 #include "physics/materials/material.hpp"
 
 #include "base/errors.hpp"
+#include "base/log.hpp"
 #include "base/parameters.hpp"
 
+#include <iomanip>
 #include <sstream>
 
 namespace kiln
@@ -131,5 +133,26 @@ void Material::set_elasticity(const Teuchos::ParameterList &p, const std::string
     youngs_modulus_ = youngs_modulus_of(lambda, G);
     poissons_ratio_ = poissons_ratio_of(lambda, G);
   }
+  warn_if_nearly_incompressible(where, given_E ? poissons_ratio_name : lame_lambda_name,
+                                given_E ? poissons_ratio_ : lame_lambda_);
+}
+
+/// Valid but nearly incompressible (nu > 0.49, lambda > 49 G): the run goes on, so say once
+/// what will happen and what to do.
+void Material::warn_if_nearly_incompressible(const std::string &where, const std::string &name,
+                                             const double value) const
+{
+  if (!(poissons_ratio_ > max_compressible_poissons_ratio))
+    return;
+  std::ostringstream s;
+  s << std::setprecision(12) << where << "/" << quoted(name) << " = " << value
+    << " makes the material nearly incompressible (nu = " << poissons_ratio_
+    << ", lambda/G = " << std::setprecision(3) << lame_lambda_ / shear_modulus_
+    << "): the displacement formulation locks (cells too stiff in bending, the pressure "
+       "oscillates) and the linear solver converges slowly or stops at its iteration limit; "
+       "Kiln has no mixed formulation for such materials: unless the incompressibility "
+       "matters, give \"Poisson's Ratio\" <= "
+    << max_compressible_poissons_ratio << " (metals have about 0.3)";
+  warn_once(s.str());
 }
 } // namespace kiln

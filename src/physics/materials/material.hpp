@@ -52,6 +52,10 @@ private:
     return lambda / (2.0 * (lambda + G));
   }
   void set_elasticity(const Teuchos::ParameterList &p, const std::string &where);
+  /// Above this nu (lambda > 49 G) a valid material is nearly incompressible: warn.
+  static constexpr double max_compressible_poissons_ratio = 0.49;
+  void warn_if_nearly_incompressible(const std::string &where, const std::string &name,
+                                     double value) const;
 
   double density_ = 2.7e3;
   double specific_heat_ = 9.0e2;

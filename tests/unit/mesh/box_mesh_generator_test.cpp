@@ -264,4 +264,36 @@ TEST(BoxMeshGenerator, OddXCountIsRejected)
   EXPECT_THROW(kiln::BoxMeshGenerator(box_parameters({{1, 4, 4}, {1, 1, 1}, 0, 0, {0, 0, 0}}), "w"),
                kiln::InputError);
 }
+
+std::string generator_error(const Teuchos::ParameterList &p)
+{
+  try
+  {
+    kiln::BoxMeshGenerator generator(p, "in.xml: Kiln/Mesh/Box");
+  }
+  catch (const kiln::InputError &e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BoxMeshGenerator, OddXCountSuggestsValidCounts)
+{
+  // One cell along x was told to use "2 or 0"; 0 is not a count.
+  EXPECT_THAT(generator_error(box_parameters({{1, 4, 4}, {1, 1, 1}, 0, 0, {0, 0, 0}})),
+              HasSubstr("the x count is 1 but must be even, so that the plane x = 0 between the "
+                        "two blocks is a cell face; use 2 (one cell on each side)"));
+  EXPECT_THAT(generator_error(box_parameters({{5, 4, 4}, {1, 1, 1}, 0, 0, {0, 0, 0}})),
+              HasSubstr("use 4 or 6"));
+}
+
+TEST(BoxMeshGenerator, CountsBeyondIntAreRejected)
+{
+  // 2000^3 cells: the node numbers overflowed int before the run ran out of memory.
+  EXPECT_THAT(generator_error(box_parameters({{2000, 2000, 2000}, {1, 1, 1}, 0, 0, {0, 0, 0}})),
+              HasSubstr("in.xml: Kiln/Mesh/Box/\"Cells\": {2000, 2000, 2000} gives 8e+09 cells and "
+                        "8.01201e+09 nodes, more than the 2147483647 a Kiln mesh can number"));
+  EXPECT_EQ(generator_error(box_parameters({{1000, 1000, 2000}, {1, 1, 1}, 0, 0, {0, 0, 0}})), "");
+}
 } // namespace

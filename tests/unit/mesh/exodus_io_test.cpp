@@ -10,11 +10,13 @@
 #include <exodusII.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -258,14 +260,22 @@ void write_one_element_file(const std::string &path, const int n_dim, const char
   const int exo = ex_create(path.c_str(), EX_CLOBBER, &comp_ws, &io_ws);
   ASSERT_GE(exo, 0);
   const std::string element_type = type;
-  const int n_nodes = element_type == "TETRA4" ? 4 : element_type == "QUAD4" ? 4 : 8;
+  const int n_nodes = element_type == "TETRA4"  ? 4
+                      : element_type == "QUAD4" ? 4
+                      : element_type == "HEX20" ? 20
+                                                : 8;
   const int n_side_sets = side_set_side < 0 ? 0 : 1;
   ASSERT_GE(ex_put_init(exo, "test", n_dim, n_nodes, 1, 1, 0, n_side_sets), 0);
-  const std::vector<double> x = {0, 1, 1, 0, 0, 1, 1, 0}, y = {0, 0, 1, 1, 0, 0, 1, 1},
-                            z = {0, 0, 0, 0, 1, 1, 1, 1};
+  std::vector<double> x = {0, 1, 1, 0, 0, 1, 1, 0}, y = {0, 0, 1, 1, 0, 0, 1, 1},
+                      z = {0, 0, 0, 0, 1, 1, 1, 1};
+  x.resize(n_nodes, 0.5);
+  y.resize(n_nodes, 0.5);
+  z.resize(n_nodes, 0.5);
   ASSERT_GE(ex_put_coord(exo, x.data(), y.data(), n_dim == 3 ? z.data() : nullptr), 0);
   ASSERT_GE(ex_put_elem_block(exo, block_id, type, 1, n_nodes, 0), 0);
-  const std::vector<int> conn = {1, 2, 3, 4, 5, 6, 7, 8};
+  std::vector<int> conn(n_nodes);
+  for (int i = 0; i < n_nodes; ++i)
+    conn[i] = i + 1;
   ASSERT_GE(ex_put_elem_conn(exo, block_id, conn.data()), 0);
   if (n_side_sets == 1)
   {
@@ -360,5 +370,74 @@ TEST(ExodusIo, WritingIntoMissingFolderNamesThePath)
     EXPECT_THAT(e.what(), HasSubstr(path));
     EXPECT_THAT(e.what(), HasSubstr("cannot create Exodus file"));
   }
+}
+TEST(ExodusIo, HexahedronWithEightNodesIsRead)
+{
+  // Some writers type 8-node hexahedra "HEXAHEDRON"; Kiln refused them as "not HEX8".
+  const TempFile file("hexahedron");
+  for (const char *type : {"HEXAHEDRON", "hexahedron", "HEX8", "HEX"})
+  {
+    write_one_element_file(file.path(), 3, type, 1, 2);
+    const Mesh mesh = kiln::read_exodus_mesh(file.path(), 1.0);
+    EXPECT_EQ(mesh.n_cells(), 1) << type;
+    EXPECT_EQ(mesh.n_nodes(), 8) << type;
+  }
+}
+
+TEST(ExodusIo, HexahedronWithTwentyNodesIsRejected)
+{
+  const TempFile file("hex20");
+  write_one_element_file(file.path(), 3, "HEX20", 2, -1);
+  const std::string message = read_error(file.path());
+  EXPECT_THAT(message, HasSubstr("element block 2 has element type \"HEX20\" with 20 nodes per "
+                                 "element; Kiln supports 8-node hexahedra only"));
+}
+
+TEST(ExodusIo, TruncatedFileIsReportedAsTruncated)
+{
+  // It was reported as a side set holding edges (side 0 read from the missing bytes).
+  std::ifstream in(mesh_dir + "rotated-cube.exo", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const TempFile file("truncated");
+  for (const std::size_t n : {std::size_t(13000), std::size_t(10000), bytes.size() - 1})
+  {
+    std::ofstream(file.path(), std::ios::binary).write(bytes.data(), static_cast<long>(n));
+    const std::string message = read_error(file.path());
+    EXPECT_THAT(message, HasSubstr("the file is truncated")) << n;
+    EXPECT_THAT(message, testing::Not(HasSubstr("side set"))) << n;
+  }
+}
+TEST(ExodusIo, OverlongElementTypeIsRejected)
+{
+  // Found by fuzz_exodus: Exodus copies the type name whole into a 33-byte buffer.
+  const TempFile file("long-type");
+  write_one_element_file(file.path(), 3, "HEX8", 5, -1);
+  // ex_put_elem_block overflows as well with such a name: set it with netCDF.
+  int nc = -1, varid = -1;
+  ASSERT_EQ(nc_open(file.path().c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_redef(nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "connect1", &varid), NC_NOERR);
+  const std::string type = "HEX8" + std::string(201, 'X');
+  ASSERT_EQ(nc_put_att_text(nc, varid, "elem_type", type.size(), type.c_str()), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+  EXPECT_THAT(read_error(file.path()),
+              HasSubstr("element block 5: its element type name is 205 characters long, more "
+                        "than the 32 Exodus II allows; the file is damaged"));
+}
+TEST(ExodusIo, IdGivenTwiceIsRejected)
+{
+  // Exodus finds a side set by its id: with one id twice it reads one side set's data with
+  // the other's count.
+  const TempFile file("twice");
+  kiln::write_exodus_mesh(kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm), file.path());
+  int nc = -1, varid = -1;
+  ASSERT_EQ(nc_open(file.path().c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "ss_prop1", &varid), NC_NOERR);
+  const std::size_t second = 1;
+  const int id = 1;
+  ASSERT_EQ(nc_put_var1_int(nc, varid, &second, &id), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+  EXPECT_THAT(read_error(file.path()),
+              HasSubstr("side set id 1 is given twice; the file is damaged: re-export it"));
 }
 } // namespace

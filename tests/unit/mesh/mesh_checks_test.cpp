@@ -13,6 +13,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -126,5 +127,40 @@ TEST(MeshChecks, SideSetEntryOutOfRangeIsRejected)
 TEST(MeshChecks, EmptyMeshIsRejected)
 {
   EXPECT_THAT(check_error(Mesh{}), HasSubstr("no cells"));
+}
+TEST(MeshChecks, CellsOfTheWrongScaleNameTheParameter)
+{
+  // A tiny Coordinate Scale was reported as an inverted cell (det 0) or crashed later on a
+  // zero-area face; now the cell size and the parameter are named.
+  Mesh mesh = box();
+  for (auto &p : mesh.coordinates)
+    for (double &x : p)
+      x *= 1e-100;
+  try
+  {
+    kiln::check_mesh(mesh, "mesh.exo", "in.xml: Kiln/Mesh/Exodus/\"Coordinate Scale\" = 1e-100");
+    ADD_FAILURE() << "no InputError";
+  }
+  catch (const kiln::InputError &e)
+  {
+    EXPECT_THAT(e.what(), HasSubstr("mesh.exo: cell "));
+    EXPECT_THAT(e.what(), HasSubstr("m across, below 1e-09 m: Kiln takes coordinates in metres"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("check in.xml: Kiln/Mesh/Exodus/\"Coordinate Scale\" = 1e-100"));
+  }
+  Mesh large = box();
+  for (auto &p : large.coordinates)
+    for (double &x : p)
+      x *= 1e9;
+  EXPECT_THAT(check_error(large), HasSubstr("m across, above 1e+06 m"));
+  EXPECT_THAT(check_error(large), HasSubstr("fix the mesh"));
+}
+
+TEST(MeshChecks, NonFiniteNodeIsRejected)
+{
+  Mesh mesh = box();
+  mesh.coordinates[7][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(check_error(mesh), HasSubstr("mesh.exo: node 8 is at ("));
+  EXPECT_THAT(check_error(mesh), HasSubstr("not a finite point"));
 }
 } // namespace
