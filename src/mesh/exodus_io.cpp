@@ -463,6 +463,7 @@ bool exodus_file_in_metres(const std::string &path)
   KILN_CHECK_INPUT(std::ifstream(path).good(), "",
                    "cannot open Exodus file \"" << path
                                                 << "\" (missing or not readable): check the path");
+  check_netcdf_file(path); // a damaged file is named as such before Exodus reads it
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0.0F;
   const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);

@@ -6,7 +6,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 #include <filesystem>
 
 namespace kiln_test
@@ -62,6 +64,21 @@ std::vector<double> read_step(const std::string &h5_path, const std::string &fie
       H5Sclose(space);
       EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
                 0);
+      // Tensors stored in ParaView's order (components "xx,yy,zz,xy,yz,xz") come back in
+      // Kiln's Voigt order xx yy zz xy xz yz, the order of the tests' exact states.
+      if (H5Aexists(dataset, "components") > 0)
+      {
+        const hid_t attribute = H5Aopen(dataset, "components", H5P_DEFAULT);
+        const hid_t type = H5Aget_type(attribute);
+        std::string components(H5Tget_size(type), '\0');
+        H5Aread(attribute, type, components.data());
+        components.resize(std::min(components.size(), components.find('\0')));
+        H5Tclose(type);
+        H5Aclose(attribute);
+        if (components == "xx,yy,zz,xy,yz,xz")
+          for (std::size_t row = 0; 6 * row + 5 < values.size(); ++row)
+            std::swap(values[6 * row + 4], values[6 * row + 5]);
+      }
       H5Dclose(dataset);
     }
   }

@@ -17,7 +17,8 @@ std::string temporary_base(const std::string &name, const Teuchos::Comm<int> &co
 void remove_results(const std::string &base, const Teuchos::Comm<int> &comm);
 
 /// Output step `step` of an HDF5 results file (-1: the last): its time and one node or cell
-/// field (rows in global id order, components interleaved). Serial read on the calling rank;
+/// field (rows in global id order, components interleaved; a symmetric tensor in Kiln's Voigt
+/// order xx yy zz xy xz yz whatever order the file stores). Serial read on the calling rank;
 /// a missing file, step or field is a test failure (and an empty result).
 std::vector<double> read_step(const std::string &h5_path, const std::string &field, int step,
                               double &time);
