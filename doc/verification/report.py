@@ -151,8 +151,9 @@ def derive_deck(source, target, changes, result_base):
 # --- running ---------------------------------------------------------------------------------
 
 class Runner:
-    def __init__(self, build, np_, work):
-        self.build, self.np, self.work = build, np_, work
+    def __init__(self, build, np_, work, reuse=False):
+        self.build, self.np, self.work, self.reuse = build, np_, work, reuse
+        self.reused = {}  # run: the Kiln commit it ran
         self.kiln = build / "src" / "app" / "kiln"
         self.report_tool = build / "tools" / "kiln_contact_box_report"
         self.heat_test = build / "tests" / "unit_heat_convergence"
@@ -182,14 +183,28 @@ class Runner:
         print(f"report.py: {label}: {self.wall[label]:.1f} s", flush=True)
 
     def run_case(self, name, source, changes):
-        """kiln on a deck derived from `source`; returns (deck, results.h5, changes)."""
+        """kiln on a deck derived from `source`; returns (deck, results.h5, changes). With
+        --reuse, a finished run of the same derived deck on as many ranks is used as it is
+        (its wall time and the Kiln commit it ran in run.txt)."""
         folder = self.work / name
-        shutil.rmtree(folder, ignore_errors=True)
-        folder.mkdir(parents=True)
         deck = folder / f"{name}.xml"
         base = folder / "results" / name
+        record = folder / "run.txt"
+        if self.reuse and record.is_file() and deck.is_file():
+            previous = deck.read_text()
+            derive_deck(source, deck, changes, base)
+            run = dict(line.split(" ", 1) for line in record.read_text().splitlines())
+            if deck.read_text() == previous and run.get("np") == str(self.np) and \
+                    base.with_suffix(".h5").is_file():
+                self.wall[name] = float(run["wall"])
+                self.reused[name] = run["commit"]
+                print(f"report.py: {name}: reused (run by Kiln {run['commit']})", flush=True)
+                return deck, base.with_suffix(".h5"), changes
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir(parents=True)
         changes = derive_deck(source, deck, changes, base)
         self.mpi(self.np, [self.kiln, deck], folder / "log.txt", name)
+        record.write_text(f"wall {self.wall[name]}\nnp {self.np}\ncommit {kiln_commit()}\n")
         return deck, base.with_suffix(".h5"), changes
 
     def contact_box_report(self, deck, results, step, folder):
@@ -421,6 +436,12 @@ def time_axis(ax, variant):
     ax.grid(True, which="both", alpha=0.3)
 
 
+def data_ticks(ax, values):
+    """Ticks at the data on a logarithmic x axis, labelled plainly."""
+    ax.set_xticks(values)
+    ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+
+
 def save(fig, path):
     for ax in fig.axes:
         if ax.get_xscale() == "log":  # no labels on the minor ticks (they overlap)
@@ -439,7 +460,7 @@ def plot_temperature(variant, cases, path):
         ax.plot(s["time"], s["T_gap_2"], "--", label="gap, side of block 2 (mean)")
         ax.plot(s["time"], s["T_mean"], ":", color="k", label="whole body (nodal mean)")
         mark_event(ax, case)
-        ax.set_title(case["title"], fontsize=10)
+        ax.set_title(title(case), fontsize=9)
         time_axis(ax, variant)
     axes[0].set_ylabel("temperature [K]")
     axes[0].legend(fontsize=8)
@@ -447,11 +468,15 @@ def plot_temperature(variant, cases, path):
 
 
 def mark_event(ax, case):
+    """The gap event as a red dashed line (its time is in the title)."""
     if case.get("event") is not None:
         ax.axvline(case["event"], color="r", lw=0.8, ls="--")
-        ymin, ymax = ax.get_ylim()
-        ax.text(case["event"], ymin + 0.03 * (ymax - ymin),
-                f" gap {case['event_word']} at {case['event']:.2f} s", color="r", fontsize=8)
+
+
+def title(case):
+    if case.get("event") is None:
+        return case["title"] + ": no gap event"
+    return f"{case['title']}: gap {case['event_word']} at {case['event']:.2f} s (red)"
 
 
 def plot_gap(variant, cases, path):
@@ -463,7 +488,7 @@ def plot_gap(variant, cases, path):
                         alpha=0.3, label="min .. max over the gap nodes")
         ax.plot(s["time"], s["traction"] / 1e6, label="mean over the gap nodes")
         ax.set_ylabel("gap normal traction [MPa]")
-        ax.set_title(case["title"], fontsize=10)
+        ax.set_title(title(case), fontsize=9)
         time_axis(ax, variant)
         mark_event(ax, case)
         ax = axes[1, column]
@@ -486,7 +511,7 @@ def plot_gap(variant, cases, path):
 
 
 def plot_stress(variant, cases, path):
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, case in zip(axes, cases):
         s = case["series"]
         for k, component in enumerate(TENSOR_COMPONENTS):
@@ -497,9 +522,10 @@ def plot_stress(variant, cases, path):
                     ax.plot([table["time"]], [exact["exact"] / 1e6], "o", mfc="none",
                             color=line.get_color(), ms=7)
         mark_event(ax, case)
-        ax.set_title(case["title"], fontsize=10)
+        ax.set_title(title(case), fontsize=9)
         time_axis(ax, variant)
-    axes[0].set_ylabel("stress, mean over the cells [MPa]")
+    for ax in axes:
+        ax.set_ylabel("stress, mean over the cells [MPa]")
     axes[0].legend(fontsize=8, ncol=2, title="mesh frame; o: analytic uniform state",
                    title_fontsize=8)
     save(fig, path)
@@ -509,7 +535,7 @@ def plot_closing(refinement, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     ax = axes[0]
     for r in refinement:
-        window = (r["times"] >= 44.9) & (r["times"] <= 56.1)
+        window = (r["times"] >= 49.9) & (r["times"] <= 52.1)
         ax.plot(r["times"][window], r["opening"][window] * 1e6, ".-", ms=3,
                 label=f"{r['n']}^3 cells: {r['event']:.3f} s")
         ax.axvline(r["event"], color=ax.lines[-1].get_color(), lw=0.6, ls="--")
@@ -533,6 +559,7 @@ def plot_closing(refinement, path):
                          fontsize=10)
         ax.legend(fontsize=8)
     ax.set_xlabel("cell size h [mm]")
+    data_ticks(ax, h[1:] * 1e3)
     ax.set_ylabel("difference [s]")
     ax.grid(True, which="both", alpha=0.3)
     save(fig, path)
@@ -546,6 +573,7 @@ def plot_heat(heat, path):
         slope, last = fitted_order(heat["space"])
         ax.loglog(h, e, "o-", label=f"BDF2, L2 error: fitted order {slope:.2f}")
         ax.loglog(h, e[-1] * (np.array(h) / h[-1]) ** 2, ":", color="gray", label="order 2")
+        data_ticks(ax, h)
         ax.legend(fontsize=8)
     else:
         ax.text(0.5, 0.5, "not run (--quick)", ha="center", transform=ax.transAxes)
@@ -561,6 +589,7 @@ def plot_heat(heat, path):
             line, = ax.loglog(dt, e, "o-", label=f"{method}: fitted order {slope:.2f}")
             ax.loglog(dt, e[-1] * (np.array(dt) / dt[-1]) ** order, ":",
                       color=line.get_color(), lw=0.8, label=f"order {order}")
+            data_ticks(ax, dt)
     ax.set_xlabel("time step dt [s]")
     ax.set_ylabel("max nodal error at t = 0.1 s [K]")
     ax.set_title("time: error against the semi-discrete solution (8 x 2 x 2)", fontsize=10)
@@ -608,6 +637,14 @@ def spec_errors(spec):
     return m.group(1).strip()
 
 
+def shown(path):
+    """A path as the report shows it: relative to the checkout when inside it."""
+    try:
+        return str(Path(path).relative_to(SOURCE))
+    except ValueError:
+        return str(path)
+
+
 def kiln_commit():
     try:
         commit = subprocess.run(["git", "-C", str(SOURCE), "rev-parse", "--short=10", "HEAD"],
@@ -643,12 +680,21 @@ def summary_table(cases):
     return "\n".join(lines)
 
 
+def time_steps(log, until):
+    """The (time, step size) of every accepted step in a kiln log, to `until` [s]."""
+    steps = re.findall(r"^step \d+: t = (\S+) s, dt = (\S+) s", Path(log).read_text(), re.M)
+    return [s for s in steps if float(s[0]) <= until]
+
+
 def write_report(out, args, cases, refinement, heat, runner, spec, started, elapsed):
+    same_steps = len({tuple(r["steps"]) for r in refinement}) == 1
     command = "doc/verification/report.py " + " ".join(
         shlex.quote(a) for a in sys.argv[1:])
+    version = subprocess.run([str(runner.kiln), "--version"], capture_output=True,
+                             text=True).stdout.strip()
     md = [f"# Verification report: the contact box{' (--quick)' if args.quick else ''}", "",
           f"Generated by `{command}` on {started:%Y-%m-%d %H:%M} from Kiln commit "
-          f"{kiln_commit()} ({subprocess.run([str(runner.kiln), '--version'], capture_output=True, text=True).stdout.strip()}),"
+          f"{kiln_commit()} ({version}),"
           f" kiln on {args.np} MPI rank{'s' if args.np > 1 else ''}; "
           f"{elapsed / 60:.1f} min in all. Do not edit: rerun the command.", "",
           "The reference problem and its analytic uniform states: "
@@ -656,7 +702,10 @@ def write_report(out, args, cases, refinement, heat, runner, spec, started, elap
           "The decks are those of `inputs/` with denser output times (Kiln's time stepper "
           "lands on every output time, so the steps are at most as long as the output "
           "intervals); the derived decks and the results are in the work folder "
-          f"(`{args.work}`)."]
+          f"(`{shown(args.work)}`)."]
+    if runner.reused:
+        md += ["", "**Reused runs** (`--reuse`): " + ", ".join(
+            f"{name} (Kiln {commit})" for name, commit in runner.reused.items()) + "."]
     if args.quick:
         md += ["", "**Quick mode** (for the test): coarser output times, the refinement on "
                "4^3 and 8^3 cells only, the temporal heat tests only."]
@@ -706,29 +755,44 @@ def write_report(out, args, cases, refinement, heat, runner, spec, started, elap
            "The closing deck (variant A) on n^3 cells (`Mesh/Box/\"Cells\"`), run to 56 s with "
            "the output times of variant A (every second, every 0.25 s from 45 s): the "
            "closing time is where the largest gap opening reaches zero (linear extrapolation "
-           "from the two last outputs with an open gap). The time steps are the same on "
-           "every mesh (at most the output intervals), so the differences are those of the "
-           "spatial discretization.", "",
+           "from the two last outputs with an open gap). " + (
+               "The time steps to 56 s are the same on every mesh (kiln's logs), so the "
+               "differences are those of the spatial discretization." if same_steps else
+               "**The time steps differ between the meshes** (kiln's logs): the differences "
+               "mix spatial and temporal errors."), "",
            "| cells | h [mm] | closing time [s] | difference to the coarser [s] | ratio | "
-           "observed order | wall time [s] |", "|---|---:|---:|---:|---:|---:|---:|"]
-    previous_difference = None
+           "observed order | largest opening at 50 s [m] | its ratio | wall time [s] |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+
+    def convergence(values):
+        """Differences to the coarser mesh, their ratios and the observed orders."""
+        differences = [None] + [b - a for a, b in zip(values, values[1:])]
+        ratios = [None, None] + [a / b if b else None
+                                 for a, b in zip(differences[1:], differences[2:])]
+        orders = [math.log2(abs(r)) if r else None for r in ratios]
+        return differences, ratios, orders
+
+    def cell(value, form):
+        return "" if value is None else format(value, form)
+    differences, ratios, orders = convergence([r["event"] for r in refinement])
+    opening_ratios = convergence([r["opening_50"] for r in refinement])[1]
     for k, r in enumerate(refinement):
-        difference = r["event"] - refinement[k - 1]["event"] if k else None
-        ratio = order = None
-        if difference is not None and previous_difference:
-            ratio = previous_difference / difference
-            order = math.log2(abs(ratio)) if ratio else None
         md.append(f"| {r['n']}^3 | {r['h'] * 1e3:g} | {r['event']:.4f} | "
-                  f"{'' if difference is None else f'{difference:+.4f}'} | "
-                  f"{'' if ratio is None else f'{ratio:.2f}'} | "
-                  f"{'' if order is None else f'{order:.2f}'} | {r['wall']:.0f} |")
-        previous_difference = difference
+                  f"{cell(differences[k], '+.4f')} | {cell(ratios[k], '.2f')} | "
+                  f"{cell(orders[k], '.2f')} | {r['opening_50']:.5e} | "
+                  f"{cell(opening_ratios[k], '.2f')} | {r['wall']:.0f} |")
     if len(refinement) >= 3:
+        steps = [abs(d) for d in differences[1:]]
+        fitted = np.polyfit(np.log([r["h"] for r in refinement[1:]]), np.log(steps), 1)[0]
         a, b, c = (r["event"] for r in refinement[-3:])
-        p = math.log2(abs((b - a) / (c - b))) if c != b and b != a else float("nan")
-        extrapolated = c + (c - b) / (2 ** p - 1) if p == p and p > 0 else float("nan")
-        md += ["", f"Observed order of the last three meshes {p:.2f}; Richardson "
-               f"extrapolation of the closing time: {extrapolated:.4f} s."]
+        p = orders[-1]
+        extrapolated = c + (c - b) / (2 ** p - 1) if p and p > 0 else float("nan")
+        md += ["", f"Fitted order of the differences: {fitted:.2f}; observed order of the "
+               f"last three meshes {p:.2f}; Richardson extrapolation of the closing time with "
+               f"it: {extrapolated:.4f} s (with order 2: {c + (c - b) / 3:.4f} s). The gap "
+               "closes pair by pair over about its last half second; compare the ratios of "
+               "the closing time with those of the largest opening at 50 s, before the "
+               "first pair touches."]
     md += ["", "![closing time under refinement](closing-time.png)", ""]
 
     md += ["## Heat conduction: convergence order", "",
@@ -771,6 +835,10 @@ def main():
                         "doc/verification/, with --quick BUILD/verification-quick/)")
     parser.add_argument("--work", type=Path, help="the runs' folder (default "
                         "BUILD/verification-work, with --quick BUILD/verification-quick/work)")
+    parser.add_argument("--reuse", action="store_true",
+                        help="reuse the finished kiln runs of the work folder whose derived "
+                        "deck is unchanged (to remake the plots and tables; the report "
+                        "names them)")
     parser.add_argument("--spec", type=Path,
                         default=SOURCE.parent / "shared" / "spec" / "contact-box.md",
                         help="the contact-box spec (default ../shared/spec/contact-box.md)")
@@ -798,7 +866,7 @@ def report(args):
         raise ReportError(f"{args.spec}: no such file (the spec of the contact box; --spec)")
     args.out.mkdir(parents=True, exist_ok=True)
     args.work.mkdir(parents=True, exist_ok=True)
-    runner = Runner(args.build, args.np, args.work)
+    runner = Runner(args.build, args.np, args.work, args.reuse)
 
     cases = []
     for key, variant, deck_name, title, event_word in CASES:
@@ -835,12 +903,14 @@ def report(args):
                 [("Output", "Times", "Array(double)", array_text(times)),
                  ("Mesh/Box", "Cells", "Array(int)", f"{{{n}, {n}, {n}}}")])
             wall = runner.wall[f"A-close-{n}"]
+        steps = time_steps(results.parent.parent / "log.txt", 56)
         times, largest, _ = gap_series(results)
         event, _ = gap_event_time(times, largest, closing=True)
         if event is None:
             raise ReportError(f"{results}: the gap does not close before 56 s on {n}^3 cells")
         refinement.append({"n": n, "h": 0.04 / n, "times": times, "opening": largest,
-                           "event": event, "wall": wall})
+                           "event": event, "wall": wall, "steps": steps,
+                           "opening_50": float(largest[np.argmin(np.abs(times - 50))])})
 
     heat = parse_heat(runner.heat_convergence(args.quick))
     if not heat["Backward Euler"] or not heat["BDF2"] or (not args.quick and not heat["space"]):
