@@ -16,6 +16,8 @@ packages=(
   clang-format
   # tools/kiln-diff and the gold-file regression tests:
   python3-h5py python3-numpy
+  # the verification report (doc/verification/report.py):
+  python3-matplotlib
 )
 
 missing=()
