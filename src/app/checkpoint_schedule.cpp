@@ -17,8 +17,8 @@ Teuchos::ParameterList CheckpointSchedule::valid_parameters()
   p.set("Every Steps", 0, "a checkpoint every this many accepted steps; 0: none [count]",
         nonnegative_int_validator());
   p.set("At End", true,
-        "a checkpoint when the run reaches its last output time [-]. A run stopped by SIGTERM "
-        "or SIGINT, or by an error, always writes one of its last good state");
+        "a checkpoint when the run reaches its last output time [-]. A run stopped by SIGTERM, "
+        "SIGINT or SIGUSR1, or by an error, always writes one of its last good state");
   p.set("File Base", "",
         "path of the checkpoints without extension: BASE-NNNNNN.h5 after NNNNNN accepted "
         "steps, and BASE.h5 the latest; the default \"\" means <Output File Base>.checkpoint. "

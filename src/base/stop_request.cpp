@@ -22,6 +22,7 @@ void install_stop_handlers()
 {
   std::signal(SIGTERM, note_stop);
   std::signal(SIGINT, note_stop);
+  std::signal(SIGUSR1, note_stop);
 }
 
 int stop_signal()
@@ -39,9 +40,10 @@ int stop_signal(const Teuchos::Comm<int> &comm)
 
 std::string signal_name(const int signal)
 {
-  return signal == SIGTERM  ? "SIGTERM"
-         : signal == SIGINT ? "SIGINT"
-                            : "signal " + std::to_string(signal);
+  return signal == SIGTERM   ? "SIGTERM"
+         : signal == SIGINT  ? "SIGINT"
+         : signal == SIGUSR1 ? "SIGUSR1"
+                             : "signal " + std::to_string(signal);
 }
 
 void set_stop_signal(const int signal)

@@ -307,13 +307,18 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                          "\"File Base\")");
 }
 
-Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map> &map,
-                           const Teuchos::Comm<int> &comm)
+Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
+                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm)
 {
   using namespace internal;
   Checkpoint c;
-  std::string error;
+  std::string error, difference;
   std::vector<double> x, x_1, x_2;
+  // The failures below become one message; HDF5's own error stack stays quiet.
+  H5E_auto2_t old_function = nullptr;
+  void *old_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try
   {
     if (!std::filesystem::is_regular_file(path))
@@ -345,6 +350,9 @@ Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map
     for (int i = 0; i < n_physics; ++i)
       f.physics.emplace_back(read_string(print, "physics_name_" + std::to_string(i), true),
                              read_string(print, "physics_" + std::to_string(i), false));
+    difference = run.difference(f);
+    if (!difference.empty())
+      throw std::runtime_error("another run's");
 
     const H5 s(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "group state");
     TimeStepper::State &state = c.state;
@@ -377,6 +385,10 @@ Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map
   {
     error = e.what();
   }
+  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
+  check_collectively(comm, difference.empty(), path,
+                     "cannot continue this run from the checkpoint: " + difference +
+                         " (the checkpoint was written by " + c.info.input_path + ")");
   check_collectively(comm, error.empty(), path,
                      "cannot read the checkpoint: " + error +
                          ". Give a checkpoint written by Kiln/Checkpoint (a file NAME-NNNNNN.h5 "

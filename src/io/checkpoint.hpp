@@ -65,11 +65,12 @@ struct Checkpoint
   RunFingerprint fingerprint;
 };
 
-/// Reads a checkpoint; the unknowns land on `map` (any number of ranks). Throws InputError
-/// naming `path` for a missing, damaged (truncated) or foreign file, another format
-/// version, or unknowns that do not fit `map`. Collective.
-Checkpoint read_checkpoint(const std::string &path, const Teuchos::RCP<const Map> &map,
-                           const Teuchos::Comm<int> &comm);
+/// Reads a checkpoint of a run with the fingerprint `run`; the unknowns land on `map` (any
+/// number of ranks). Throws InputError naming `path` for a missing, damaged (truncated) or
+/// foreign file, another format version, or a checkpoint of another run (what differs, from
+/// RunFingerprint::difference). Collective.
+Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
+                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm);
 
 /// The version of the checkpoint format this Kiln writes and reads.
 inline constexpr int checkpoint_format_version = 1;
