@@ -21,7 +21,9 @@ std::string file_name_of(const std::string &path)
 }
 } // namespace
 
-/// Scalar, Vector (x y z), Tensor6 (xx yy zz xy yz xz, as ParaView labels it) or Matrix.
+/// Scalar, Vector (x y z) or Matrix. A symmetric tensor is a Matrix, not an XDMF Tensor6
+/// (whose order xx xy xz yy yz zz readers would permute): ParaView labels its 6 columns
+/// XX YY ZZ XY YZ XZ, the order Kiln writes (tensor_components()).
 const char *attribute_type(const FieldSpec &f)
 {
   const FieldDescription *known = describe_field(f.name);
@@ -30,8 +32,6 @@ const char *attribute_type(const FieldSpec &f)
     return "Scalar";
   if (f.n_components == 3 && (known == nullptr || known->components == xyz))
     return "Vector";
-  if (f.n_components == 6 && (known == nullptr || known->components == tensor_components()))
-    return "Tensor6";
   return "Matrix";
 }
 
