@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <string>
 #include <filesystem>
+#include <string>
 
 namespace kiln_test
 {

@@ -19,22 +19,41 @@ double pressure(const Voigt &s)
 
 std::array<double, 3> principal_values(const Voigt &s)
 {
-  // The trigonometric solution of the characteristic cubic of the deviator (Smith 1961):
-  // eig = m + 2 sqrt(J2/3) cos(theta + 2 pi k/3), cos(3 theta) = (J3/2) (3/J2)^(3/2).
-  const double m = (s[0] + s[1] + s[2]) / 3.0;
-  const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
-  const double xy = s[3], xz = s[4], yz = s[5];
-  const double J2 = 0.5 * (a * a + b * b + c * c) + xy * xy + xz * xz + yz * yz;
-  if (J2 <= 1e-30 * (m * m + 1e-300))
-    return {m, m, m};
-  const double J3 = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
-  const double r = std::clamp(0.5 * J3 * std::pow(3.0 / J2, 1.5), -1.0, 1.0);
-  const double theta = std::acos(r) / 3.0;
-  const double radius = 2.0 * std::sqrt(J2 / 3.0);
-  const double pi = std::acos(-1.0);
-  std::array<double, 3> e = {m + radius * std::cos(theta),
-                             m + radius * std::cos(theta - 2.0 * pi / 3.0),
-                             m + radius * std::cos(theta + 2.0 * pi / 3.0)};
+  // Cyclic Jacobi rotations: accurate to round-off of the largest eigenvalue even where two
+  // coincide (the trigonometric closed form loses half the digits there: a rank-one stress
+  // of 1.5e7 Pa gave its zero eigenvalues as +-0.06 Pa).
+  double a[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
+  for (int sweep = 0; sweep < 50; ++sweep)
+  {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if (off <= 1e-36 * diag || off == 0.0)
+      break;
+    for (int p = 0; p < 2; ++p)
+      for (int q = p + 1; q < 3; ++q)
+      {
+        if (a[p][q] == 0.0)
+          continue;
+        // The rotation in the (p, q) plane that zeroes a[p][q].
+        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+        const double t =
+            (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - sn * akq;
+          a[k][q] = sn * akp + c * akq;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - sn * aqk;
+          a[q][k] = sn * apk + c * aqk;
+        }
+      }
+  }
+  std::array<double, 3> e = {a[0][0], a[1][1], a[2][2]};
   std::sort(e.begin(), e.end(), std::greater<>());
   return e;
 }

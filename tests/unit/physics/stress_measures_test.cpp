@@ -53,9 +53,15 @@ TEST(StressMeasures, InvariantUnderRotation)
   const kiln::Voigt diagonal = {d[0], d[1], d[2], 0, 0, 0};
   EXPECT_NEAR(kiln::von_mises(s), kiln::von_mises(diagonal), 1e-9 * 2.3e7);
   EXPECT_NEAR(kiln::pressure(s), kiln::pressure(diagonal), 1e-9 * 2.3e7);
-  // Two equal values (the contact box's closed state: sigma' xx = sigma' zz in the block frame).
+  // Two equal values (the contact box's closed state: sigma' xx = sigma' zz in the block frame)
+  // to round-off, not to the square root of it.
   const auto q = kiln::principal_values(rotated({-5.0, -5.0, 2.0}, 30.0, 10.0));
-  EXPECT_NEAR(q[0], 2.0, 1e-12);
-  EXPECT_NEAR(q[1], -5.0, 1e-7);
-  EXPECT_NEAR(q[2], -5.0, 1e-7);
+  EXPECT_NEAR(q[0], 2.0, 1e-14);
+  EXPECT_NEAR(q[1], -5.0, 1e-14);
+  EXPECT_NEAR(q[2], -5.0, 1e-14);
+  // A rank-one stress (the contact box at t = 0): its zero eigenvalues to 1e-15 of the other.
+  const auto r = kiln::principal_values(rotated({1.5253e7, 0.0, 0.0}, 45.0, -30.0));
+  EXPECT_NEAR(r[0], 1.5253e7, 1e-8);
+  EXPECT_NEAR(r[1], 0.0, 1e-7);
+  EXPECT_NEAR(r[2], 0.0, 1e-7);
 }
