@@ -68,13 +68,13 @@ std::vector<double> read_step(const std::string &h5_path, const std::string &fie
       // Kiln's Voigt order xx yy zz xy xz yz, the order of the tests' exact states.
       if (H5Aexists(dataset, "components") > 0)
       {
-        const hid_t attribute = H5Aopen(dataset, "components", H5P_DEFAULT);
-        const hid_t type = H5Aget_type(attribute);
+        const hid_t components_attribute = H5Aopen(dataset, "components", H5P_DEFAULT);
+        const hid_t type = H5Aget_type(components_attribute);
         std::string components(H5Tget_size(type), '\0');
-        H5Aread(attribute, type, components.data());
+        H5Aread(components_attribute, type, components.data());
         components.resize(std::min(components.size(), components.find('\0')));
         H5Tclose(type);
-        H5Aclose(attribute);
+        H5Aclose(components_attribute);
         if (components == "xx,yy,zz,xy,yz,xz")
           for (std::size_t row = 0; 6 * row + 5 < values.size(); ++row)
             std::swap(values[6 * row + 4], values[6 * row + 5]);

@@ -64,7 +64,7 @@ struct Fixture
     {
       *x = Teuchos::rcp(new Tpetra::Vector<>(map));
       auto v = (*x)->getDataNonConst();
-      for (std::size_t i = 0; i < v.size(); ++i)
+      for (Teuchos::ArrayRCP<double>::size_type i = 0; i < v.size(); ++i)
         v[i] = std::sin(1.0 + static_cast<double>(map->getGlobalElement(i))) * (x == &s.x ? 1 : 2);
     }
     return s;

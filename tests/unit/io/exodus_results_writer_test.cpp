@@ -428,7 +428,9 @@ TEST(ExodusResultsWriter, SplitBoxReadBackWithTheExodusLibrary)
     EXPECT_EQ(writer.exo_path(), base + ".exo");
   }
   if (rank_of(comm) == 0)
+  {
     EXPECT_FALSE(std::filesystem::exists(base + ".running.exo"));
+  }
   MPI_Barrier(comm);
   if (rank_of(comm) == 0)
   {
