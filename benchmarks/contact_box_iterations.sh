@@ -35,8 +35,8 @@ for n in ${cells[@]}; do
   log=$(mpirun --oversubscribe -np "$np" "$kiln" "$deck")
   end=$(date +%s.%N)
   unknowns=$(grep -o 'unknowns: [0-9]*' <<< "$log" | grep -o '[0-9]*')
-  newton=$(grep -o '[0-9]* Newton and' <<< "$log" | grep -o '[0-9]*')
-  linear=$(grep -o '[0-9]* linear iterations' <<< "$log" | grep -o '[0-9]*')
+  newton=$(grep -o '^Newton iterations: [0-9]*' <<< "$log" | grep -o '[0-9]*')
+  linear=$(grep -o '^linear iterations: [0-9]*' <<< "$log" | grep -o '[0-9]*')
   printf "%8s %10s %7s %7s %12.2f %8.2f\n" "$n^3" "$unknowns" "$newton" "$linear" \
     "$(echo "$linear / $newton" | bc -l)" "$(echo "$end - $start" | bc -l)"
 done

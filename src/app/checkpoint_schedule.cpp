@@ -13,7 +13,8 @@ Teuchos::ParameterList CheckpointSchedule::valid_parameters()
 {
   Teuchos::ParameterList p("Checkpoint");
   p.set("Times", Teuchos::Array<double>(),
-        "times at which a checkpoint is written, increasing, >= 0 (the steps land on them) [s]");
+        "times at which a checkpoint is written, increasing, >= 0, at most the end of the run "
+        "(the last output time); the steps land on them [s]");
   p.set("Every Steps", 0, "a checkpoint every this many accepted steps; 0: none [count]",
         nonnegative_int_validator());
   p.set("At End", true,

@@ -22,6 +22,8 @@ std::string usage()
          "  --restart FILE.h5 continue the run from this checkpoint (Kiln/Checkpoint); the\n"
          "                    input may change the time stepping, solver, output and\n"
          "                    checkpoints, not the problem\n"
+         "  --timers          print the table of the Trilinos timers (Kiln's phases, NOX,\n"
+         "                    Belos, MueLu) at the end of a run or a check\n"
          "\n"
          "SIGTERM, SIGINT (Ctrl-C) or SIGUSR1 stop a run after its current step with a\n"
          "checkpoint; a second one ends it at once. Under mpirun send SIGUSR1 (mpirun passes\n"
@@ -79,6 +81,8 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
                                                       "once"
                                                    << hint);
     }
+    else if (a == "--timers")
+      cl.timers = true;
     else if (a == "--restart")
     {
       KILN_CHECK_INPUT(cl.restart.empty(), "command line",
@@ -102,6 +106,12 @@ CommandLine parse_command_line(const std::vector<std::string> &args)
                    "no input file given; usage: kiln [options] INPUT.xml" << hint);
   KILN_CHECK_INPUT(needs_input || cl.input.empty(), "command line",
                    "an input file is not used with this option" << hint);
+  KILN_CHECK_INPUT(!cl.timers || cl.mode == CommandLine::Mode::run ||
+                       cl.mode == CommandLine::Mode::check,
+                   "command line",
+                   "--timers prints the timers of a run or a check; it cannot be combined with "
+                   "this mode"
+                       << hint);
   KILN_CHECK_INPUT(cl.restart.empty() || cl.mode == CommandLine::Mode::run, "command line",
                    "--restart continues a run; it cannot be combined with another mode" << hint);
   return cl;

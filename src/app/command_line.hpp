@@ -21,6 +21,7 @@ struct CommandLine
   std::string mesh_file;   ///< --mesh FILE: an Exodus file that replaces the input's mesh
   std::string mesh_output; ///< --write-mesh OUT.exo
   std::string restart;     ///< --restart CHECKPOINT.h5
+  bool timers = false;     ///< --timers: print the Trilinos timer table at the end
 };
 
 /// Parses the arguments after the program name; throws InputError for a bad

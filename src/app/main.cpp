@@ -1,5 +1,6 @@
 // kiln: the command-line driver. See kiln --help.
 #include "app/command_line.hpp"
+#include "app/print_parameters.hpp"
 #include "app/simulation.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
@@ -31,33 +32,33 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
     *out << "kiln " << kiln::version_string << "\n";
     return 0;
   case Mode::print_parameters:
-    kiln::Simulation::valid_parameters().print(
-        *out, Teuchos::ParameterList::PrintOptions().showDoc(true).showTypes(true).indent(2));
+    kiln::print_parameters(kiln::Simulation::valid_parameters(), *out);
     return 0;
   default:
     break;
   }
   kiln::Simulation simulation(kiln::read_input(cl.input, *comm), cl.input, comm, cl.mesh_file);
-  if (cl.mode == Mode::check)
-  {
-    simulation.setup();
-    *out << cl.input << ": input and mesh are valid\n";
-  }
-  else if (cl.mode == Mode::write_mesh)
+  if (cl.mode == Mode::write_mesh)
   {
     simulation.write_mesh(cl.mesh_output);
-    return 0; // no phase of a run is timed: no timer table
+    return 0;
+  }
+  int status = 0;
+  if (cl.mode == Mode::check)
+  {
+    simulation.check();
+    *out << cl.input << ": input and mesh are valid\n";
   }
   else
   {
     simulation.set_restart(cl.restart);
     kiln::install_stop_handlers();
-    const kiln::Simulation::Ending ending = simulation.run();
-    Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
-    return ending == kiln::Simulation::Ending::finished ? 0 : 3;
+    status = simulation.run() == kiln::Simulation::Ending::finished ? 0 : 3;
   }
-  Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
-  return 0;
+  // The table only when asked for: the run's summary has the figures a user needs.
+  if (cl.timers)
+    Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
+  return status;
 }
 
 /// Run by hand (not by mpirun), `kiln --version` and `kiln --help` answer before MPI
@@ -96,6 +97,7 @@ int main(int argc, char **argv)
   }
   catch (const kiln::InputError &e)
   {
+    kiln::end_status_line();
     // Input errors are raised alike on every rank: report once, exit 1 everywhere.
     if (comm->getRank() == 0)
       std::cerr << "kiln: error: " << e.what() << "\n";
@@ -103,6 +105,7 @@ int main(int argc, char **argv)
   }
   catch (const kiln::RunError &e)
   {
+    kiln::end_status_line();
     // Also raised alike on every rank (decided on reduced quantities).
     if (comm->getRank() == 0)
       std::cerr << "kiln: error: " << e.what() << "\n";

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 
 namespace kiln
 {
@@ -35,22 +36,57 @@ RunObserver::RunObserver(Context context, const int output_steps)
 {
 }
 
-bool RunObserver::is_output_time(const double t) const
+void RunObserver::start(const TimeStepper::State &state, const bool fresh)
 {
-  return std::any_of(c_.output_times.begin(), c_.output_times.end(),
-                     [t](const double o) { return internal::same_time(o, t); });
+  const StateSummary summary = c_.problem.summary(*state.x);
+  c_.progress.start(summary);
+  if (fresh)
+    record(state, NewtonSolver::Result{}, summary);
 }
 
-void RunObserver::step_accepted(const TimeStepper::State &state, const NewtonSolver::Result &,
-                                double)
+void RunObserver::record(const TimeStepper::State &state, const NewtonSolver::Result &newton,
+                         const StateSummary &s)
 {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool temperature = c_.layout.temperature;
+  const bool displacement = c_.layout.displacement;
+  const bool contact = s.n_pairs > 0;
+  const std::vector<double> row = {static_cast<double>(state.statistics.steps),
+                                   state.time,
+                                   state.statistics.steps > 0 ? state.last_step : 0.0,
+                                   static_cast<double>(newton.newton_iterations),
+                                   static_cast<double>(newton.linear_iterations),
+                                   temperature ? s.T_min : nan,
+                                   temperature ? s.T_max : nan,
+                                   temperature ? s.T_mean : nan,
+                                   temperature ? s.thermal_energy : nan,
+                                   displacement ? s.max_displacement : nan,
+                                   contact ? s.min_opening : nan,
+                                   contact ? s.max_opening : nan,
+                                   static_cast<double>(s.n_active),
+                                   contact ? s.contact_area : nan,
+                                   contact ? s.normal_force : nan,
+                                   c_.progress.wall_time()};
+  c_.history.append(row);
+  for (const auto &writer : c_.writers)
+    writer->write_history(row);
+}
+
+void RunObserver::step_accepted(const TimeStepper::State &state, const NewtonSolver::Result &newton,
+                                const double error)
+{
+  const StateSummary summary = c_.problem.summary(*state.x);
+  record(state, newton, summary);
+  c_.progress.step(state, newton, error, summary);
+  if (c_.outputs.due_after_step(state.statistics.steps))
+    output(state);
   if (c_.checkpoints.due_after_step(state.statistics.steps))
     checkpoint(state);
 }
 
 void RunObserver::stop_time(const TimeStepper::State &state)
 {
-  if (is_output_time(state.time))
+  if (c_.outputs.due_at_time(state.time))
     output(state);
   const auto &times = c_.checkpoints.times();
   if (std::any_of(times.begin(), times.end(),
@@ -73,7 +109,8 @@ void RunObserver::output(const TimeStepper::State &state)
     c_.field_output.write(*writer, state.time, state.statistics.steps, state.last_step, *state.x);
   ++output_steps_;
   last_output_ = state.time;
-  *c_.out << "output: t = " << state.time << " s written to " << c_.output_files << "\n";
+  *c_.out << "output: t = " << state.time << " s written to " << c_.outputs.results_files(false)
+          << "\n";
 }
 
 std::string RunObserver::checkpoint(const TimeStepper::State &state)
@@ -107,6 +144,7 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
       std::filesystem::rename(tmp, latest, e);
   }
   last_checkpoint_ = state.statistics.steps;
+  last_checkpoint_path_ = path;
   *c_.out << "checkpoint: t = " << state.time << " s (step " << state.statistics.steps
           << ") written to " << path << "\n";
   return path;

@@ -1,6 +1,9 @@
 #include "app/simulation.hpp"
 
 #include "app/checkpoint_schedule.hpp"
+#include "app/output_schedule.hpp"
+#include "app/progress_report.hpp"
+#include "app/results_lock.hpp"
 #include "app/run_observer.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
@@ -9,7 +12,9 @@
 #include "io/checkpoint.hpp"
 #include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
+#include "io/gap_csv_writer.hpp"
 #include "io/hdf5_xdmf_writer.hpp"
+#include "io/history_csv.hpp"
 #include "io/results_replay.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gap_splitter.hpp"
@@ -38,25 +43,6 @@
 
 namespace kiln
 {
-namespace internal
-{
-Teuchos::ParameterList output_parameters()
-{
-  Teuchos::ParameterList p("Output");
-  p.set("File Base", "",
-        "path of the results without extension: FILE.h5 and FILE.xmf, or FILE.exo, are "
-        "written (see Format); the default \"\" means results/<input file name without .xml>");
-  p.set("Format", "HDF5",
-        "\"HDF5\": FILE.h5 with FILE.xmf for ParaView; \"Exodus\": FILE.exo (Exodus II, named "
-        "variables, blocks, side sets and node sets; written by rank 0); \"HDF5 and Exodus\": "
-        "both (doc/output-format.md)",
-        choice_validator({"HDF5", "Exodus", "HDF5 and Exodus"}));
-  p.set("Times", Teuchos::Array<double>(1, 0.0),
-        "output times, increasing, >= 0 [s]: the state at each is written; the run starts at "
-        "t = 0 and ends at the last");
-  return p;
-}
-} // namespace internal
 
 Teuchos::ParameterList Simulation::valid_parameters()
 {
@@ -68,9 +54,12 @@ Teuchos::ParameterList Simulation::valid_parameters()
         "Thermal and Mechanics) or \"Elasticity\" (displacement at T = Reference "
         "Temperature; block Mechanics)",
         choice_validator({"Heat Conduction", "Thermo-Elasticity", "Elasticity"}));
-  p.sublist("Mesh", false, "the mesh; see MeshFactory")
+  p.sublist(
+       "Mesh", false,
+       "the mesh: a generated box or an Exodus II file, the gap, the partition; see doc/mesh.md")
       .setParameters(MeshFactory::valid_parameters());
-  p.sublist("Material", false, "material properties; see Material")
+  p.sublist("Material", false,
+            "material properties (one material); see doc/heat.md and doc/mechanics.md")
       .setParameters(Material::valid_parameters());
   p.sublist("Thermal", false,
             "heat conduction: initial state, boundary conditions, gap conductance; see "
@@ -80,12 +69,15 @@ Teuchos::ParameterList Simulation::valid_parameters()
             "quasi-static small-strain thermo-elasticity: body force, boundary conditions; see "
             "doc/mechanics.md")
       .setParameters(MechanicalPhysics::valid_parameters());
-  p.sublist("Time Stepping", false, "implicit time integration; see TimeStepper")
+  p.sublist("Time Stepping", false,
+            "implicit time integration with adaptive steps; see doc/heat.md")
       .setParameters(TimeStepper::valid_parameters());
   p.sublist("Solver", false, "Newton (NOX) and linear solver (Belos, MueLu); see doc/solvers.md")
       .setParameters(NewtonSolver::valid_parameters());
-  p.sublist("Output", false, "results in HDF5 + XDMF and/or Exodus; see doc/output-format.md")
-      .setParameters(internal::output_parameters());
+  p.sublist("Output", false,
+            "results: the files (HDF5 + XDMF and/or Exodus, a time history, gap tables) and "
+            "when the state is written; see doc/output-format.md")
+      .setParameters(OutputSchedule::valid_parameters());
   p.sublist("Checkpoint", false,
             "checkpoints to continue a run from (kiln INPUT.xml --restart FILE); see "
             "doc/user-guide.md")
@@ -102,12 +94,7 @@ Simulation::Simulation(const Teuchos::ParameterList &input, const std::string &i
   std::ostringstream xml;
   Teuchos::writeParameterListToXmlOStream(input, xml);
   input_xml_ = xml.str();
-  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
-  for (int i = 0; i < times.size(); ++i)
-    KILN_CHECK_INPUT(times[i] >= 0.0 && (i == 0 || times[i] > times[i - 1]),
-                     parameter_path(input_path_, "Kiln/Output", "Times"),
-                     "output times must be >= 0 and increasing; entry " << i + 1 << " is "
-                                                                        << times[i]);
+  outputs_ = std::make_unique<OutputSchedule>(params_.sublist("Output"), input_path_, *comm_);
   const std::string physics = params_.get<std::string>("Physics");
   const bool thermal = physics != "Elasticity";
   const bool mechanics = physics != "Heat Conduction";
@@ -162,77 +149,157 @@ void Simulation::setup()
   print_header();
 }
 
-Simulation::Ending Simulation::run()
+void Simulation::check()
 {
   setup();
-  const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), output_base(),
+  const bool transient = params_.sublist("Time Stepping").get<std::string>("Method") != "Steady";
+  KILN_CHECK_INPUT(!layout_.temperature || !transient ||
+                       given_in_input(params_.sublist("Output"), "Times"),
+                   parameter_path(input_path_, "Kiln/Output", "Times"),
+                   "is not given, so the run would end at t = 0 without a time step (a run steps "
+                   "from t = 0 to its last output time); give the output times, e.g. <Parameter "
+                   "name=\"Times\" type=\"Array(double)\" value=\"{0, 100}\"/> in the Output "
+                   "list, or set Kiln/Time Stepping/\"Method\" to \"Steady\"");
+  const auto &times = params_.sublist("Checkpoint").get<Teuchos::Array<double>>("Times");
+  for (int i = 0; i < times.size(); ++i)
+    KILN_CHECK_INPUT(times[i] <= outputs_->end_time() * (1.0 + 1e-12),
+                     parameter_path(input_path_, "Kiln/Checkpoint", "Times"),
+                     "entry " << i + 1 << " (" << times[i]
+                              << " s) is after the end of the run, the last output time "
+                              << outputs_->end_time()
+                              << " s; remove it or add a later time to Kiln/Output/\"Times\"");
+}
+
+Simulation::Ending Simulation::run()
+{
+  check();
+  make_output_folder();
+  const ResultsLock lock(outputs_->lock_path(), *comm_);
+  const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), outputs_->file_base(),
                                        input_path_ + ": Kiln/Checkpoint");
-  TimeStepper::State state;
-  if (restart_.empty())
-  {
-    solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
-    problem_->initial_condition(0.0, *solution_);
-    if (layout_.displacement)
-      equilibrate();
-    state = stepper_->initial_state(0.0, *solution_);
-  }
-  else
-    state = resume();
+  const bool fresh = restart_.empty();
+  TimeStepper::State state = fresh ? start() : resume();
   // A continued run's results start with the earlier run's, read before the new files open.
-  const std::string earlier_results = restart_.empty() ? "" : earlier_results_file();
-  open_results();
+  const std::string earlier_results = fresh ? "" : earlier_results_file();
+  open_results(!fresh && earlier_results.empty() ? restart_output_steps_ : 0);
   const int output_steps =
       earlier_results.empty() ? 0 : continue_results(earlier_results, state.time);
-  RunObserver observer({*problem_, mesh_, *field_output_, writers_, output_times(), checkpoints,
-                        RunFingerprint::of(mesh_, layout_, params_),
+  HistoryCsv history = open_history(state);
+  ProgressReport progress(out_,
+                          {params_.sublist("Time Stepping").get<std::string>("Method"), state.time,
+                           outputs_->end_time(), state.statistics.steps, log_is_terminal()});
+  RunObserver observer({*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints,
+                        history, progress, RunFingerprint::of(mesh_, layout_, params_),
                         CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}},
-                        comm_, out_, output_files(false)},
+                        comm_, out_},
                        output_steps);
-  std::vector<double> stops = output_times();
-  stops.insert(stops.end(), checkpoints.times().begin(), checkpoints.times().end());
-  std::sort(stops.begin(), stops.end());
-  std::vector<double> stop_times;
-  for (const double t : stops)
-    if ((restart_.empty() ? t >= state.time : t > state.time * (1.0 + 1e-12) + 1e-12) &&
-        (stop_times.empty() || t > stop_times.back() * (1.0 + 1e-12) + 1e-12))
-      stop_times.push_back(t);
-
+  observer.start(state, fresh);
   bool finished = false;
   try
   {
-    finished = stepper_->run(*problem_, *newton_, state, stop_times, observer);
+    finished = stepper_->run(*problem_, *newton_, state, stop_times(state, checkpoints), observer);
   }
-  catch (const RunError &)
+  catch (const RunError &e)
   {
-    // The last good state stays: written as an output step and as a checkpoint.
+    // The last good state stays: written as an output step and as a checkpoint, and the
+    // results files finished with the error as their status.
     observer.output(state);
     const std::string path = observer.checkpoint(state);
+    std::ostringstream when;
+    when << "stopped by an error at t = " << state.time << " s";
+    finish_results(when.str() + ": " + e.what());
+    progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
-          << output_files(false) << " and " << path << "\n";
+          << outputs_->results_files(false) << " and " << path << "\n";
     throw;
   }
   solution_ = state.x;
-  const TimeStepper::Statistics &stats = state.statistics;
   if (!finished)
   {
     const std::string path = observer.checkpoint(state);
-    std::ostringstream status;
-    status << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
-           << " s; continued by kiln --restart " << path;
-    finish_results(status.str());
-    *out_ << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
-          << " s after step " << stats.steps << "; checkpoint " << path << "; continue with: kiln "
-          << input_path_ << " --restart " << path << "\n";
+    std::ostringstream when;
+    when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
+         << " s";
+    finish_results(when.str() + "; continued by kiln --restart " + path);
+    progress.summary(when.str(), state, files_written(path), *comm_);
+    *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
+          << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
     return Ending::stopped;
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
   finish_results("complete");
-  *out_ << "done: " << stats.steps << " steps (" << stats.error_rejections
-        << " repeated for the error estimate, " << stats.newton_failures << " for Newton), "
-        << stats.newton_iterations << " Newton and " << stats.linear_iterations
-        << " linear iterations; results in " << output_files() << "\n";
+  progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
   return Ending::finished;
+}
+
+void Simulation::make_output_folder() const
+{
+  const std::filesystem::path base(outputs_->file_base());
+  if (comm_->getRank() == 0 && base.has_parent_path())
+  {
+    std::error_code ignored; // a failure shows when the lock file is created
+    std::filesystem::create_directories(base.parent_path(), ignored);
+  }
+  comm_->barrier();
+}
+
+HistoryCsv Simulation::open_history(const TimeStepper::State &state)
+{
+  const MPI_Comm mpi_comm =
+      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  if (restart_.empty())
+    return HistoryCsv(mpi_comm, outputs_->history_path());
+  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps);
+  if (!history.warning().empty())
+    *out_ << "warning: " << history.warning() << "\n";
+  for (const auto &row : history.kept_rows())
+    for (const auto &writer : writers_)
+      writer->write_history(row);
+  return history;
+}
+
+TimeStepper::State Simulation::start()
+{
+  solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
+  problem_->initial_condition(0.0, *solution_);
+  if (layout_.displacement)
+    equilibrate();
+  return stepper_->initial_state(0.0, *solution_);
+}
+
+std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
+                                           const CheckpointSchedule &checkpoints) const
+{
+  const bool fresh = restart_.empty();
+  std::vector<double> all = outputs_->stop_times(state.time, fresh);
+  for (const double t : checkpoints.times())
+    if (fresh ? t >= state.time : t > state.time * (1.0 + 1e-12) + 1e-12)
+      all.push_back(t);
+  std::sort(all.begin(), all.end());
+  std::vector<double> stops;
+  for (const double t : all)
+    if (stops.empty() || t > stops.back() * (1.0 + 1e-12) + 1e-12)
+      stops.push_back(t);
+  return stops;
+}
+
+std::vector<std::pair<std::string, std::string>>
+Simulation::files_written(const std::string &checkpoint) const
+{
+  std::vector<std::pair<std::string, std::string>> files = {{"results", outputs_->results_files()},
+                                                            {"history", outputs_->history_path()}};
+  if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
+  {
+    const int n = gap_tables_->next_step() - first_gap_step_;
+    files.emplace_back("gap tables", n == 1 ? gap_tables_->path(first_gap_step_)
+                                            : gap_tables_->path(first_gap_step_) + " to " +
+                                                  gap_tables_->path(gap_tables_->next_step() - 1) +
+                                                  " (" + std::to_string(n) + " files)");
+  }
+  if (!checkpoint.empty())
+    files.emplace_back("checkpoint", checkpoint);
+  return files;
 }
 
 TimeStepper::State Simulation::resume()
@@ -261,7 +328,7 @@ std::string Simulation::earlier_results_file() const
 {
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
   // name), else BASE.h5.
-  const std::string base = output_base();
+  const std::string base = outputs_->file_base();
   if (std::filesystem::exists(base + ".running.h5"))
   {
     const std::string moved = base + ".interrupted.h5";
@@ -288,7 +355,7 @@ int Simulation::continue_results(const std::string &source, const double time)
       source, time, {mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells()},
       writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
-        << " continue in " << output_files(false) << "\n";
+        << " continue in " << outputs_->results_files(false) << "\n";
   if (n != restart_output_steps_)
     *out_ << "warning: the checkpoint was written after " << restart_output_steps_
           << " output steps, but " << source << " holds " << n << " up to its time\n";
@@ -301,31 +368,35 @@ void Simulation::finish_results(const std::string &status)
     writer->finish(status);
 }
 
-std::vector<double> Simulation::output_times() const
-{
-  const auto &times = params_.sublist("Output").get<Teuchos::Array<double>>("Times");
-  return {times.begin(), times.end()};
-}
-
-void Simulation::open_results()
+void Simulation::open_results(const int first_gap_step)
 {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-  const std::string base = output_base();
-  if (comm_->getRank() == 0 && std::filesystem::path(base).has_parent_path())
-  {
-    std::error_code ignored; // a failure shows when the writer opens the file
-    std::filesystem::create_directories(std::filesystem::path(base).parent_path(), ignored);
-  }
-  comm_->barrier();
+  const std::string base = outputs_->file_base();
   const MPI_Comm mpi_comm =
       *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-  const std::string format = params_.sublist("Output").get<std::string>("Format");
-  if (format != "Exodus")
-    writers_.push_back(std::make_unique<Hdf5XdmfWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(),
-                                                        dofs_->owned_cells(), cell_rank_));
-  if (format != "HDF5")
+  // Rank 0's clock for every rank: the attribute is written collectively.
+  std::string created = internal::utc_now();
+  std::vector<char> text(created.begin(), created.end());
+  int length = static_cast<int>(text.size());
+  Teuchos::broadcast(*comm_, 0, Teuchos::outArg(length));
+  text.resize(static_cast<std::size_t>(length));
+  Teuchos::broadcast(*comm_, 0, length, text.data());
+  const ResultsMetadata metadata{version_string, std::string(text.begin(), text.end()), input_path_,
+                                 input_xml_};
+  if (outputs_->writes_hdf5())
+    writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
+        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));
+  if (outputs_->writes_exodus())
     writers_.push_back(std::make_unique<ExodusResultsWriter>(
-        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_));
+        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));
+  if (!mesh_.gap_pairs.empty())
+  {
+    auto gap =
+        std::make_unique<GapCsvWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(), first_gap_step);
+    gap_tables_ = gap.get();
+    first_gap_step_ = first_gap_step;
+    writers_.push_back(std::move(gap));
+  }
   field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
 }
 
@@ -350,26 +421,6 @@ void Simulation::equilibrate()
         << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
         << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
   problem_->step_accepted(0.0, *solution_);
-}
-
-std::string Simulation::output_files(const bool with_index) const
-{
-  const std::string base = output_base();
-  const std::string format = params_.sublist("Output").get<std::string>("Format");
-  std::string files;
-  if (format != "Exodus")
-    files = base + ".h5" + (with_index ? " and " + base + ".xmf" : "");
-  if (format != "HDF5")
-    files += (files.empty() ? "" : " and ") + base + ".exo";
-  return files;
-}
-
-std::string Simulation::output_base() const
-{
-  const std::string base = params_.sublist("Output").get<std::string>("File Base");
-  if (!base.empty())
-    return base;
-  return "results/" + std::filesystem::path(input_path_).stem().string();
 }
 
 void Simulation::print_header() const

@@ -1,7 +1,8 @@
 #pragma once
 /// Puts the pieces together, deal.II-tutorial style:
 ///   run() { setup(); output(t0); for each step { assemble; solve; } output(t_k) }
-/// (the time loop is the TimeStepper's; each step one NOX solve).
+/// (the time loop is the TimeStepper's; each step one NOX solve; what happens between the
+/// steps is the RunObserver's).
 #include "discretization/dof_manager.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "mesh/mesh.hpp"
@@ -13,11 +14,16 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kiln
 {
+class CheckpointSchedule;
 class FieldOutput;
+class GapCsvWriter;
+class HistoryCsv;
+class OutputSchedule;
 class ResultsWriter;
 class NewtonSolver;
 class CoupledProblem;
@@ -37,6 +43,8 @@ public:
   /// Mesh, gap split, partition, unknowns, physics, solvers (so that every input
   /// error shows here); prints the header.
   void setup();
+  /// setup(), and the checks a run makes before it starts (kiln --check).
+  void check();
   /// How a run ended: at its last output time, or stopped by a signal after a step (with a
   /// checkpoint to continue from).
   enum class Ending
@@ -44,9 +52,11 @@ public:
     finished,
     stopped
   };
-  /// setup(), then the time integration from t = 0, or from the checkpoint of
-  /// set_restart(); the state written at every output time, checkpoints as asked. A
-  /// RunError leaves the last good state written (output and checkpoint) and goes on.
+  /// check(), then the time integration from t = 0, or from the checkpoint of
+  /// set_restart(), holding the lock BASE.lock; the state written when the output schedule
+  /// asks, a history row per step, checkpoints as asked, a summary at the end. A RunError
+  /// leaves the last good state written (output and checkpoint), the results files finished
+  /// with its message as their status, and goes on.
   Ending run();
   /// run() continues from this checkpoint (kiln --restart FILE).
   void set_restart(const std::string &checkpoint) { restart_ = checkpoint; }
@@ -56,11 +66,8 @@ public:
   const Mesh &mesh() const { return mesh_; }
   const std::vector<int> &cell_rank() const { return cell_rank_; }
   const DofManager &dofs() const { return *dofs_; }
-  /// The output file path without extension.
-  std::string output_base() const;
-  /// The results files of the output format ("BASE.h5 and BASE.xmf", "BASE.exo", ...);
-  /// without the XDMF index unless `with_index`.
-  std::string output_files(bool with_index = true) const;
+  /// Kiln/Output: the results' path, format and schedule.
+  const OutputSchedule &outputs() const { return *outputs_; }
   /// The solution after run(), the unknowns of the owned nodes (CoupledProblem has
   /// their physical values).
   const NonlinearProblem::Vector &solution() const { return *solution_; }
@@ -72,9 +79,21 @@ public:
 
 private:
   void print_header() const;
+  /// Rank 0 creates the folder of the results (collective).
+  void make_output_folder() const;
+  /// BASE.history.csv, new or (a restart) continued; the rows kept go to every results writer.
+  HistoryCsv open_history(const TimeStepper::State &state);
+  /// The state at t = 0: the initial condition, in equilibrium with a displacement.
+  TimeStepper::State start();
   /// The state of the checkpoint of set_restart(), checked against this run; the output
   /// steps written before it.
   TimeStepper::State resume();
+  /// The times the steps land on from `state` on: outputs and checkpoints.
+  std::vector<double> stop_times(const TimeStepper::State &state,
+                                 const CheckpointSchedule &checkpoints) const;
+  /// The "key: value" lines of the files written, for the summary.
+  std::vector<std::pair<std::string, std::string>>
+  files_written(const std::string &checkpoint) const;
   /// The HDF5 results of the run a restart continues, or "" if there are none.
   std::string earlier_results_file() const;
   /// The earlier run's output steps in `source` up to `time` into this run's results;
@@ -82,9 +101,9 @@ private:
   int continue_results(const std::string &source, double time);
   /// Gives the results files their final names, recording `status`.
   void finish_results(const std::string &status);
-  /// The results writers of Output/"Format" and the field output.
-  void open_results();
-  std::vector<double> output_times() const;
+  /// The results writers of Output/"Format", the gap tables (their first output step
+  /// `first_gap_step`) and the field output.
+  void open_results(int first_gap_step);
   /// Solves for the displacement at t = 0 with the temperature held at its initial value.
   void equilibrate();
 
@@ -103,7 +122,10 @@ private:
   Teuchos::RCP<CoupledProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
+  std::unique_ptr<OutputSchedule> outputs_;
   std::vector<std::unique_ptr<ResultsWriter>> writers_;
+  GapCsvWriter *gap_tables_ = nullptr; ///< one of writers_, if the mesh has a gap
+  int first_gap_step_ = 0;             ///< the output step of its first table
   std::unique_ptr<FieldOutput> field_output_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
 };

@@ -2,7 +2,9 @@
 
 #include <Teuchos_oblackholestream.hpp>
 #include <mpi.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -12,37 +14,72 @@ namespace kiln
 {
 namespace internal
 {
+void StatusLineBuffer::hide_status()
+{
+  if (shown_)
+    target_ << "\r\033[K";
+  shown_ = false;
+}
+
+void StatusLineBuffer::set_status(const std::string &line)
+{
+  if (!terminal_)
+    return;
+  if (!line_start_)
+  {
+    target_ << "\n"; // a partial ordinary line stays above
+    line_start_ = true;
+  }
+  status_ = line;
+  target_ << "\r" << status_ << "\033[K";
+  shown_ = true;
+  target_.flush();
+}
+
+void StatusLineBuffer::end_status()
+{
+  if (shown_)
+    target_ << "\n";
+  shown_ = false;
+  status_.clear();
+  target_.flush();
+}
+
+StatusLineBuffer::int_type StatusLineBuffer::overflow(const int_type c)
+{
+  if (traits_type::eq_int_type(c, traits_type::eof()))
+    return traits_type::not_eof(c);
+  const char ch = traits_type::to_char_type(c);
+  return xsputn(&ch, 1) == 1 ? c : traits_type::eof();
+}
+
+std::streamsize StatusLineBuffer::xsputn(const char *s, const std::streamsize n)
+{
+  if (n <= 0)
+    return n;
+  hide_status();
+  target_.write(s, n);
+  line_start_ = s[n - 1] == '\n';
+  if (std::char_traits<char>::find(s, static_cast<std::size_t>(n), '\n') != nullptr)
+  {
+    if (line_start_ && !status_.empty())
+    {
+      target_ << "\r" << status_ << "\033[K";
+      shown_ = true;
+    }
+    target_.flush();
+  }
+  return target_ ? n : 0;
+}
+
+int StatusLineBuffer::sync()
+{
+  target_.flush();
+  return target_ ? 0 : -1;
+}
+
 namespace
 {
-/// Forwards every character to std::cout (looked up at each write, so a temporary
-/// std::cout.rdbuf() swap still applies) and flushes std::cout at each '\n'.
-class LineFlushingBuffer final : public std::streambuf
-{
-protected:
-  int_type overflow(const int_type c) override
-  {
-    if (traits_type::eq_int_type(c, traits_type::eof()))
-      return traits_type::not_eof(c);
-    const char ch = traits_type::to_char_type(c);
-    std::cout.put(ch);
-    if (ch == '\n')
-      std::cout.flush();
-    return std::cout ? c : traits_type::eof();
-  }
-  std::streamsize xsputn(const char *s, const std::streamsize n) override
-  {
-    std::cout.write(s, n);
-    if (std::char_traits<char>::find(s, static_cast<std::size_t>(n), '\n') != nullptr)
-      std::cout.flush();
-    return std::cout ? n : 0;
-  }
-  int sync() override
-  {
-    std::cout.flush();
-    return std::cout ? 0 : -1;
-  }
-};
-
 int world_rank()
 {
   int initialized = 0, finalized = 0;
@@ -53,17 +90,55 @@ int world_rank()
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   return rank;
 }
+
+/// Whether std::cout is a terminal the user looks at. Under an MPI launcher it is not known:
+/// Open MPI gives every rank a pseudo-terminal whether mpirun's own output is a terminal or
+/// a file, so a launched run counts as not on a terminal (one line per step).
+bool stdout_is_terminal()
+{
+  for (const char *launcher : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(launcher) != nullptr)
+      return false;
+  return isatty(STDOUT_FILENO) == 1;
+}
+
+/// Decided when the program starts, before MPI_Init (which sets the variables of a launched
+/// run in a singleton's environment too).
+const bool started_on_terminal = stdout_is_terminal();
+
+/// The one buffer of the rank-0 log (std::cout; a terminal or not).
+StatusLineBuffer &log_buffer()
+{
+  static StatusLineBuffer buffer(std::cout, started_on_terminal);
+  return buffer;
+}
 } // namespace
 } // namespace internal
 
 Teuchos::RCP<Teuchos::FancyOStream> rank0_stream(const Teuchos::Comm<int> &comm)
 {
   static Teuchos::oblackholestream black_hole;
-  static internal::LineFlushingBuffer line_flushing_buffer;
-  static std::ostream line_flushing_cout(&line_flushing_buffer);
+  static std::ostream line_flushing_cout(&internal::log_buffer());
   std::ostream &target =
       comm.getRank() == 0 ? line_flushing_cout : static_cast<std::ostream &>(black_hole);
   return Teuchos::fancyOStream(Teuchos::rcpFromRef(target));
+}
+
+bool log_is_terminal()
+{
+  return internal::log_buffer().terminal();
+}
+
+void show_status_line(const std::string &line)
+{
+  if (internal::world_rank() == 0)
+    internal::log_buffer().set_status(line);
+}
+
+void end_status_line()
+{
+  if (internal::world_rank() == 0)
+    internal::log_buffer().end_status();
 }
 
 bool warn_once(const std::string &message)
@@ -73,7 +148,9 @@ bool warn_once(const std::string &message)
   const std::lock_guard<std::mutex> lock(mutex);
   if (!printed.insert(message).second || internal::world_rank() != 0)
     return false;
-  std::cout << "kiln: warning: " << message << std::endl;
+  // Through the log's buffer, so a status line on a terminal stays below it.
+  static std::ostream log(&internal::log_buffer());
+  log << "kiln: warning: " << message << "\n";
   return true;
 }
 } // namespace kiln

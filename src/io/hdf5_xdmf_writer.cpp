@@ -3,11 +3,14 @@
 #include "base/errors.hpp"
 #include "io/collective_checks.hpp"
 #include "io/field_catalog.hpp"
+#include "io/gap_surface.hpp"
+#include "io/history_csv.hpp"
 #include "io/parallel_hdf5_file.hpp"
 #include "io/xdmf_index.hpp"
 
 #include <cstdint>
 #include <cstdio>
+#include <map>
 
 namespace kiln
 {
@@ -19,8 +22,14 @@ struct Hdf5XdmfWriter::Impl
 {
   Impl(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
        const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells);
-  /// The unit, components and meaning of a field of the catalog on its dataset.
-  void describe(const std::string &name) const;
+  /// The unit, components and meaning of a field of the catalog on its dataset in `group`.
+  void describe(hid_t group, const std::string &name) const;
+  /// /gap: the gap surface's points, quadrilaterals, nodes and areas (rank 0 writes).
+  void write_gap_surface() const;
+  /// The values of a node field at the gap points this rank owns.
+  std::vector<double> gap_values(const std::vector<double> &values, int n_components) const;
+  /// The history rows held back, into /history (collective).
+  void write_pending_history();
 
   void write_mesh(const Mesh &mesh, const std::vector<int> &owned_nodes,
                   const std::vector<int> &owned_cells, const std::vector<int> &cell_rank) const;
@@ -34,8 +43,13 @@ struct Hdf5XdmfWriter::Impl
   internal::OwnedRows cell_rows;
   internal::ParallelHdf5File file;
   internal::XdmfIndex index;
+  internal::GapSurface gap;
+  internal::OwnedRows gap_rows;           ///< the gap points whose node (side a) this rank owns
+  std::vector<std::size_t> gap_value_row; ///< for each of them, its node's owned position
+  std::vector<std::vector<double>> pending_history; ///< rows not yet in /history
   // After the file: closed before it.
   internal::H5Handle step_group;
+  internal::H5Handle gap_step_group;
   bool in_step = false;
 };
 
@@ -44,11 +58,25 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
                            const std::vector<int> &owned_cells)
     : comm(communicator), base(base_path), node_rows(owned_nodes, mesh.n_nodes()),
       cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".running.h5"),
-      index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells())
+      index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells()),
+      gap(mesh), gap_rows({}, 0)
 {
+  std::map<int, std::size_t> owned_position;
+  for (std::size_t i = 0; i < owned_nodes.size(); ++i)
+    owned_position[owned_nodes[i]] = i;
+  std::vector<int> owned_points;
+  for (int p = 0; p < gap.n_points(); ++p)
+    if (const auto it = owned_position.find(static_cast<int>(gap.node_a[p]));
+        it != owned_position.end())
+    {
+      owned_points.push_back(p);
+      gap_value_row.push_back(it->second);
+    }
+  gap_rows = internal::OwnedRows(owned_points, gap.n_points());
+  index.set_gap(gap.n_points(), gap.n_quads());
 }
 
-void Hdf5XdmfWriter::Impl::describe(const std::string &name) const
+void Hdf5XdmfWriter::Impl::describe(const hid_t group, const std::string &name) const
 {
   const FieldDescription *known = describe_field(name);
   if (known == nullptr)
@@ -56,7 +84,7 @@ void Hdf5XdmfWriter::Impl::describe(const std::string &name) const
   std::string components;
   for (const std::string &c : known->components)
     components += (components.empty() ? "" : ",") + c;
-  const internal::H5Handle dataset = file.open_dataset(step_group.get(), name);
+  const internal::H5Handle dataset = file.open_dataset(group, name);
   file.write_attributes(dataset.get(),
                         {{"unit", known->unit},
                          {"components", components.empty() ? std::string("scalar") : components},
@@ -111,8 +139,81 @@ void Hdf5XdmfWriter::Impl::write_field(const FieldSpec &field, const std::vector
 
   file.write_rows(step_group.get(), name, field.center == Center::node ? node_rows : cell_rows,
                   field.n_components, values);
-  describe(name);
+  describe(step_group.get(), name);
+  if (gap_step_group.valid() && field.center == Center::node)
+  {
+    file.write_rows(gap_step_group.get(), name, gap_rows, field.n_components,
+                    gap_values(values, field.n_components));
+    describe(gap_step_group.get(), name);
+  }
   index.add_field(field);
+}
+
+std::vector<double> Hdf5XdmfWriter::Impl::gap_values(const std::vector<double> &values,
+                                                     const int n_components) const
+{
+  std::vector<double> at_gap;
+  at_gap.reserve(gap_value_row.size() * static_cast<std::size_t>(n_components));
+  for (const std::size_t row : gap_value_row)
+    for (int c = 0; c < n_components; ++c)
+      at_gap.push_back(values[row * static_cast<std::size_t>(n_components) + c]);
+  return at_gap;
+}
+
+void Hdf5XdmfWriter::Impl::write_gap_surface() const
+{
+  const internal::H5Handle group = file.create_group("gap");
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  // Rank 0 writes every row (the gap is small and replicated).
+  std::vector<int> all_points, all_quads;
+  if (rank == 0)
+  {
+    for (int p = 0; p < gap.n_points(); ++p)
+      all_points.push_back(p);
+    for (int q = 0; q < gap.n_quads(); ++q)
+      all_quads.push_back(q);
+  }
+  const internal::OwnedRows points(all_points, gap.n_points()), quads(all_quads, gap.n_quads());
+  std::vector<double> coordinates, area, s, t;
+  std::vector<std::int64_t> connectivity, node_a, node_b;
+  if (rank == 0)
+  {
+    for (const Point &x : gap.points)
+      coordinates.insert(coordinates.end(), x.begin(), x.end());
+    for (const auto &quad : gap.quads)
+      connectivity.insert(connectivity.end(), quad.begin(), quad.end());
+    area = gap.area;
+    s = gap.s;
+    t = gap.t;
+    node_a = gap.node_a;
+    node_b = gap.node_b;
+  }
+  file.write_rows(group.get(), "coordinates", points, 3, coordinates);
+  file.write_rows(group.get(), "connectivity", quads, 4, connectivity);
+  file.write_rows(group.get(), "node_a", points, 1, node_a);
+  file.write_rows(group.get(), "node_b", points, 1, node_b);
+  file.write_rows(group.get(), "area", points, 1, area);
+  file.write_rows(group.get(), "s", points, 1, s);
+  file.write_rows(group.get(), "t", points, 1, t);
+  file.create_group("gap/steps");
+}
+
+void Hdf5XdmfWriter::Impl::write_pending_history()
+{
+  if (pending_history.empty())
+    return;
+  const auto &columns = history_columns();
+  const internal::H5Handle group(H5Gopen2(file.root(), "history", H5P_DEFAULT), H5Gclose);
+  file.check_io(group.valid(), "opening group /history");
+  for (std::size_t c = 0; c < columns.size(); ++c)
+  {
+    std::vector<double> values;
+    for (const auto &row : pending_history)
+      values.push_back(row[c]);
+    file.append_rows(group.get(), columns[c].name, values);
+  }
+  pending_history.clear();
 }
 
 Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
@@ -130,6 +231,19 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
                                 {"input", metadata.input}},
                                "writing the run's metadata");
   impl_->write_mesh(mesh, owned_nodes, owned_cells, cell_rank);
+  if (impl_->gap.n_points() > 0)
+    impl_->write_gap_surface();
+  {
+    // The history's datasets, empty until the first rows, each with its unit and meaning.
+    const internal::H5Handle group = impl_->file.create_group("history");
+    for (const HistoryColumn &c : history_columns())
+    {
+      impl_->file.append_rows(group.get(), c.name, {});
+      const internal::H5Handle dataset = impl_->file.open_dataset(group.get(), c.name);
+      impl_->file.write_attributes(dataset.get(), {{"unit", c.unit}, {"meaning", c.meaning}},
+                                   "describing /history/" + c.name);
+    }
+  }
   impl_->file.flush();
   impl_->index.write();
 }
@@ -141,6 +255,9 @@ void Hdf5XdmfWriter::begin_step(const double time, const int cycle, const double
   Impl &m = *impl_;
   internal::check_begin_step(m.in_step);
   m.step_group = m.file.create_group("steps/" + internal::step_group_name(m.index.n_steps()));
+  if (m.gap.n_points() > 0)
+    m.gap_step_group =
+        m.file.create_group("gap/steps/" + internal::step_group_name(m.index.n_steps()));
   m.index.add_step(time);
   m.in_step = true;
   m.file.write_attributes(m.step_group.get(),
@@ -160,12 +277,22 @@ void Hdf5XdmfWriter::write_cell_field(const std::string &name, const int n_compo
   impl_->write_field({name, Center::cell, n_components}, values);
 }
 
+void Hdf5XdmfWriter::write_history(const std::vector<double> &row)
+{
+  internal::check_usage(row.size() == history_columns().size(),
+                        "row.size() == history_columns().size()",
+                        "a history row needs one value per column of history_columns()");
+  impl_->pending_history.push_back(row);
+}
+
 void Hdf5XdmfWriter::end_step()
 {
   Impl &m = *impl_;
   internal::check_end_step(m.in_step);
   m.step_group.reset();
+  m.gap_step_group.reset();
   m.in_step = false;
+  m.write_pending_history();
   m.file.flush();
   m.index.write();
 }
@@ -176,6 +303,7 @@ void Hdf5XdmfWriter::finish(const std::string &status)
   if (m.in_step) // the same on every rank: the calls are collective
     throw InternalError(m.file.path() + ": finish() while step " + m.step_name() +
                         " is open; call end_step() first");
+  m.write_pending_history();
   m.file.write_attributes(m.file.root(), {{"status", status}}, "writing the status");
   const std::string running_h5 = m.file.path(), running_xmf = m.index.path();
   m.file.close();

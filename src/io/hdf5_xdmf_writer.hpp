@@ -7,6 +7,11 @@
 ///   /mesh/cell_rank     (cells) int32, the owning rank
 ///   /steps/NNNNNN/      attributes time, cycle, dt; node fields (nodes) or
 ///                       (nodes x c), cell fields (cells) or (cells x c)
+///   /gap/               the gap surface, if the mesh has a gap: coordinates (points x 3),
+///                       connectivity (quads x 4), node_a, node_b, area, s, t (points)
+///   /gap/steps/NNNNNN/  every node field of step NNNNNN at the gap points
+///   /history/NAME       one dataset per history column (history_columns()), a row per
+///                       step; rows are held back and written at each end_step and finish
 /// Rows are in global-id order whatever the number of ranks: each rank writes
 /// the rows it owns. The root holds the run's metadata (kiln_version, created,
 /// input_path, input, status); each dataset of a field of the catalog its unit,
@@ -55,8 +60,11 @@ public:
   /// `values` holds n_components values per owned cell, cell after cell.
   void write_cell_field(const std::string &name, int n_components,
                         const std::vector<double> &values) override;
-  /// Closes the step group, flushes the file and rewrites the XDMF file.
+  /// Closes the step group, writes the history rows held back, flushes the file and
+  /// rewrites the XDMF file.
   void end_step() override;
+  /// Holds the row back for /history until the next end_step() or finish().
+  void write_history(const std::vector<double> &row) override;
   /// Writes the root attribute "status", closes the file and renames both files.
   void finish(const std::string &status) override;
 

@@ -165,6 +165,55 @@ void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
   check_io(status >= 0, "writing dataset \"" + name + "\"");
 }
 
+bool ParallelHdf5File::append_rows(const hid_t location, const std::string &name,
+                                   const std::vector<double> &values) const
+{
+  const bool exists = H5Lexists(location, name.c_str(), H5P_DEFAULT) > 0;
+  H5Handle dataset;
+  if (exists)
+    dataset = H5Handle(H5Dopen2(location, name.c_str(), H5P_DEFAULT), H5Dclose);
+  else
+  {
+    const hsize_t none[1] = {0}, unlimited[1] = {H5S_UNLIMITED}, chunk[1] = {256};
+    const H5Handle space(H5Screate_simple(1, none, unlimited), H5Sclose);
+    const H5Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    H5Pset_chunk(dcpl.get(), 1, chunk);
+    H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER); // every row is written
+    dataset = H5Handle(H5Dcreate2(location, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                                  dcpl.get(), H5P_DEFAULT),
+                       H5Dclose);
+  }
+  check_io(dataset.valid(), (exists ? "opening dataset \"" : "creating dataset \"") + name + "\"");
+  if (values.empty())
+    return !exists;
+  hsize_t old_size[1] = {0};
+  {
+    const H5Handle space(H5Dget_space(dataset.get()), H5Sclose);
+    H5Sget_simple_extent_dims(space.get(), old_size, nullptr);
+  }
+  const hsize_t new_size[1] = {old_size[0] + values.size()};
+  check_io(H5Dset_extent(dataset.get(), new_size) >= 0, "extending dataset \"" + name + "\"");
+  const H5Handle file_space(H5Dget_space(dataset.get()), H5Sclose);
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  const hsize_t count[1] = {rank == 0 ? static_cast<hsize_t>(values.size()) : 1};
+  const H5Handle memory_space(H5Screate_simple(1, count, nullptr), H5Sclose);
+  if (rank == 0)
+  {
+    const hsize_t count_rows[1] = {values.size()};
+    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, old_size, nullptr, count_rows, nullptr);
+  }
+  else
+  {
+    H5Sselect_none(file_space.get());
+    H5Sselect_none(memory_space.get());
+  }
+  const herr_t status = H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(),
+                                 file_space.get(), dxpl_.get(), values.data());
+  check_io(status >= 0, "appending to dataset \"" + name + "\"");
+  return !exists;
+}
+
 void ParallelHdf5File::write_attributes(const hid_t location,
                                         const std::vector<ScalarAttribute> &attributes,
                                         const std::string &what) const

@@ -59,6 +59,11 @@ public:
                   const std::vector<std::int64_t> &values) const;
   void write_rows(hid_t location, const std::string &name, const OwnedRows &rows, int n_components,
                   const std::vector<std::int32_t> &values) const;
+  /// Appends `values` (rank 0's; every rank passes as many) to the 1-D float64 dataset `name`
+  /// in `location`, which is created extendible (chunked, no size limit) if it does not exist;
+  /// returns whether it was created.
+  bool append_rows(hid_t location, const std::string &name,
+                   const std::vector<double> &values) const;
   /// Writes the attributes on `location`, in order; `what` names them in the error message.
   void write_attributes(hid_t location, const std::vector<ScalarAttribute> &attributes,
                         const std::string &what) const;

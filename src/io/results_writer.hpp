@@ -31,6 +31,10 @@ public:
                                 const std::vector<double> &values) = 0;
   /// Completes the step on disk (a run that stops later leaves it readable).
   virtual void end_step() = 0;
+  /// One row of the run's time history (history_columns() order, io/history_csv.hpp), between
+  /// steps; a writer that keeps no history ignores it. It may hold rows back until the next
+  /// end_step() or finish().
+  virtual void write_history(const std::vector<double> & /*row*/) {}
   /// Records `status` ("complete", or why the run stopped) and renames the files to their
   /// final names; nothing can be written after.
   virtual void finish(const std::string &status) = 0;

@@ -55,6 +55,12 @@ void XdmfIndex::rename(const std::string &xmf_path, const std::string &h5_path)
   h5_name_ = file_name_of(h5_path);
 }
 
+void XdmfIndex::set_gap(const int n_points, const int n_quads)
+{
+  n_gap_points_ = n_points;
+  n_gap_quads_ = n_quads;
+}
+
 void XdmfIndex::add_step(const double time)
 {
   steps_.push_back({time, {}});
@@ -109,18 +115,43 @@ void XdmfIndex::write_grid(std::ostream &out, const std::string &indent, const S
   }
   if (step)
     for (const auto &f : step->fields)
-    {
-      const bool on_nodes = f.center == Center::node;
-      const char *type = attribute_type(f);
-      std::string dimensions = on_nodes ? nodes : cells;
-      if (f.n_components > 1)
-        dimensions += " " + std::to_string(f.n_components);
-      out << in1 << "<Attribute Name=\"" << f.name << "\" AttributeType=\"" << type
-          << "\" Center=\"" << (on_nodes ? "Node" : "Cell") << "\">\n";
-      write_data_item(out, in2, "/steps/" + step_group_name(index) + "/" + f.name, dimensions,
-                      "Float", 8);
-      out << in1 << "</Attribute>\n";
-    }
+      write_attribute(out, in1, f, f.center == Center::node ? nodes : cells,
+                      "/steps/" + step_group_name(index) + "/" + f.name);
+  out << indent << "</Grid>\n";
+}
+
+void XdmfIndex::write_attribute(std::ostream &out, const std::string &indent, const FieldSpec &f,
+                                const std::string &rows, const std::string &path) const
+{
+  std::string dimensions = rows;
+  if (f.n_components > 1)
+    dimensions += " " + std::to_string(f.n_components);
+  out << indent << "<Attribute Name=\"" << f.name << "\" AttributeType=\"" << attribute_type(f)
+      << "\" Center=\"" << (f.center == Center::node ? "Node" : "Cell") << "\">\n";
+  write_data_item(out, indent + "  ", path, dimensions, "Float", 8);
+  out << indent << "</Attribute>\n";
+}
+
+/// The gap surface at one step: its quadrilaterals and the step's node fields at its points.
+void XdmfIndex::write_gap_grid(std::ostream &out, const std::string &indent, const Step &step,
+                               const int index) const
+{
+  const std::string in1 = indent + "  ";
+  const std::string in2 = in1 + "  ";
+  const std::string points = std::to_string(n_gap_points_);
+  const std::string quads = std::to_string(n_gap_quads_);
+  out << indent << "<Grid Name=\"gap_" << step_group_name(index) << "\" GridType=\"Uniform\">\n";
+  out << in1 << "<Time Value=\"" << std::setprecision(17) << step.time << "\"/>\n";
+  out << in1 << "<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << quads
+      << "\" NodesPerElement=\"4\">\n";
+  write_data_item(out, in2, "/gap/connectivity", quads + " 4", "Int", 8);
+  out << in1 << "</Topology>\n";
+  out << in1 << "<Geometry GeometryType=\"XYZ\">\n";
+  write_data_item(out, in2, "/gap/coordinates", points + " 3", "Float", 8);
+  out << in1 << "</Geometry>\n";
+  for (const auto &f : step.fields)
+    if (f.center == Center::node)
+      write_attribute(out, in1, f, points, "/gap/steps/" + step_group_name(index) + "/" + f.name);
   out << indent << "</Grid>\n";
 }
 
@@ -134,6 +165,14 @@ std::string XdmfIndex::text() const
     write_grid(out, "    ", nullptr, 0);
   else
   {
+    // The gap first: meshio's TimeSeriesReader reads the last Temporal collection.
+    if (n_gap_points_ > 0)
+    {
+      out << "    <Grid Name=\"gap\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (std::size_t s = 0; s < steps_.size(); ++s)
+        write_gap_grid(out, "      ", steps_[s], static_cast<int>(s));
+      out << "    </Grid>\n";
+    }
     out << "    <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (std::size_t s = 0; s < steps_.size(); ++s)
       write_grid(out, "      ", &steps_[s], static_cast<int>(s));

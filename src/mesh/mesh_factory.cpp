@@ -29,7 +29,7 @@ Teuchos::ParameterList MeshFactory::valid_parameters()
         "and studies, e.g. the two halves of the contact box on two ranks, the partition "
         "boundary on the gap)",
         choice_validator({"METIS", "By Block"}));
-  p.sublist("Box", false, "the generated block; see BoxMeshGenerator")
+  p.sublist("Box", false, "the generated block; see doc/mesh.md")
       .setParameters(BoxMeshGenerator::valid_parameters());
   Teuchos::ParameterList &exodus = p.sublist("Exodus", false, "an Exodus II mesh (Cubit)");
   exodus.set("File", "",

@@ -238,6 +238,7 @@ StateSummary CoupledProblem::summary(const Vector &x)
     prepare(x);
   if (thermal_)
     summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction().heat_capacity(), s);
+  summarize_displacement(dofs_, *fields_, s);
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace kiln
@@ -46,6 +47,18 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
   summary.thermal_energy = totals[2];
 }
 
+void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
+                            StateSummary &summary)
+{
+  if (!dofs.layout().displacement)
+    return;
+  double largest = 0.0;
+  for (const int n : dofs.owned_nodes())
+    largest = std::max(largest, std::sqrt(dot(fields.u(n), fields.u(n))));
+  Teuchos::reduceAll(*dofs.owned_dof_map()->getComm(), Teuchos::REDUCE_MAX, largest,
+                     Teuchos::outArg(summary.max_displacement));
+}
+
 void summarize_contact(const ContactInterface &interface, const NormalContact &contact,
                        const NodalFields &fields, const Teuchos::Comm<int> &comm,
                        StateSummary &summary)
@@ -76,5 +89,6 @@ void summarize_contact(const ContactInterface &interface, const NormalContact &c
   summary.normal_force = totals[2];
   summary.max_opening = interface.n_pairs() > 0 ? maxima[0] : 0.0;
   summary.max_penetration = interface.n_pairs() > 0 ? std::max(maxima[1], 0.0) : 0.0;
+  summary.min_opening = interface.n_pairs() > 0 ? -maxima[1] : 0.0;
 }
 } // namespace kiln

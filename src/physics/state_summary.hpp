@@ -1,6 +1,6 @@
 #pragma once
 /// A state's figures for a time history: temperature extremes and mean, thermal energy,
-/// contact area and force, gap opening.
+/// largest displacement, contact area and force, gap opening.
 #include "contact/contact_interface.hpp"
 #include "contact/normal_contact.hpp"
 #include "discretization/dof_manager.hpp"
@@ -14,11 +14,13 @@ struct StateSummary
   double T_min = 0.0, T_max = 0.0; ///< over the nodes [K]
   double T_mean = 0.0;             ///< volume average [K]
   double thermal_energy = 0.0;     ///< ∫ rho c T dΩ [J]
+  double max_displacement = 0.0;   ///< max over the nodes of |u| [m]
   int n_pairs = 0;                 ///< gap pairs
   int n_active = 0;                ///< pairs in contact
   double contact_area = 0.0;       ///< Σ A of the pairs in contact [m^2]
   double normal_force = 0.0;       ///< Σ A p of the pairs in contact, compression > 0 [N]
   double max_opening = 0.0;        ///< max over the pairs of g [m] (0 without pairs)
+  double min_opening = 0.0;        ///< min over the pairs of g, negative if penetrated [m]
   double max_penetration = 0.0;    ///< max over the pairs of -g, at least 0 [m]
 };
 
@@ -26,6 +28,9 @@ struct StateSummary
 /// temperature, which leaves them 0). Collective.
 void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const NodalFields &fields,
                            double rho_c, StateSummary &summary);
+/// The largest displacement at `fields` (0 without a displacement). Collective.
+void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
+                            StateSummary &summary);
 /// The contact figures of the decision at `fields`' state. Collective.
 void summarize_contact(const ContactInterface &interface, const NormalContact &contact,
                        const NodalFields &fields, const Teuchos::Comm<int> &comm,

@@ -173,10 +173,7 @@ bool TimeStepper::run(TransientProblem &problem, NewtonSolver &newton, State &st
       ++state.statistics.steps;
       state.statistics.newton_iterations += r.newton_iterations;
       state.statistics.linear_iterations += r.linear_iterations;
-      *out_ << "steady solve " << state.accepted << ": t = " << seconds(t) << ", Newton "
-            << r.newton_iterations << " (" << r.linear_iterations << " linear), |F| "
-            << std::scientific << std::setprecision(3) << r.initial_residual_norm << " -> "
-            << r.final_residual_norm << std::defaultfloat << "\n";
+      // The observer reports the solve (app/progress_report).
       problem.step_accepted(t, *state.x);
       observer.step_accepted(state, r, -1.0);
       observer.stop_time(state);
@@ -340,14 +337,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   if (h < wanted && factor >= 1.0)
     state.next_step = std::max(state.next_step, wanted);
 
-  std::ostringstream line;
-  line << "step " << stats.steps << ": t = " << seconds(state.time) << ", dt = " << seconds(h)
-       << (bdf2 ? " (BDF2)" : " (BE)") << ", Newton " << r.newton_iterations << " ("
-       << r.linear_iterations << " linear), |F| " << std::scientific << std::setprecision(3)
-       << r.initial_residual_norm << " -> " << r.final_residual_norm;
-  if (error >= 0.0)
-    line << ", error " << std::defaultfloat << std::setprecision(3) << error;
-  *out_ << line.str() << "\n";
+  // The observer reports the step (app/progress_report).
   problem.step_accepted(state.time, *state.x);
   return true;
 }

@@ -91,4 +91,51 @@ std::vector<double> read_last_step(const std::string &h5_path, const std::string
 {
   return read_step(h5_path, field, -1, time);
 }
+std::vector<double> read_dataset(const std::string &h5_path, const std::string &path)
+{
+  std::vector<double> values;
+  const hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(file, 0) << h5_path;
+  if (file < 0)
+    return values;
+  const hid_t dataset = H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0
+                            ? H5Dopen2(file, path.c_str(), H5P_DEFAULT)
+                            : H5I_INVALID_HID;
+  EXPECT_GE(dataset, 0) << h5_path << ": no " << path;
+  if (dataset >= 0)
+  {
+    const hid_t space = H5Dget_space(dataset);
+    values.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    H5Sclose(space);
+    EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+    H5Dclose(dataset);
+  }
+  H5Fclose(file);
+  return values;
+}
+
+std::string read_text_attribute(const std::string &h5_path, const std::string &path,
+                                const std::string &name)
+{
+  std::string text;
+  const hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(file, 0) << h5_path;
+  if (file < 0)
+    return text;
+  if (H5Aexists_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT) > 0)
+  {
+    const hid_t attribute =
+        H5Aopen_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute);
+    text.assign(H5Tget_size(type), '\0');
+    H5Aread(attribute, type, text.data());
+    text.resize(std::min(text.size(), text.find('\0')));
+    H5Tclose(type);
+    H5Aclose(attribute);
+  }
+  else
+    ADD_FAILURE() << h5_path << ": " << path << " has no attribute " << name;
+  H5Fclose(file);
+  return text;
+}
 } // namespace kiln_test

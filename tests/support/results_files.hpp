@@ -26,6 +26,14 @@ std::vector<double> read_step(const std::string &h5_path, const std::string &fie
 std::vector<double> read_last_step(const std::string &h5_path, const std::string &field,
                                    double &time);
 
+/// The values of the dataset `path` ("/history/time", "/gap/coordinates") as doubles, row after
+/// row; a missing file or dataset is a test failure (and an empty result). Serial read.
+std::vector<double> read_dataset(const std::string &h5_path, const std::string &path);
+/// The text attribute `name` of the object `path` ("/" for the root), or "" (a test failure)
+/// if it is missing.
+std::string read_text_attribute(const std::string &h5_path, const std::string &path,
+                                const std::string &name);
+
 /// The attributes of output step `step` in the writer tests: time, dt, cycle.
 inline double step_time(const int step)
 {

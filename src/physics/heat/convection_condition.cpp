@@ -18,7 +18,7 @@ Teuchos::ParameterList ConvectionCondition::valid_parameters()
         "for Type \"Convection\", where it is required: h, must be >= 0 [W/(m^2 K)]",
         nonnegative_double_validator());
   p.sublist("Ambient Temperature", false,
-            "for Type \"Convection\": T_ambient(t) [K]; see TimeFunction")
+            "for Type \"Convection\": T_ambient(t) [K], a function of time (doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

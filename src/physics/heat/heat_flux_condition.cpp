@@ -13,7 +13,8 @@ Teuchos::ParameterList HeatFluxCondition::valid_parameters()
 {
   Teuchos::ParameterList p;
   p.sublist("Heat Flux", false,
-            "for Type \"Heat Flux\": q(t) into the body [W/m^2]; see TimeFunction")
+            "for Type \"Heat Flux\": q(t) into the body [W/m^2], a function of time (doc/heat.md, "
+            "Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

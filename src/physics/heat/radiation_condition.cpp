@@ -18,8 +18,8 @@ Teuchos::ParameterList RadiationCondition::valid_parameters()
         "[-]",
         double_range_validator(0.0, 1.0));
   p.sublist("Ambient Temperature", false,
-            "for Type \"Radiation\": the temperature of the surroundings T_amb(t) [K]; see "
-            "TimeFunction")
+            "for Type \"Radiation\": the temperature of the surroundings T_amb(t) [K], a "
+            "function of time (doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

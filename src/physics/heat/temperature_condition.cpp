@@ -10,7 +10,8 @@ std::string TemperatureCondition::description()
 Teuchos::ParameterList TemperatureCondition::valid_parameters()
 {
   Teuchos::ParameterList p;
-  p.sublist("Temperature", false, "for Type \"Temperature\": T(t) [K]; see TimeFunction")
+  p.sublist("Temperature", false,
+            "for Type \"Temperature\": T(t) [K], a function of time (doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

@@ -40,7 +40,8 @@ Teuchos::ParameterList Material::valid_parameters()
   Teuchos::ParameterList k = ConductivityModel::valid_parameters();
   k.set("Value", 2.4e2, "k for Type \"Constant\", must be > 0 [W/(m K)]",
         positive_double_validator());
-  p.sublist("Conductivity", false, "thermal conductivity k(T); see ConductivityModel")
+  p.sublist("Conductivity", false,
+            "thermal conductivity k(T), constant or a table in T [W/(m K)]; see doc/heat.md")
       .setParameters(k);
   p.set(youngs_modulus_name, aluminium.youngs_modulus(),
         "E, must be > 0; give it with \"Poisson's Ratio\", or give neither and the elasticity "

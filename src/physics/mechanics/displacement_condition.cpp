@@ -20,8 +20,8 @@ Teuchos::ParameterList DisplacementCondition::valid_parameters()
         "for Type \"Displacement\", where it is required: the components set, any of x, y, z "
         "[-]");
   p.sublist("Displacement", false,
-            "for Type \"Displacement\": the value(t) of each listed component (default 0) [m]; "
-            "see TimeFunction")
+            "for Type \"Displacement\": the value(t) of each listed component (default 0) [m], "
+            "a function of time (doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

@@ -16,7 +16,8 @@ Teuchos::ParameterList NormalDisplacementCondition::valid_parameters()
 {
   Teuchos::ParameterList p;
   p.sublist("Displacement", false,
-            "for Type \"Normal Displacement\": u.n(t) (default 0) [m]; see TimeFunction")
+            "for Type \"Normal Displacement\": u.n(t) (default 0) [m], a function of time "
+            "(doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

@@ -13,7 +13,8 @@ Teuchos::ParameterList PressureCondition::valid_parameters()
 {
   Teuchos::ParameterList p;
   p.sublist("Pressure", false,
-            "for Type \"Pressure\": p(t), positive pushing into the body [Pa]; see TimeFunction")
+            "for Type \"Pressure\": p(t), positive pushing into the body [Pa], a function of time "
+            "(doc/heat.md, Input)")
       .setParameters(TimeFunction::valid_parameters());
   return p;
 }

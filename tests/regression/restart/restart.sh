@@ -4,12 +4,14 @@
 # usage: restart.sh CASE NP KILN KILN_DIFF REPORT MPIEXEC INPUTS_DIR
 #   exact      0 -> 150 s in one run, against 0 -> 53 s (contact active at the checkpoint)
 #              then restarted to 150 s with the same step control, both on NP ranks: the
-#              results files (the restarted one holds the whole series) agree to 1e-12.
+#              results files (the restarted one holds the whole series) agree to 1e-12, and
+#              the time history and gap tables continue (same_history.py).
 #   larger     part 1 of the restart example on 2 ranks, part 2 (steps up to 25 s, another
 #              output interval) on 1 rank: the analytic closed state at 150 s.
 #   signal     a stop request during a run (SIGTERM to kiln on 1 rank, SIGUSR1 to mpirun on
-#              2): exit 3 with a checkpoint; the restarted run ends with the results of an
-#              uninterrupted one (1e-12).
+#              2): exit 3 with a checkpoint; the restarted run ends with the results, time
+#              history and gap tables of an uninterrupted one (1e-12; the history rows written
+#              after the checkpoint are dropped, none is written twice).
 #   bad        checkpoints that cannot continue the run: a truncated file, a results file, a
 #              missing one, another mesh, another physics, another material: one clear
 #              error each (exit 1, printed once).
@@ -17,7 +19,8 @@
 #              they were, and BASE.running.h5 holds the steps written before the crash.
 set -uo pipefail
 case=$1 np=$2 kiln=$3 diff=$4 report=$5 mpiexec=$6 inputs=$7
-expect_failure=$(dirname "$(realpath "$0")")/../../cmake/expect_failure.sh
+here=$(dirname "$(realpath "$0")")
+expect_failure=$here/../../cmake/expect_failure.sh
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 dir=$PWD/restart-$case-np$np
@@ -40,8 +43,10 @@ deck() { # NAME TIMES [MAX_STEP]: the closing box with these output times into r
   fi
   grep -q "results/$1" "$1.xml" || fail "could not make deck $1"
 }
-same() { # A.h5 B.h5: the same series, every value to 1e-12 relative
+same() { # A.h5 B.h5: the same series, every value to 1e-12 relative; the same history and
+  # gap tables
   "$diff" --abs 0 --rel 1e-12 "$1" "$2" > diff.txt 2>&1 || { cat diff.txt; fail "$1 and $2 differ"; }
+  "$here/same_history.py" "${1%.h5}" "${2%.h5}" || fail "the histories of $1 and $2 differ"
 }
 
 case $case in

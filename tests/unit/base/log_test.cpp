@@ -1,5 +1,6 @@
 // Tests base/log: the rank-0 stream writes through to std::cout and flushes at each end of
-// line (a killed batch run keeps its log), and warn_once prints a warning once on rank 0.
+// line (a killed batch run keeps its log), warn_once prints a warning once on rank 0, and on a
+// terminal a status line stays below the log, rewritten in place.
 // KILN_TEST_NP: 1 2
 #include "base/log.hpp"
 
@@ -61,4 +62,38 @@ TEST(Log, WarnOncePrintsOnceOnRankZero)
   EXPECT_FALSE(second);
   EXPECT_EQ(capture.buffer.str(),
             comm->getRank() == 0 ? "kiln: warning: log_test: something odd\n" : "");
+}
+
+TEST(Log, StatusLineOnATerminal)
+{
+  std::ostringstream screen;
+  kiln::internal::StatusLineBuffer buffer(screen, true);
+  std::ostream log(&buffer);
+  log << "header\n";
+  buffer.set_status("step 1");
+  buffer.set_status("step 2");
+  // An ordinary line erases the status line, is printed, and the status line comes back.
+  log << "output: t = 1 s\n";
+  buffer.set_status("step 3");
+  buffer.end_status();
+  log << "status: complete\n";
+  EXPECT_EQ(screen.str(), "header\n"
+                          "\rstep 1\033[K"
+                          "\rstep 2\033[K"
+                          "\r\033[Koutput: t = 1 s\n\rstep 2\033[K"
+                          "\rstep 3\033[K"
+                          "\n"
+                          "status: complete\n");
+}
+
+TEST(Log, NoStatusLineElsewhere)
+{
+  std::ostringstream file;
+  kiln::internal::StatusLineBuffer buffer(file, false);
+  std::ostream log(&buffer);
+  buffer.set_status("step 1");
+  log << "step 1: t = 1 s\n";
+  buffer.end_status();
+  EXPECT_EQ(file.str(), "step 1: t = 1 s\n");
+  EXPECT_FALSE(buffer.terminal());
 }

@@ -1,0 +1,174 @@
+#include "app/progress_report.hpp"
+
+#include "base/log.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
+#include <sys/resource.h>
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+std::string seconds(const double t)
+{
+  std::ostringstream s;
+  s << std::setprecision(6) << t << " s";
+  return s.str();
+}
+
+std::string times_list(const std::vector<double> &times)
+{
+  if (times.empty())
+    return "never";
+  std::string text;
+  for (const double t : times)
+    text += (text.empty() ? "" : ", ") + seconds(t);
+  return text;
+}
+
+std::string mib(const double value)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << value << " MiB";
+  return s.str();
+}
+} // namespace
+
+std::string duration_text(const double seconds)
+{
+  char text[64];
+  if (seconds < 60.0)
+    std::snprintf(text, sizeof text, "%.3g s", seconds);
+  else if (seconds < 3600.0)
+    std::snprintf(text, sizeof text, "%d min %02d s", static_cast<int>(seconds / 60.0),
+                  static_cast<int>(std::fmod(seconds, 60.0)));
+  else
+    std::snprintf(text, sizeof text, "%d h %02d min", static_cast<int>(seconds / 3600.0),
+                  static_cast<int>(std::fmod(seconds, 3600.0) / 60.0));
+  return text;
+}
+
+double peak_rss_mib()
+{
+  struct rusage usage = {};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux: KiB
+}
+} // namespace internal
+
+ProgressReport::ProgressReport(Teuchos::RCP<Teuchos::FancyOStream> out, Run run)
+    : out_(std::move(out)), run_(std::move(run)), started_(std::chrono::steady_clock::now())
+{
+}
+
+double ProgressReport::wall_time() const
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+void ProgressReport::start(const StateSummary &summary)
+{
+  last_active_ = summary.n_pairs > 0 ? summary.n_active : -1;
+}
+
+std::string ProgressReport::figures(const double time, const StateSummary &summary) const
+{
+  std::ostringstream s;
+  const double span = run_.end_time - run_.start_time;
+  if (run_.end_time > 0.0)
+    s << std::fixed << std::setprecision(0) << 100.0 * time / run_.end_time << std::defaultfloat
+      << "% of " << internal::seconds(run_.end_time) << ", ";
+  if (summary.n_pairs > 0)
+    s << summary.n_active << "/" << summary.n_pairs << " pairs in contact, ";
+  const double wall = wall_time();
+  s << "wall " << internal::duration_text(wall);
+  const double done = time - run_.start_time;
+  if (span > 0.0 && done > 0.0 && time < run_.end_time)
+    s << ", " << internal::duration_text(wall * (run_.end_time - time) / done) << " left";
+  return s.str();
+}
+
+void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::Result &newton,
+                          const double error, const StateSummary &summary)
+{
+  if (summary.n_pairs > 0)
+  {
+    if (last_active_ >= 0 && summary.n_active == summary.n_pairs && last_active_ < summary.n_pairs)
+      closed_.push_back(state.time);
+    if (last_active_ > 0 && summary.n_active == 0)
+      opened_.push_back(state.time);
+    last_active_ = summary.n_active;
+  }
+  const int n = state.statistics.steps;
+  const bool steady = run_.method == "Steady";
+  // The first step of BDF2 is backward Euler (TimeStepper).
+  const bool bdf2 = run_.method == "BDF2" && state.accepted >= 2;
+  std::ostringstream solve;
+  solve << "Newton " << newton.newton_iterations << " (" << newton.linear_iterations << " linear)";
+  if (run_.terminal)
+  {
+    std::ostringstream line;
+    line << (steady ? "steady solve " : "step ") << n << ": t = " << internal::seconds(state.time);
+    if (!steady)
+      line << ", dt = " << internal::seconds(state.last_step);
+    line << ", " << solve.str() << "; " << figures(state.time, summary);
+    show_status_line(line.str());
+    return;
+  }
+  std::ostringstream line;
+  line << (steady ? "steady solve " : "step ") << n << ": t = " << internal::seconds(state.time);
+  if (!steady)
+    line << ", dt = " << internal::seconds(state.last_step) << (bdf2 ? " (BDF2)" : " (BE)");
+  line << ", " << solve.str() << ", |F| " << std::scientific << std::setprecision(3)
+       << newton.initial_residual_norm << " -> " << newton.final_residual_norm;
+  if (error >= 0.0)
+    line << ", error " << std::defaultfloat << std::setprecision(3) << error;
+  line << std::defaultfloat << "; " << figures(state.time, summary);
+  *out_ << line.str() << "\n";
+}
+
+void ProgressReport::summary(const std::string &status, const TimeStepper::State &state,
+                             const std::vector<std::pair<std::string, std::string>> &files,
+                             const Teuchos::Comm<int> &comm) const
+{
+  const int n_ranks = comm.getSize();
+  const double mine = internal::peak_rss_mib();
+  std::vector<double> peaks(static_cast<std::size_t>(n_ranks), 0.0);
+  Teuchos::gatherAll(comm, 1, &mine, n_ranks, peaks.data());
+  end_status_line();
+  const TimeStepper::Statistics &stats = state.statistics;
+  auto &out = *out_;
+  out << "status: " << status << "\n";
+  out << "simulated time: " << internal::seconds(run_.start_time) << " to "
+      << internal::seconds(state.time) << " (end " << internal::seconds(run_.end_time) << ")\n";
+  out << "wall time: " << internal::duration_text(wall_time()) << "\n";
+  out << "steps: " << stats.steps << "\n";
+  if (run_.start_steps > 0)
+    out << "steps in this run: " << stats.steps - run_.start_steps << "\n";
+  out << "steps repeated for the error estimate: " << stats.error_rejections << "\n";
+  out << "steps repeated after Newton failed: " << stats.newton_failures << "\n";
+  out << "Newton iterations: " << stats.newton_iterations << "\n";
+  out << "linear iterations: " << stats.linear_iterations << "\n";
+  if (last_active_ >= 0)
+  {
+    out << "gap closed at: " << internal::times_list(closed_) << "\n";
+    out << "gap opened at: " << internal::times_list(opened_) << "\n";
+  }
+  std::string per_rank;
+  for (const double p : peaks)
+    per_rank += (per_rank.empty() ? "" : ", ") + internal::mib(p);
+  out << "peak RSS per rank: " << per_rank << "\n";
+  out << "peak RSS summed: " << internal::mib(std::accumulate(peaks.begin(), peaks.end(), 0.0))
+      << "\n";
+  for (const auto &[key, value] : files)
+    out << key << ": " << value << "\n";
+}
+} // namespace kiln

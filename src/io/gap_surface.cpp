@@ -1,0 +1,74 @@
+#include "io/gap_surface.hpp"
+
+#include <cmath>
+#include <map>
+
+namespace kiln
+{
+namespace internal
+{
+GapSurface::GapSurface(const Mesh &mesh)
+{
+  std::map<int, std::int64_t> point_of_twin; // a node of side a may have several twins
+  Point normal{0.0, 0.0, 0.0}, centroid{0.0, 0.0, 0.0};
+  double total_area = 0.0;
+  for (const GapPair &pair : mesh.gap_pairs)
+  {
+    point_of_twin[pair.node_b] = static_cast<std::int64_t>(points.size());
+    points.push_back(mesh.coordinates[pair.node_a]);
+    node_a.push_back(pair.node_a);
+    node_b.push_back(pair.node_b);
+    area.push_back(pair.area);
+    total_area += pair.area;
+    for (int d = 0; d < 3; ++d)
+    {
+      normal[d] += pair.area * pair.normal[d];
+      centroid[d] += pair.area * mesh.coordinates[pair.node_a][d];
+    }
+  }
+  for (const GapFace &face : mesh.gap_faces)
+  {
+    std::array<std::int64_t, 4> quad{};
+    for (int i = 0; i < 4; ++i)
+      quad[i] = point_of_twin.at(face.node_b[i]);
+    quads.push_back(quad);
+  }
+  if (points.empty())
+    return;
+  const double length = std::sqrt(dot(normal, normal));
+  for (int d = 0; d < 3; ++d)
+  {
+    normal[d] = length > 0.0 ? normal[d] / length : (d == 0 ? 1.0 : 0.0);
+    centroid[d] = total_area > 0.0 ? centroid[d] / total_area : points[0][d];
+  }
+  // Along the first edge of the first quadrilateral (a mesh edge: for a structured mesh the
+  // axes follow its rows of faces), else the coordinate axis most nearly in the plane.
+  Point e_s{0.0, 0.0, 0.0};
+  if (!quads.empty())
+    for (int d = 0; d < 3; ++d)
+      e_s[d] = points[quads[0][1]][d] - points[quads[0][0]][d];
+  else
+  {
+    int axis = 0;
+    for (int d = 1; d < 3; ++d)
+      if (std::abs(normal[d]) < std::abs(normal[axis]))
+        axis = d;
+    e_s[axis] = 1.0;
+  }
+  const double along = dot(e_s, normal);
+  for (int d = 0; d < 3; ++d)
+    e_s[d] -= along * normal[d];
+  const double s_length = std::sqrt(dot(e_s, e_s));
+  for (double &c : e_s)
+    c /= s_length;
+  const Point e_t{normal[1] * e_s[2] - normal[2] * e_s[1], normal[2] * e_s[0] - normal[0] * e_s[2],
+                  normal[0] * e_s[1] - normal[1] * e_s[0]};
+  for (const Point &x : points)
+  {
+    const Point r{x[0] - centroid[0], x[1] - centroid[1], x[2] - centroid[2]};
+    s.push_back(dot(r, e_s));
+    t.push_back(dot(r, e_t));
+  }
+}
+} // namespace internal
+} // namespace kiln

@@ -1,0 +1,186 @@
+#include "io/history_csv.hpp"
+
+#include "base/errors.hpp"
+#include "io/collective_checks.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+std::string header_line()
+{
+  std::string line;
+  for (const HistoryColumn &c : history_columns())
+    line += (line.empty() ? "" : ",") + c.name;
+  return line;
+}
+
+std::string row_line(const std::vector<double> &row)
+{
+  std::string line;
+  for (std::size_t i = 0; i < row.size(); ++i)
+    line += (i == 0 ? "" : ",") + history_number(row[i]);
+  return line;
+}
+
+/// The values of a CSV line, or false if it has another number of values or a bad one.
+bool parse_row(const std::string &line, std::vector<double> &row)
+{
+  row.clear();
+  std::istringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ','))
+  {
+    char *end = nullptr;
+    const double value = std::strtod(cell.c_str(), &end);
+    if (cell.empty() || end != cell.c_str() + cell.size())
+      return false;
+    row.push_back(value);
+  }
+  return row.size() == history_columns().size();
+}
+} // namespace
+} // namespace internal
+
+const std::vector<HistoryColumn> &history_columns()
+{
+  static const std::vector<HistoryColumn> columns = {
+      {"step", "-", "accepted time steps so far (0: the start of the run)"},
+      {"time", "s", "simulated time"},
+      {"dt", "s", "the step that led here (0 at the start)"},
+      {"newton_iterations", "-", "Newton iterations of this step"},
+      {"linear_iterations", "-", "linear (Krylov) iterations of this step"},
+      {"T_min", "K", "lowest nodal temperature"},
+      {"T_max", "K", "highest nodal temperature"},
+      {"T_mean", "K", "volume average of the temperature"},
+      {"thermal_energy", "J", "integral of rho c T over the body; its change is the heat gained"},
+      {"max_displacement", "m", "largest nodal |u|"},
+      {"min_gap", "m", "smallest gap opening over the gap pairs (negative: penetration)"},
+      {"max_gap", "m", "largest gap opening over the gap pairs"},
+      {"active_pairs", "-", "gap pairs in contact"},
+      {"contact_area", "m^2", "area of the gap pairs in contact"},
+      {"normal_force", "N", "normal force across the gap, compression > 0"},
+      {"wall_time", "s", "wall-clock time since this run (or its restart) started"}};
+  return columns;
+}
+
+std::string history_number(const double value)
+{
+  if (std::isnan(value))
+    return "nan";
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path) : comm_(comm), path_(path)
+{
+  start({});
+}
+
+HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int step)
+    : comm_(comm), path_(path)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  std::vector<double> flat;
+  if (rank == 0)
+  {
+    std::ifstream in(path_);
+    std::string line;
+    if (!in)
+      warning_ = path_ +
+                 " (the earlier run's history) is missing; the history starts at the "
+                 "restart, step " +
+                 std::to_string(step);
+    else if (!std::getline(in, line) || line != internal::header_line())
+    {
+      in.close();
+      std::error_code ignored;
+      std::filesystem::rename(path_, path_ + ".old", ignored);
+      warning_ = path_ + " has other columns than this Kiln writes; it is kept as " + path_ +
+                 ".old and the history starts at the restart, step " + std::to_string(step);
+    }
+    else
+    {
+      std::vector<double> row;
+      int last = -1;
+      while (std::getline(in, line))
+      {
+        if (!internal::parse_row(line, row))
+        {
+          warning_ = path_ + ": a line after step " + std::to_string(last) +
+                     " cannot be read; the rows from there are dropped";
+          break;
+        }
+        if (row[0] > step)
+          break;
+        last = static_cast<int>(row[0]);
+        flat.insert(flat.end(), row.begin(), row.end());
+      }
+      if (warning_.empty() && last < step)
+        warning_ = path_ + " ends at step " + std::to_string(last) + ", before the restart at " +
+                   std::to_string(step) + "; the rows in between are missing";
+    }
+  }
+  // Every rank gets the warning and the kept rows (the HDF5 history is written collectively).
+  int length = static_cast<int>(warning_.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm_);
+  warning_.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(warning_.data(), length, MPI_CHAR, 0, comm_);
+  long long n_values = static_cast<long long>(flat.size());
+  MPI_Bcast(&n_values, 1, MPI_LONG_LONG, 0, comm_);
+  flat.resize(static_cast<std::size_t>(n_values));
+  MPI_Bcast(flat.data(), static_cast<int>(n_values), MPI_DOUBLE, 0, comm_);
+  const std::size_t n_columns = history_columns().size();
+  for (std::size_t i = 0; i < flat.size(); i += n_columns)
+    kept_.emplace_back(flat.begin() + static_cast<std::ptrdiff_t>(i),
+                       flat.begin() + static_cast<std::ptrdiff_t>(i + n_columns));
+  start(kept_);
+}
+
+void HistoryCsv::start(const std::vector<std::vector<double>> &rows)
+{
+  internal::run_on_rank_zero(
+      comm_,
+      [&]
+      {
+        const std::string temporary = path_ + ".tmp";
+        std::ofstream out(temporary, std::ios::trunc);
+        out << internal::header_line() << "\n";
+        for (const auto &row : rows)
+          out << internal::row_line(row) << "\n";
+        out.close();
+        const bool ok = out && std::rename(temporary.c_str(), path_.c_str()) == 0;
+        if (!ok)
+          std::remove(temporary.c_str());
+        KILN_CHECK_INPUT(ok, path_,
+                         "cannot write the time history; check that the folder is "
+                         "writable and the disk is not full");
+      });
+}
+
+void HistoryCsv::append(const std::vector<double> &row)
+{
+  internal::run_on_rank_zero(comm_,
+                             [&]
+                             {
+                               std::ofstream out(path_, std::ios::app);
+                               out << internal::row_line(row) << "\n";
+                               out.close();
+                               KILN_CHECK_INPUT(static_cast<bool>(out), path_,
+                                                "cannot append to the time history; check that "
+                                                "the disk is not full");
+                             });
+}
+} // namespace kiln

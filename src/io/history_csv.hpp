@@ -1,0 +1,59 @@
+#pragma once
+/// The time history of a run: one row of figures per accepted step (doc/output-format.md).
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// One column of the history: its name (the CSV header and the HDF5 dataset /history/NAME),
+/// unit and meaning.
+struct HistoryColumn
+{
+  std::string name;
+  std::string unit;
+  std::string meaning;
+};
+
+/// The columns, in order; a row holds one value per column (NaN where the run has no such
+/// quantity, e.g. temperatures without a temperature).
+const std::vector<HistoryColumn> &history_columns();
+
+/// `value` as the CSV writes it: the shortest text that reads back as the same double
+/// ("0.04", "53", "1e-06"), "nan" for NaN.
+std::string history_number(double value);
+
+/// BASE.history.csv: a header line with the column names, then one line per row, each
+/// flushed as it is written (a run cut off keeps its rows). Rank 0 writes; every member
+/// function is collective and throws InputError on every rank when the file cannot be
+/// written.
+class HistoryCsv
+{
+public:
+  /// A new file (an earlier one is replaced) at `path`.
+  HistoryCsv(MPI_Comm comm, const std::string &path);
+  /// Continues the file of an earlier run at `path` after its step `step` (a restart): its
+  /// rows of steps up to `step` are kept (the rest, written after the checkpoint, are
+  /// dropped) and returned on every rank by kept_rows(). A missing file, or one with other
+  /// columns (moved aside to PATH.old), starts anew, and warning() says so.
+  HistoryCsv(MPI_Comm comm, const std::string &path, int step);
+
+  const std::string &path() const { return path_; }
+  /// The rows kept from the earlier run (every rank).
+  const std::vector<std::vector<double>> &kept_rows() const { return kept_; }
+  /// Why the earlier rows could not be kept (all or some), or "" (every rank).
+  const std::string &warning() const { return warning_; }
+  /// Appends a row (history_columns() order; rank 0's values are written).
+  void append(const std::vector<double> &row);
+
+private:
+  /// Writes the header and `rows` under PATH.tmp and renames it PATH (rank 0).
+  void start(const std::vector<std::vector<double>> &rows);
+
+  MPI_Comm comm_;
+  std::string path_;
+  std::vector<std::vector<double>> kept_;
+  std::string warning_;
+};
+} // namespace kiln

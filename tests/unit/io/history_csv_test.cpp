@@ -1,0 +1,141 @@
+// Tests io/history_csv: the header names every column, numbers are written in their shortest
+// exact form and read back bit for bit, rows are appended as they come (rank 0 writes), and a
+// restart keeps the rows up to its step and drops the later ones, or starts anew (and says
+// why) without the earlier file or with one of other columns.
+// KILN_TEST_NP: 1 2
+#include "io/history_csv.hpp"
+
+#include "support/results_files.hpp"
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+using testing::HasSubstr;
+
+namespace
+{
+MPI_Comm raw(const Teuchos::Comm<int> &comm)
+{
+  return *dynamic_cast<const Teuchos::MpiComm<int> &>(comm).getRawMpiComm();
+}
+
+/// The row of step `step`: every column a value that needs all 17 digits, one NaN.
+std::vector<double> row_of(const int step)
+{
+  std::vector<double> row(kiln::history_columns().size());
+  row[0] = step;
+  for (std::size_t c = 1; c < row.size(); ++c)
+    row[c] = (step + 1) * (0.1 + 1.0 / (3.0 + static_cast<double>(c)));
+  row[10] = std::numeric_limits<double>::quiet_NaN();
+  return row;
+}
+
+std::vector<std::string> lines_of(const std::string &path)
+{
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+bool same_row(const std::vector<double> &a, const std::vector<double> &b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i]))))
+      return false;
+  return true;
+}
+} // namespace
+
+TEST(HistoryCsv, NumbersAsWrittenAndReadBack)
+{
+  EXPECT_EQ(kiln::history_number(0.04), "0.04");
+  EXPECT_EQ(kiln::history_number(53.0), "53");
+  EXPECT_EQ(kiln::history_number(1e-6), "1e-06");
+  EXPECT_EQ(kiln::history_number(-2.288e7), "-22880000");
+  EXPECT_EQ(kiln::history_number(std::nan("")), "nan");
+  const double third = 1.0 / 3.0;
+  EXPECT_EQ(std::strtod(kiln::history_number(third).c_str(), nullptr), third);
+}
+
+TEST(HistoryCsv, RowsAppendedAndContinuedAfterARestart)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string path = kiln_test::temporary_base("history_csv", *comm) + ".history.csv";
+  {
+    kiln::HistoryCsv history(raw(*comm), path);
+    for (int step = 0; step <= 5; ++step)
+      history.append(row_of(step));
+  }
+  comm->barrier();
+  const std::vector<std::string> written = lines_of(path);
+  ASSERT_EQ(written.size(), 7u);
+  EXPECT_EQ(written[0], "step,time,dt,newton_iterations,linear_iterations,T_min,T_max,T_mean,"
+                        "thermal_energy,max_displacement,min_gap,max_gap,active_pairs,"
+                        "contact_area,normal_force,wall_time");
+  EXPECT_EQ(written[1].substr(0, 2), "0,");
+  EXPECT_THAT(written[3], HasSubstr(",nan,"));
+  comm->barrier();
+
+  // A restart after step 3: rows 0-3 kept (every rank gets them), 4 and 5 dropped.
+  {
+    kiln::HistoryCsv history(raw(*comm), path, 3);
+    EXPECT_EQ(history.warning(), "");
+    ASSERT_EQ(history.kept_rows().size(), 4u);
+    for (int step = 0; step <= 3; ++step)
+      EXPECT_TRUE(same_row(history.kept_rows()[step], row_of(step))) << step;
+    history.append(row_of(4));
+  }
+  comm->barrier();
+  const std::vector<std::string> continued = lines_of(path);
+  ASSERT_EQ(continued.size(), 6u);
+  for (std::size_t i = 0; i < continued.size(); ++i)
+    EXPECT_EQ(continued[i], written[i]) << "line " << i;
+  comm->barrier();
+
+  // Other columns (an older file): kept aside, the history starts anew.
+  if (comm->getRank() == 0)
+    std::ofstream(path) << "time,T\n0,288\n";
+  comm->barrier();
+  {
+    const kiln::HistoryCsv history(raw(*comm), path, 3);
+    EXPECT_THAT(history.warning(), HasSubstr(path +
+                                             " has other columns than this Kiln writes; "
+                                             "it is kept as " +
+                                             path + ".old"));
+    EXPECT_TRUE(history.kept_rows().empty());
+  }
+  comm->barrier();
+  EXPECT_EQ(lines_of(path).size(), 1u);
+  EXPECT_TRUE(std::filesystem::exists(path + ".old"));
+  comm->barrier();
+
+  // No earlier file.
+  if (comm->getRank() == 0)
+    std::filesystem::remove(path);
+  comm->barrier();
+  {
+    const kiln::HistoryCsv history(raw(*comm), path, 7);
+    EXPECT_THAT(history.warning(),
+                HasSubstr("(the earlier run's history) is missing; the history starts at the "
+                          "restart, step 7"));
+  }
+  comm->barrier();
+  if (comm->getRank() == 0)
+  {
+    std::filesystem::remove(path);
+    std::filesystem::remove(path + ".old");
+  }
+}
