@@ -12,7 +12,7 @@ work folder (default BUILD/verification-work). It then
 - compares the initial and final uniform states of each run with the analytic states of
   the spec (../shared/spec/contact-box.md), through tools/contact_box_report.cpp
   (BUILD/tools/kiln_contact_box_report): the formulas live there only;
-- runs the heat-conduction convergence tests (BUILD/tests/unit_heat_convergence, on one
+- runs the heat-conduction convergence tests (BUILD/tests/verification_heat_convergence, on one
   rank) and reads the errors they print;
 - writes OUT/report.md (default doc/verification/; with --quick BUILD/verification-quick/)
   with the tables, the spec's list of errors of the original statement and PNG plots.
@@ -156,7 +156,7 @@ class Runner:
         self.reused = {}  # run: the Kiln commit it ran
         self.kiln = build / "src" / "app" / "kiln"
         self.report_tool = build / "tools" / "kiln_contact_box_report"
-        self.heat_test = build / "tests" / "unit_heat_convergence"
+        self.heat_test = build / "tests" / "verification_heat_convergence"
         for exe in (self.kiln, self.report_tool, self.heat_test):
             if not os.access(exe, os.X_OK):
                 raise ReportError(f"{exe}: not built (cmake --build {build})")
@@ -400,7 +400,7 @@ def table_errors(table):
 
 def parse_heat(text):
     """{"space": [(h, L2 error)], "Backward Euler": [(dt, error)], "BDF2": [...]} from the
-    output of unit_heat_convergence (each rank may print the same lines)."""
+    output of verification_heat_convergence (each rank may print the same lines)."""
     space, time_ = {}, {"Backward Euler": {}, "BDF2": {}}
     for line in text.splitlines():
         m = re.match(r"^cells (\d+) x \d+ x \d+: L2 error (" + NUMBER + ")", line)
@@ -796,9 +796,9 @@ def write_report(out, args, cases, refinement, heat, runner, spec, started, elap
     md += ["", "![closing time under refinement](closing-time.png)", ""]
 
     md += ["## Heat conduction: convergence order", "",
-           "`tests/unit/physics/heat_convergence_test.cpp` (run as "
-           "`build/tests/unit_heat_convergence` on 1 rank): the decay of one cosine mode in a "
-           "rotated box, insulated but for two faces held at T0. Space: BDF2 with small fixed "
+           "`tests/verification/heat_convergence_test.cpp` (run as "
+           "`build/tests/verification_heat_convergence` on 1 rank): the decay of one cosine "
+           "mode in a rotated box, insulated but for two faces held at T0. Space: BDF2 with small fixed "
            "steps on 4 x 2 x 2 ... 32 x 16 x 16 cells, L2 error against the exact solution. "
            "Time: 8 x 2 x 2 cells, max nodal error against the exact semi-discrete solution, "
            "so the time-stepping error alone. The test asserts the order of the last "
@@ -914,7 +914,7 @@ def report(args):
 
     heat = parse_heat(runner.heat_convergence(args.quick))
     if not heat["Backward Euler"] or not heat["BDF2"] or (not args.quick and not heat["space"]):
-        raise ReportError("unit_heat_convergence printed no errors (or not all of them); "
+        raise ReportError("verification_heat_convergence printed no errors (or not all of them); "
                           f"see {args.work / 'heat-convergence' / 'log.txt'}")
 
     for variant in ("A", "B"):
