@@ -210,4 +210,14 @@ NormalContact::NodeValues NormalContact::node_values() const
     }
   return out;
 }
+
+std::vector<double> NormalContact::jacobian_dependencies() const
+{
+  KILN_ASSERT(decided_, "jacobian_dependencies() needs a decision");
+  std::vector<double> d;
+  d.reserve(3 * value_.size());
+  for (const ComplementarityFunction::Value &v : value_)
+    d.insert(d.end(), {v.combined ? 1.0 : 0.0, v.dC_dP, v.dC_dcg});
+  return d;
+}
 } // namespace kiln

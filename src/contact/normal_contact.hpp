@@ -68,6 +68,10 @@ public:
   /// decision to a Jacobian assembly.
   void add_pair_terms(Assembler &assembler) const;
 
+  /// What the contact rows of the Jacobian depend on at the last decision: per pair of this
+  /// rank's overlap, whether its rows are combined, dC/dP and dC/d(cg). Equal vectors give
+  /// equal rows (the min function's are those of the active set).
+  std::vector<double> jacobian_dependencies() const;
   /// At the last decision, per owned pair: in contact (P - c g > 0), and P [Pa].
   const std::vector<char> &active() const { return active_; }
   const std::vector<double> &pressure() const { return pressure_; }

@@ -99,6 +99,7 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
 void CoupledProblem::freeze_temperature(const Vector *x)
 {
   constraints_.hold_temperature(x);
+  ++constraint_generation_;
   if (contact_)
     contact_->invalidate();
 }
@@ -154,6 +155,28 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
     assemble(nullptr, J);
     contact_->jacobian_evaluated();
   }
+}
+
+std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
+{
+  if (!terms_->constant_jacobian())
+    return {};
+  std::vector<double> d{fields_->a(), static_cast<double>(constraint_generation_)};
+  if (contact_)
+  {
+    decide(x);
+    const std::vector<double> c = contact_->jacobian_dependencies();
+    d.insert(d.end(), c.begin(), c.end());
+  }
+  return d;
+}
+
+void CoupledProblem::jacobian_kept(const Vector &x)
+{
+  if (!contact_)
+    return;
+  decide(x);
+  contact_->jacobian_evaluated();
 }
 
 void CoupledProblem::assemble(Vector *f, Matrix *J)
