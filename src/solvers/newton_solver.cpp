@@ -1,5 +1,6 @@
 #include "solvers/newton_solver.hpp"
 
+#include "base/errors.hpp"
 #include "base/parameters.hpp"
 #include "solvers/jacobian_reuse.hpp"
 #include "solvers/model_evaluator.hpp"
@@ -54,6 +55,16 @@ void check_muelu_parameters(const ParameterList &stratimikos,
   if (stratimikos.isSublist("Preconditioner Types") &&
       stratimikos.sublist("Preconditioner Types").isSublist("MueLu"))
     muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+  // MueLu's reuse of a hierarchy for new values inserts into the Jacobian's static graph in
+  // Trilinos 13.2 (both "RP" and "tP" stop the first re-setup); Kiln keeps an unchanged
+  // hierarchy itself (Solver/"Reuse").
+  if (muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none")
+    throw_input_error(where + "/Preconditioner Types/MueLu",
+                      "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
+                          "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
+                          "Jacobian's static graph); remove it (or set \"none\"): Kiln keeps "
+                          "the preconditioner while the Jacobian is unchanged (Solver/Reuse, "
+                          "doc/solvers.md)");
   // MueLu prints its distance to every valid name on std::cout; the message
   // has the closest one.
   std::ostringstream muelu_chatter;
