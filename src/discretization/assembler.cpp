@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <utility>
 
 namespace kiln
@@ -44,18 +45,22 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
 /// A fill-complete graph on `row_map` whose rows are the unknowns of `nodes` (node n's
 /// couplings at couplings[i] for nodes[i]); with `col_map`, its local column ids are that
 /// map's local ids.
-Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const DofManager &dofs,
-                                            const Teuchos::RCP<const Map> &row_map,
-                                            const std::vector<int> &nodes,
-                                            const std::vector<std::vector<int>> &couplings,
-                                            const Teuchos::RCP<const Map> &domain_range,
-                                            const Teuchos::RCP<const Map> &col_map = Teuchos::null)
+Teuchos::RCP<Tpetra::CrsGraph<>>
+make_graph(const DofManager &dofs, const Teuchos::RCP<const Map> &row_map,
+           const std::vector<int> &nodes, const std::vector<std::vector<int>> &couplings,
+           const std::vector<char> &pattern, const Teuchos::RCP<const Map> &domain_range,
+           const Teuchos::RCP<const Map> &col_map = Teuchos::null)
 {
   const int F = dofs.n_node_fields();
+  std::vector<int> per_row(F, 0); // columns of a row of slot s per coupled node
+  for (int s = 0; s < F; ++s)
+    for (int t = 0; t < F; ++t)
+      per_row[s] += pattern[s * F + t];
   std::vector<std::size_t> counts(row_map->getNodeNumElements(), 0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
     for (int s = 0; s < F; ++s)
-      counts[row_map->getLocalElement(dofs.node_dof(nodes[i], s))] = F * couplings[i].size();
+      counts[row_map->getLocalElement(dofs.node_dof(nodes[i], s))] =
+          per_row[s] * couplings[i].size();
   const Teuchos::ArrayView<const std::size_t> row_counts(counts.data(), counts.size());
   auto graph = col_map.is_null()
                    ? Teuchos::rcp(new Tpetra::CrsGraph<>(row_map, row_counts))
@@ -63,13 +68,16 @@ Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const DofManager &dofs,
   std::vector<GO> columns;
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
-    columns.clear();
-    for (const int n : couplings[i]) // sorted nodes give sorted ids
-      for (int s = 0; s < F; ++s)
-        columns.push_back(dofs.node_dof(n, s));
     for (int s = 0; s < F; ++s)
+    {
+      columns.clear();
+      for (const int n : couplings[i]) // sorted nodes give sorted ids
+        for (int t = 0; t < F; ++t)
+          if (pattern[s * F + t])
+            columns.push_back(dofs.node_dof(n, t));
       graph->insertGlobalIndices(dofs.node_dof(nodes[i], s),
                                  Teuchos::ArrayView<const GO>(columns.data(), columns.size()));
+    }
   }
   graph->fillComplete(domain_range, domain_range);
   return graph;
@@ -111,6 +119,14 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
   const auto owned = dofs.owned_dof_map();
   const auto overlap = dofs.overlap_dof_map();
 
+  // Which fields of a node's block couple: all, but T-u without a heat term in u.
+  const int F = dofs.n_node_fields();
+  pattern_.assign(static_cast<std::size_t>(F * F), 1);
+  const int T = dofs.layout().slot(Field::T);
+  if (!couplings_.temperature_depends_on_displacement && T >= 0)
+    for (int t = 0; t < F; ++t)
+      pattern_[T * F + t] = t == T;
+
   // What this rank assembles: its cells and the gap faces of its side-a cells.
   const std::size_t n_faces = couplings_.gap_face_nodes ? mesh.gap_faces.size() : 0;
   std::vector<char> my_cells(mesh.n_cells(), 0), my_faces(n_faces, 0);
@@ -125,7 +141,7 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
     const std::vector<int> &nodes = dofs.overlap_nodes();
     const auto links = internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes),
                                                 my_cells, my_faces, static_cast<int>(nodes.size()));
-    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, links, owned, overlap);
+    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, links, pattern_, owned, overlap);
   }
   // The owned rows get every block that touches them, from any rank: the mesh is
   // replicated, so each rank finds its rows' columns without communication.
@@ -135,7 +151,7 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
     const auto links =
         internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes), all_cells,
                                  all_faces, static_cast<int>(nodes.size()));
-    owned_graph_ = internal::make_graph(dofs, owned, nodes, links, owned);
+    owned_graph_ = internal::make_graph(dofs, owned, nodes, links, pattern_, owned);
   }
 
   overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));
@@ -180,13 +196,35 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
   {
     KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
     const auto &values = local.jacobian_values();
+    const int F = local.n_fields();
+    KILN_ASSERT(F * F == static_cast<int>(pattern_.size()), "local system with other fields");
     for (int i = 0; i < n; ++i)
     {
-      const LO count = overlap_matrix_->sumIntoLocalValues(
-          lids[i], Teuchos::ArrayView<const LO>(lids.data(), n),
-          Teuchos::ArrayView<const double>(values.data() + static_cast<std::size_t>(i) * n, n));
-      KILN_ASSERT(count == n, "entries missing from the graph in row " << lids[i]);
-      (void)count;
+      const double *row = values.data() + static_cast<std::size_t>(i) * n;
+      const char *couples = pattern_.data() + static_cast<std::size_t>(i % F) * F;
+      if (std::all_of(couples, couples + F, [](const char c) { return c != 0; }))
+      {
+        const LO count = overlap_matrix_->sumIntoLocalValues(
+            lids[i], Teuchos::ArrayView<const LO>(lids.data(), n),
+            Teuchos::ArrayView<const double>(row, n));
+        KILN_ASSERT(count == n, "entries missing from the graph in row " << lids[i]);
+        (void)count;
+        continue;
+      }
+      // A row whose block leaves fields out (Couplings): those entries must be zero.
+      row_columns_.clear();
+      row_values_.clear();
+      for (int j = 0; j < n; ++j)
+        if (couples[j % F])
+        {
+          row_columns_.push_back(lids[j]);
+          row_values_.push_back(row[j]);
+        }
+        else if (row[j] != 0.0)
+          throw std::logic_error("Assembler::add: a term couples fields the Jacobian's graph "
+                                 "leaves out (Couplings::temperature_depends_on_displacement)");
+      overlap_matrix_->sumIntoLocalValues(lids[i], Teuchos::arrayViewFromVector(row_columns_),
+                                          Teuchos::arrayViewFromVector(row_values_));
     }
   }
 }

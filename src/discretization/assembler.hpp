@@ -28,6 +28,11 @@ struct Couplings
   std::function<std::vector<int>(int gap_face)> gap_face_nodes;
   /// Every block that holds a gap node also holds its twin (contact mixes a pair's rows).
   bool twins = false;
+  /// Whether the temperature rows have displacement columns (terms of the heat equation that
+  /// depend on u, such as the contact-dependent gap conductance). Without them the node
+  /// blocks store 13 of 16 entries (T-u left out), and a term that puts a nonzero there is a
+  /// bug (Assembler::add throws).
+  bool temperature_depends_on_displacement = true;
   /// The default: the side-a nodes and the twins of every gap face, no twin closure.
   static Couplings gap_faces(const Mesh &mesh);
 };
@@ -79,6 +84,10 @@ private:
   const Mesh &mesh_;
   const DofManager &dofs_;
   Couplings couplings_;
+  /// pattern_[s * F + t]: whether rows of slot s have columns of slot t (F unknowns a node).
+  std::vector<char> pattern_;
+  std::vector<LO> row_columns_;    ///< add(): work
+  std::vector<double> row_values_; ///< add(): work
   Teuchos::RCP<Graph> overlap_graph_;
   Teuchos::RCP<Graph> owned_graph_;
   Teuchos::RCP<Matrix> overlap_matrix_;

@@ -48,6 +48,9 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
     couplings.gap_face_nodes = [&mesh, gap](const int k)
     { return gap->nodes(mesh, mesh.gap_faces[k]); };
   couplings.twins = interface_ != nullptr;
+  // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
+  // puts a T-u entry outside the graph); the gap's may.
+  couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
   assembler_ = std::make_unique<Assembler>(mesh, dofs, couplings);
   if (interface_)
     contact_ =

@@ -90,6 +90,9 @@ public:
   virtual std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const;
   /// Whether evaluate() reads the cells' shape functions (InterfaceState::fe_a, fe_b).
   virtual bool needs_cells() const { return false; }
+  /// Whether its temperature rows depend on the displacement (then the Jacobian's graph
+  /// holds the T-u blocks: Couplings). Default true, the safe answer.
+  virtual bool depends_on_displacement() const { return true; }
   virtual void evaluate(const InterfaceState &state, LocalSystem &local) const = 0;
   /// As CellKernel::constant_jacobian().
   virtual bool constant_jacobian() const { return false; }

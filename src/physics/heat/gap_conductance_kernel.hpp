@@ -33,6 +33,8 @@ public:
   void evaluate(const InterfaceState &state, LocalSystem &local) const override;
   /// A constant conductance.
   bool constant_jacobian() const override { return true; }
+  /// The heat across the gap depends on the temperatures alone.
+  bool depends_on_displacement() const override { return false; }
 
 private:
   double h_;
