@@ -135,13 +135,25 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
   for (std::size_t k = 0; k < n_faces; ++k)
     my_faces[k] = my_cells[mesh.gap_faces[k].cell_a];
 
-  // The overlap rows hold what this rank assembles; the column map is the overlap map, so
-  // that add() can use overlap local ids.
+  // The rows of other ranks' nodes that this rank assembles into (its cells reach them) are
+  // summed in a ghost matrix and exported; its column map is the overlap map, so that add()
+  // can use overlap local ids.
   {
-    const std::vector<int> &nodes = dofs.overlap_nodes();
+    const int rank = owned->getComm()->getRank();
+    std::vector<int> nodes;
+    std::vector<GO> gids;
+    for (const int n : dofs.overlap_nodes())
+      if (dofs.node_owner()[n] != rank)
+      {
+        nodes.push_back(n);
+        for (int s = 0; s < F; ++s)
+          gids.push_back(dofs.node_dof(n, s));
+      }
+    const auto ghost_map = make_map(gids, owned->getComm());
     const auto links = internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes),
                                                 my_cells, my_faces, static_cast<int>(nodes.size()));
-    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, links, pattern_, owned, overlap);
+    ghost_graph_ = internal::make_graph(dofs, ghost_map, nodes, links, pattern_, owned, overlap);
+    ghost_exporter_ = Teuchos::rcp(new Tpetra::Export<>(ghost_map, owned));
   }
   // The owned rows get every block that touches them, from any rank: the mesh is
   // replicated, so each rank finds its rows' columns without communication.
@@ -154,7 +166,21 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
     owned_graph_ = internal::make_graph(dofs, owned, nodes, links, pattern_, owned);
   }
 
-  overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));
+  // Overlap local id -> the owned Jacobian's row, or the ghost matrix's; -> the column of
+  // the owned Jacobian (invalid where no owned row has that column).
+  const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
+  const auto n_overlap = overlap->getNodeNumElements();
+  owned_row_.assign(n_overlap, invalid);
+  ghost_row_.assign(n_overlap, invalid);
+  owned_column_.assign(n_overlap, invalid);
+  for (std::size_t i = 0; i < n_overlap; ++i)
+  {
+    const GO gid = overlap->getGlobalElement(static_cast<LO>(i));
+    owned_row_[i] = owned->getLocalElement(gid);
+    ghost_row_[i] = ghost_graph_->getRowMap()->getLocalElement(gid);
+    owned_column_[i] = owned_graph_->getColMap()->getLocalElement(gid);
+  }
+  ghost_matrix_ = Teuchos::rcp(new Matrix(ghost_graph_));
   overlap_residual_ = Teuchos::rcp(new Vector(overlap));
 }
 
@@ -168,18 +194,44 @@ Teuchos::RCP<Assembler::Vector> Assembler::make_overlap_vector() const
   return Teuchos::rcp(new Vector(dofs_.overlap_dof_map()));
 }
 
-void Assembler::begin(const bool residual, const bool jacobian)
+void Assembler::begin(const bool residual, Matrix *J)
 {
   assembling_residual_ = residual;
-  assembling_jacobian_ = jacobian;
+  J_ = J;
   if (residual)
     overlap_residual_->putScalar(0.0);
-  if (jacobian)
+  if (J != nullptr)
   {
-    if (overlap_matrix_->isFillComplete())
-      overlap_matrix_->resumeFill();
-    overlap_matrix_->setAllToScalar(0.0);
+    KILN_ASSERT(J->getCrsGraph().get() == owned_graph_.get() ||
+                    J->getCrsGraph()->getColMap()->isSameAs(*owned_graph_->getColMap()),
+                "the Jacobian must be built on owned_graph()");
+    J->resumeFill();
+    J->setAllToScalar(0.0);
+    if (ghost_matrix_->isFillComplete())
+      ghost_matrix_->resumeFill();
+    ghost_matrix_->setAllToScalar(0.0);
   }
+}
+
+void Assembler::add_row(const LO lid, const LO *columns, const double *values, const LO n)
+{
+  if (owned_row_[lid] != Teuchos::OrdinalTraits<LO>::invalid())
+  {
+    owned_columns_.resize(n);
+    for (LO j = 0; j < n; ++j)
+      owned_columns_[j] = owned_column_[columns[j]];
+    const LO count = J_->sumIntoLocalValues(owned_row_[lid],
+                                            Teuchos::ArrayView<const LO>(owned_columns_.data(), n),
+                                            Teuchos::ArrayView<const double>(values, n));
+    KILN_ASSERT(count == n, "entries missing from the graph in owned row " << owned_row_[lid]);
+    (void)count;
+    return;
+  }
+  const LO count =
+      ghost_matrix_->sumIntoLocalValues(ghost_row_[lid], Teuchos::ArrayView<const LO>(columns, n),
+                                        Teuchos::ArrayView<const double>(values, n));
+  KILN_ASSERT(count == n, "entries missing from the graph in ghost row " << ghost_row_[lid]);
+  (void)count;
 }
 
 void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
@@ -192,7 +244,7 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
     for (int i = 0; i < n; ++i)
       f[lids[i]] += local.residual_values()[i];
   }
-  if (assembling_jacobian_)
+  if (J_ != nullptr)
   {
     KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
     const auto &values = local.jacobian_values();
@@ -204,11 +256,7 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
       const char *couples = pattern_.data() + static_cast<std::size_t>(i % F) * F;
       if (std::all_of(couples, couples + F, [](const char c) { return c != 0; }))
       {
-        const LO count = overlap_matrix_->sumIntoLocalValues(
-            lids[i], Teuchos::ArrayView<const LO>(lids.data(), n),
-            Teuchos::ArrayView<const double>(row, n));
-        KILN_ASSERT(count == n, "entries missing from the graph in row " << lids[i]);
-        (void)count;
+        add_row(lids[i], lids.data(), row, n);
         continue;
       }
       // A row whose block leaves fields out (Couplings): those entries must be zero.
@@ -223,8 +271,8 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
         else if (row[j] != 0.0)
           throw std::logic_error("Assembler::add: a term couples fields the Jacobian's graph "
                                  "leaves out (Couplings::temperature_depends_on_displacement)");
-      overlap_matrix_->sumIntoLocalValues(lids[i], Teuchos::arrayViewFromVector(row_columns_),
-                                          Teuchos::arrayViewFromVector(row_values_));
+      add_row(lids[i], row_columns_.data(), row_values_.data(),
+              static_cast<LO>(row_columns_.size()));
     }
   }
 }
@@ -239,14 +287,13 @@ void Assembler::finish(Vector *f, Matrix *J)
   }
   if (J != nullptr)
   {
-    KILN_ASSERT(assembling_jacobian_, "finish(J) without begin(jacobian)");
-    overlap_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
-    J->resumeFill();
-    J->setAllToScalar(0.0);
-    J->doExport(*overlap_matrix_, *dofs_.dof_exporter(), Tpetra::ADD);
+    KILN_ASSERT(J == J_, "finish(J) without begin(residual, J)");
+    ghost_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
+    J->doExport(*ghost_matrix_, *ghost_exporter_, Tpetra::ADD);
     J->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
   }
-  assembling_residual_ = assembling_jacobian_ = false;
+  assembling_residual_ = false;
+  J_ = nullptr;
 }
 
 LO Assembler::lid(const GO gid) const

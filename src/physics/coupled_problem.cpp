@@ -188,7 +188,7 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
   // One timer per kind of pass: their call counts are the assemblies (doc/architecture.md).
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer(
       jacobian ? "Kiln: 5 assembly (Jacobian)" : "Kiln: 5 assembly (residual)"));
-  assembler_->begin(f != nullptr, jacobian);
+  assembler_->begin(f != nullptr, J);
   terms_->evaluate(*fields_, jacobian,
                    [this](const std::vector<int> &nodes, LocalSystem &local)
                    { add_local(nodes, local); });
