@@ -90,7 +90,7 @@ void NormalContact::decide(const Vector &x, Vector &R, const std::function<Point
       const LO owned_a = owned_map->getLocalElement(gid_a);
       const LO owned_b = owned_map->getLocalElement(gid_b);
       if (value_[k].combined && owned_a != invalid)
-        values[owned_a] = r[a] + r[b];
+        values[owned_a] = r[a] + r[b] - pair.area * value_[k].C;
       if (owned_b != invalid)
       {
         if (value_[k].combined)
@@ -156,8 +156,8 @@ void NormalContact::combine_rows(const std::vector<int> &nodes, LocalSystem &loc
     for (int c = 0; c < m; ++c)
     {
       const double va = jac[ia * m + c], vb = jac[ib * m + c];
-      jac[ia * m + c] = va + vb;
       jac[ib * m + c] = w * (vb - va);
+      jac[ia * m + c] = va + vb - jac[ib * m + c];
     }
   }
 }
@@ -175,13 +175,17 @@ void NormalContact::add_pair_terms(Assembler &assembler) const
     // the unknowns that are not constrained (those are fixed at their prescribed values).
     const double w = pair.area * pair.c * value_[k].dC_dcg;
     local.clear();
-    const int row = u_slot_ + pair.slot_b;
+    // Row b gets them; row a, which is R_a + R_b - A C, minus them.
     for (int side = 0; side < 2; ++side)
     {
       const int node = side == 0 ? pair.a : pair.b;
       const auto &q = constraints_.axes(node);
       for (int l = constraints_.n_constrained(node); l < 3; ++l)
-        local.jacobian(row, 1, u_slot_ + l, side) = (side == 0 ? -w : w) * dot(pair.normal, q[l]);
+      {
+        const double d = (side == 0 ? -w : w) * dot(pair.normal, q[l]);
+        local.jacobian(u_slot_ + pair.slot_b, 1, u_slot_ + l, side) = d;
+        local.jacobian(u_slot_ + pair.slot_a, 0, u_slot_ + l, side) = -d;
+      }
     }
     assembler.add(assembler.node_lids({pair.a, pair.b}), local);
   }
@@ -209,5 +213,15 @@ NormalContact::NodeValues NormalContact::node_values() const
       out.active[node] = global[n + k];
     }
   return out;
+}
+
+std::vector<double> NormalContact::jacobian_dependencies() const
+{
+  KILN_ASSERT(decided_, "jacobian_dependencies() needs a decision");
+  std::vector<double> d;
+  d.reserve(3 * value_.size());
+  for (const ComplementarityFunction::Value &v : value_)
+    d.insert(d.end(), {v.combined ? 1.0 : 0.0, v.dC_dP, v.dC_dcg});
+  return d;
 }
 } // namespace kiln

@@ -21,8 +21,10 @@ namespace kiln
 /// p g = 0, with the force -p A n on a and p A n on b. The pressure is condensed: from the
 /// assembled rows R without contact, P = (R_b - R_a)/(2A) (the normal rows, n.u being an
 /// unknown of each node) is the pressure that balances the pair, and the complementarity
-/// function decides from P and c g. A pair whose rows are combined has rows R_a + R_b (p
-/// cancels) and A C(P, c g); the others keep theirs (p = 0). The Jacobian is the exact
+/// function decides from P and c g. A pair whose rows are combined has rows
+/// R_a + R_b - A C(P, c g) (p cancels; minus the row of b, which makes the row's diagonal the
+/// pair's stiffness and keeps Krylov iterations of closed contact near those of open contact)
+/// and A C(P, c g); the others keep theirs (p = 0). The Jacobian is the exact
 /// generalized derivative of these rows: the element systems' rows are combined alike
 /// (combine_rows()), plus the terms of A C in g (add_pair_terms()).
 ///
@@ -62,12 +64,17 @@ public:
   std::optional<std::pair<std::vector<int>, LocalSystem>>
   with_twins(const std::vector<int> &nodes, const LocalSystem &local) const;
   /// Combines the Jacobian rows of the pairs of the last decision in a local system in the
-  /// nodes' frames: row a += row b, row b := (dC/dP / 2)(row b - row a).
+  /// nodes' frames: row b := (dC/dP / 2)(row b - row a), row a := row a + row b - row b'
+  /// (row b' the new row b).
   void combine_rows(const std::vector<int> &nodes, LocalSystem &local) const;
   /// Adds the terms of A C in g, A c dC/d(cg) dg/dû, of the owned pairs of the last
   /// decision to a Jacobian assembly.
   void add_pair_terms(Assembler &assembler) const;
 
+  /// What the contact rows of the Jacobian depend on at the last decision: per pair of this
+  /// rank's overlap, whether its rows are combined, dC/dP and dC/d(cg). Equal vectors give
+  /// equal rows (the min function's are those of the active set).
+  std::vector<double> jacobian_dependencies() const;
   /// At the last decision, per owned pair: in contact (P - c g > 0), and P [Pa].
   const std::vector<char> &active() const { return active_; }
   const std::vector<double> &pressure() const { return pressure_; }

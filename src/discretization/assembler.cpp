@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <utility>
 
 namespace kiln
@@ -44,18 +45,22 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
 /// A fill-complete graph on `row_map` whose rows are the unknowns of `nodes` (node n's
 /// couplings at couplings[i] for nodes[i]); with `col_map`, its local column ids are that
 /// map's local ids.
-Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const DofManager &dofs,
-                                            const Teuchos::RCP<const Map> &row_map,
-                                            const std::vector<int> &nodes,
-                                            const std::vector<std::vector<int>> &couplings,
-                                            const Teuchos::RCP<const Map> &domain_range,
-                                            const Teuchos::RCP<const Map> &col_map = Teuchos::null)
+Teuchos::RCP<Tpetra::CrsGraph<>>
+make_graph(const DofManager &dofs, const Teuchos::RCP<const Map> &row_map,
+           const std::vector<int> &nodes, const std::vector<std::vector<int>> &couplings,
+           const std::vector<char> &pattern, const Teuchos::RCP<const Map> &domain_range,
+           const Teuchos::RCP<const Map> &col_map = Teuchos::null)
 {
   const int F = dofs.n_node_fields();
+  std::vector<int> per_row(F, 0); // columns of a row of slot s per coupled node
+  for (int s = 0; s < F; ++s)
+    for (int t = 0; t < F; ++t)
+      per_row[s] += pattern[s * F + t];
   std::vector<std::size_t> counts(row_map->getNodeNumElements(), 0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
     for (int s = 0; s < F; ++s)
-      counts[row_map->getLocalElement(dofs.node_dof(nodes[i], s))] = F * couplings[i].size();
+      counts[row_map->getLocalElement(dofs.node_dof(nodes[i], s))] =
+          per_row[s] * couplings[i].size();
   const Teuchos::ArrayView<const std::size_t> row_counts(counts.data(), counts.size());
   auto graph = col_map.is_null()
                    ? Teuchos::rcp(new Tpetra::CrsGraph<>(row_map, row_counts))
@@ -63,13 +68,16 @@ Teuchos::RCP<Tpetra::CrsGraph<>> make_graph(const DofManager &dofs,
   std::vector<GO> columns;
   for (std::size_t i = 0; i < nodes.size(); ++i)
   {
-    columns.clear();
-    for (const int n : couplings[i]) // sorted nodes give sorted ids
-      for (int s = 0; s < F; ++s)
-        columns.push_back(dofs.node_dof(n, s));
     for (int s = 0; s < F; ++s)
+    {
+      columns.clear();
+      for (const int n : couplings[i]) // sorted nodes give sorted ids
+        for (int t = 0; t < F; ++t)
+          if (pattern[s * F + t])
+            columns.push_back(dofs.node_dof(n, t));
       graph->insertGlobalIndices(dofs.node_dof(nodes[i], s),
                                  Teuchos::ArrayView<const GO>(columns.data(), columns.size()));
+    }
   }
   graph->fillComplete(domain_range, domain_range);
   return graph;
@@ -111,6 +119,14 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
   const auto owned = dofs.owned_dof_map();
   const auto overlap = dofs.overlap_dof_map();
 
+  // Which fields of a node's block couple: all, but T-u without a heat term in u.
+  const int F = dofs.n_node_fields();
+  pattern_.assign(static_cast<std::size_t>(F * F), 1);
+  const int T = dofs.layout().slot(Field::T);
+  if (!couplings_.temperature_depends_on_displacement && T >= 0)
+    for (int t = 0; t < F; ++t)
+      pattern_[T * F + t] = t == T;
+
   // What this rank assembles: its cells and the gap faces of its side-a cells.
   const std::size_t n_faces = couplings_.gap_face_nodes ? mesh.gap_faces.size() : 0;
   std::vector<char> my_cells(mesh.n_cells(), 0), my_faces(n_faces, 0);
@@ -119,13 +135,25 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
   for (std::size_t k = 0; k < n_faces; ++k)
     my_faces[k] = my_cells[mesh.gap_faces[k].cell_a];
 
-  // The overlap rows hold what this rank assembles; the column map is the overlap map, so
-  // that add() can use overlap local ids.
+  // The rows of other ranks' nodes that this rank assembles into (its cells reach them) are
+  // summed in a ghost matrix and exported; its column map is the overlap map, so that add()
+  // can use overlap local ids.
   {
-    const std::vector<int> &nodes = dofs.overlap_nodes();
+    const int rank = owned->getComm()->getRank();
+    std::vector<int> nodes;
+    std::vector<GO> gids;
+    for (const int n : dofs.overlap_nodes())
+      if (dofs.node_owner()[n] != rank)
+      {
+        nodes.push_back(n);
+        for (int s = 0; s < F; ++s)
+          gids.push_back(dofs.node_dof(n, s));
+      }
+    const auto ghost_map = make_map(gids, owned->getComm());
     const auto links = internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes),
                                                 my_cells, my_faces, static_cast<int>(nodes.size()));
-    overlap_graph_ = internal::make_graph(dofs, overlap, nodes, links, owned, overlap);
+    ghost_graph_ = internal::make_graph(dofs, ghost_map, nodes, links, pattern_, owned, overlap);
+    ghost_exporter_ = Teuchos::rcp(new Tpetra::Export<>(ghost_map, owned));
   }
   // The owned rows get every block that touches them, from any rank: the mesh is
   // replicated, so each rank finds its rows' columns without communication.
@@ -135,10 +163,24 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
     const auto links =
         internal::node_couplings(*this, mesh, internal::node_rows(mesh, nodes), all_cells,
                                  all_faces, static_cast<int>(nodes.size()));
-    owned_graph_ = internal::make_graph(dofs, owned, nodes, links, owned);
+    owned_graph_ = internal::make_graph(dofs, owned, nodes, links, pattern_, owned);
   }
 
-  overlap_matrix_ = Teuchos::rcp(new Matrix(overlap_graph_));
+  // Overlap local id -> the owned Jacobian's row, or the ghost matrix's; -> the column of
+  // the owned Jacobian (invalid where no owned row has that column).
+  const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
+  const auto n_overlap = overlap->getNodeNumElements();
+  owned_row_.assign(n_overlap, invalid);
+  ghost_row_.assign(n_overlap, invalid);
+  owned_column_.assign(n_overlap, invalid);
+  for (std::size_t i = 0; i < n_overlap; ++i)
+  {
+    const GO gid = overlap->getGlobalElement(static_cast<LO>(i));
+    owned_row_[i] = owned->getLocalElement(gid);
+    ghost_row_[i] = ghost_graph_->getRowMap()->getLocalElement(gid);
+    owned_column_[i] = owned_graph_->getColMap()->getLocalElement(gid);
+  }
+  ghost_matrix_ = Teuchos::rcp(new Matrix(ghost_graph_));
   overlap_residual_ = Teuchos::rcp(new Vector(overlap));
 }
 
@@ -152,18 +194,44 @@ Teuchos::RCP<Assembler::Vector> Assembler::make_overlap_vector() const
   return Teuchos::rcp(new Vector(dofs_.overlap_dof_map()));
 }
 
-void Assembler::begin(const bool residual, const bool jacobian)
+void Assembler::begin(const bool residual, Matrix *J)
 {
   assembling_residual_ = residual;
-  assembling_jacobian_ = jacobian;
+  J_ = J;
   if (residual)
     overlap_residual_->putScalar(0.0);
-  if (jacobian)
+  if (J != nullptr)
   {
-    if (overlap_matrix_->isFillComplete())
-      overlap_matrix_->resumeFill();
-    overlap_matrix_->setAllToScalar(0.0);
+    KILN_ASSERT(J->getCrsGraph().get() == owned_graph_.get() ||
+                    J->getCrsGraph()->getColMap()->isSameAs(*owned_graph_->getColMap()),
+                "the Jacobian must be built on owned_graph()");
+    J->resumeFill();
+    J->setAllToScalar(0.0);
+    if (ghost_matrix_->isFillComplete())
+      ghost_matrix_->resumeFill();
+    ghost_matrix_->setAllToScalar(0.0);
   }
+}
+
+void Assembler::add_row(const LO lid, const LO *columns, const double *values, const LO n)
+{
+  if (owned_row_[lid] != Teuchos::OrdinalTraits<LO>::invalid())
+  {
+    owned_columns_.resize(n);
+    for (LO j = 0; j < n; ++j)
+      owned_columns_[j] = owned_column_[columns[j]];
+    const LO count = J_->sumIntoLocalValues(owned_row_[lid],
+                                            Teuchos::ArrayView<const LO>(owned_columns_.data(), n),
+                                            Teuchos::ArrayView<const double>(values, n));
+    KILN_ASSERT(count == n, "entries missing from the graph in owned row " << owned_row_[lid]);
+    (void)count;
+    return;
+  }
+  const LO count =
+      ghost_matrix_->sumIntoLocalValues(ghost_row_[lid], Teuchos::ArrayView<const LO>(columns, n),
+                                        Teuchos::ArrayView<const double>(values, n));
+  KILN_ASSERT(count == n, "entries missing from the graph in ghost row " << ghost_row_[lid]);
+  (void)count;
 }
 
 void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
@@ -176,17 +244,35 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
     for (int i = 0; i < n; ++i)
       f[lids[i]] += local.residual_values()[i];
   }
-  if (assembling_jacobian_)
+  if (J_ != nullptr)
   {
     KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
     const auto &values = local.jacobian_values();
+    const int F = local.n_fields();
+    KILN_ASSERT(F * F == static_cast<int>(pattern_.size()), "local system with other fields");
     for (int i = 0; i < n; ++i)
     {
-      const LO count = overlap_matrix_->sumIntoLocalValues(
-          lids[i], Teuchos::ArrayView<const LO>(lids.data(), n),
-          Teuchos::ArrayView<const double>(values.data() + static_cast<std::size_t>(i) * n, n));
-      KILN_ASSERT(count == n, "entries missing from the graph in row " << lids[i]);
-      (void)count;
+      const double *row = values.data() + static_cast<std::size_t>(i) * n;
+      const char *couples = pattern_.data() + static_cast<std::size_t>(i % F) * F;
+      if (std::all_of(couples, couples + F, [](const char c) { return c != 0; }))
+      {
+        add_row(lids[i], lids.data(), row, n);
+        continue;
+      }
+      // A row whose block leaves fields out (Couplings): those entries must be zero.
+      row_columns_.clear();
+      row_values_.clear();
+      for (int j = 0; j < n; ++j)
+        if (couples[j % F])
+        {
+          row_columns_.push_back(lids[j]);
+          row_values_.push_back(row[j]);
+        }
+        else if (row[j] != 0.0)
+          throw std::logic_error("Assembler::add: a term couples fields the Jacobian's graph "
+                                 "leaves out (Couplings::temperature_depends_on_displacement)");
+      add_row(lids[i], row_columns_.data(), row_values_.data(),
+              static_cast<LO>(row_columns_.size()));
     }
   }
 }
@@ -201,14 +287,13 @@ void Assembler::finish(Vector *f, Matrix *J)
   }
   if (J != nullptr)
   {
-    KILN_ASSERT(assembling_jacobian_, "finish(J) without begin(jacobian)");
-    overlap_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
-    J->resumeFill();
-    J->setAllToScalar(0.0);
-    J->doExport(*overlap_matrix_, *dofs_.dof_exporter(), Tpetra::ADD);
+    KILN_ASSERT(J == J_, "finish(J) without begin(residual, J)");
+    ghost_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
+    J->doExport(*ghost_matrix_, *ghost_exporter_, Tpetra::ADD);
     J->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
   }
-  assembling_residual_ = assembling_jacobian_ = false;
+  assembling_residual_ = false;
+  J_ = nullptr;
 }
 
 LO Assembler::lid(const GO gid) const

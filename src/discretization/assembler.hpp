@@ -1,12 +1,14 @@
 #pragma once
 /// Gathers and scatters between the owned system and element-local systems.
 ///
-/// The sparsity graph is built once, on the overlap map, from coupling blocks: every unknown
-/// of a block's nodes couples with every other. The blocks are the cells and, as the physics
-/// says (Couplings), the nodes of each gap face's terms; with `twins`, every block also holds
-/// the twins of its gap nodes. A rank assembles its own cells and the gap faces whose side-a
-/// cell it owns into an overlap residual and matrix, then exports them (ADD) to the owned
-/// residual and Jacobian (overlap-to-owned Export).
+/// The sparsity graph is built once from coupling blocks: every unknown of a block's nodes
+/// couples with every other (but the temperature rows' displacement columns, unless the
+/// physics says a heat term reads u). The blocks are the cells and, as the physics says
+/// (Couplings), the nodes of each gap face's terms; with `twins`, every block also holds the
+/// twins of its gap nodes. A rank assembles its own cells and the gap faces whose side-a cell
+/// it owns: the residual into an overlap vector exported (ADD) to the owned one; the
+/// Jacobian's owned rows straight into the owned Jacobian, the rows of other ranks' nodes into
+/// a ghost matrix exported (ADD) to it, so no second copy of the matrix is kept.
 #include "discretization/dof_manager.hpp"
 #include "discretization/local_system.hpp"
 #include "mesh/mesh.hpp"
@@ -28,6 +30,11 @@ struct Couplings
   std::function<std::vector<int>(int gap_face)> gap_face_nodes;
   /// Every block that holds a gap node also holds its twin (contact mixes a pair's rows).
   bool twins = false;
+  /// Whether the temperature rows have displacement columns (terms of the heat equation that
+  /// depend on u, such as the contact-dependent gap conductance). Without them the node
+  /// blocks store 13 of 16 entries (T-u left out), and a term that puts a nonzero there is a
+  /// bug (Assembler::add throws).
+  bool temperature_depends_on_displacement = true;
   /// The default: the side-a nodes and the twins of every gap face, no twin closure.
   static Couplings gap_faces(const Mesh &mesh);
 };
@@ -50,13 +57,15 @@ public:
   void gather(const Vector &owned, Vector &overlap) const;
   Teuchos::RCP<Vector> make_overlap_vector() const;
 
-  /// Starts an assembly: zeroes the overlap residual and/or matrix.
-  void begin(bool residual, bool jacobian);
+  /// Starts an assembly: zeroes the overlap residual and/or J (built on owned_graph(),
+  /// fill-complete; the owned rows are summed into it directly, those of other ranks'
+  /// nodes in a ghost matrix exported by finish()).
+  void begin(bool residual, Matrix *J);
   /// Adds a local system whose local index k is the unknown with overlap
   /// local id lids[k] (see cell_lids, gap_face_lids).
   void add(const std::vector<LO> &lids, const LocalSystem &local);
-  /// Exports to the owned residual f and/or Jacobian J (J: built on
-  /// owned_graph(), fill-complete on entry and on exit).
+  /// Exports to the owned residual f and/or adds the ghost rows to J (the J of begin();
+  /// fill-complete on exit).
   void finish(Vector *f, Matrix *J);
 
   /// Overlap local ids of a cell's unknowns (node-major, n_node_fields each).
@@ -79,11 +88,23 @@ private:
   const Mesh &mesh_;
   const DofManager &dofs_;
   Couplings couplings_;
-  Teuchos::RCP<Graph> overlap_graph_;
+  /// pattern_[s * F + t]: whether rows of slot s have columns of slot t (F unknowns a node).
+  std::vector<char> pattern_;
+  std::vector<LO> row_columns_;    ///< add(): work
+  std::vector<double> row_values_; ///< add(): work
+  /// Sums a row (overlap local ids) into J or the ghost matrix.
+  void add_row(LO lid, const LO *columns, const double *values, LO n);
+
+  Teuchos::RCP<Graph> ghost_graph_; ///< rows: other ranks' dofs this rank assembles into
   Teuchos::RCP<Graph> owned_graph_;
-  Teuchos::RCP<Matrix> overlap_matrix_;
+  Teuchos::RCP<Matrix> ghost_matrix_;
+  Teuchos::RCP<const Tpetra::Export<>> ghost_exporter_;
+  std::vector<LO> owned_row_;     ///< per overlap local id: J's row, or invalid
+  std::vector<LO> ghost_row_;     ///< per overlap local id: the ghost matrix's row, or invalid
+  std::vector<LO> owned_column_;  ///< per overlap local id: J's local column, or invalid
+  std::vector<LO> owned_columns_; ///< add_row(): work
   Teuchos::RCP<Vector> overlap_residual_;
   bool assembling_residual_ = false;
-  bool assembling_jacobian_ = false;
+  Matrix *J_ = nullptr; ///< the Jacobian being assembled
 };
 } // namespace kiln

@@ -8,6 +8,8 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <vector>
+
 namespace kiln
 {
 class NonlinearProblem
@@ -27,6 +29,15 @@ public:
   /// jacobian_graph() as its static graph, fill-complete on entry and exit).
   /// Collective: every rank calls it with the same pattern of nulls.
   virtual void evaluate(const Vector &x, Vector *f, Matrix *J) = 0;
+  /// Optional: what the Jacobian at x depends on, for reuse. Two states whose vectors are
+  /// equal and non-empty have the same Jacobian, so the solver keeps the matrix it holds
+  /// and its preconditioner instead of evaluating them again (doc/solvers.md). The vector
+  /// is this rank's part; the solver compares on every rank. Collective. Default: empty
+  /// (the Jacobian may change with x or t: never reused).
+  virtual std::vector<double> jacobian_dependencies(const Vector & /*x*/) { return {}; }
+  /// Called instead of evaluate(x, nullptr, J) when the solver keeps the Jacobian it holds
+  /// (the dependencies at x are those of its last evaluation). Collective. Default: nothing.
+  virtual void jacobian_kept(const Vector & /*x*/) {}
   /// Optional: coordinates of the owned rows' nodes and the number of
   /// unknowns per node, for multigrid (MueLu aggregation, repartitioning,
   /// near-null space). Default: none.

@@ -48,6 +48,9 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
     couplings.gap_face_nodes = [&mesh, gap](const int k)
     { return gap->nodes(mesh, mesh.gap_faces[k]); };
   couplings.twins = interface_ != nullptr;
+  // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
+  // puts a T-u entry outside the graph); the gap's may.
+  couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
   assembler_ = std::make_unique<Assembler>(mesh, dofs, couplings);
   if (interface_)
     contact_ =
@@ -99,6 +102,7 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
 void CoupledProblem::freeze_temperature(const Vector *x)
 {
   constraints_.hold_temperature(x);
+  ++constraint_generation_;
   if (contact_)
     contact_->invalidate();
 }
@@ -156,13 +160,35 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
   }
 }
 
+std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
+{
+  if (!terms_->constant_jacobian())
+    return {};
+  std::vector<double> d{fields_->a(), static_cast<double>(constraint_generation_)};
+  if (contact_)
+  {
+    decide(x);
+    const std::vector<double> c = contact_->jacobian_dependencies();
+    d.insert(d.end(), c.begin(), c.end());
+  }
+  return d;
+}
+
+void CoupledProblem::jacobian_kept(const Vector &x)
+{
+  if (!contact_)
+    return;
+  decide(x);
+  contact_->jacobian_evaluated();
+}
+
 void CoupledProblem::assemble(Vector *f, Matrix *J)
 {
   const bool jacobian = J != nullptr;
   // One timer per kind of pass: their call counts are the assemblies (doc/architecture.md).
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer(
       jacobian ? "Kiln: 5 assembly (Jacobian)" : "Kiln: 5 assembly (residual)"));
-  assembler_->begin(f != nullptr, jacobian);
+  assembler_->begin(f != nullptr, J);
   terms_->evaluate(*fields_, jacobian,
                    [this](const std::vector<int> &nodes, LocalSystem &local)
                    { add_local(nodes, local); });

@@ -56,6 +56,12 @@ public:
   Teuchos::RCP<const Vector> unknown_scale() const override { return hints_->unknown_scale(); }
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
+  /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
+  /// the constraints' generation (freeze_temperature()) and the contact decision's
+  /// (NormalContact::jacobian_dependencies()); otherwise none.
+  std::vector<double> jacobian_dependencies(const Vector &x) override;
+  /// The contact monitor sees the active set as after an evaluation.
+  void jacobian_kept(const Vector &x) override;
   void set_time_derivative(double time, double a, const Vector &b) override;
   void step_accepted(double time, const Vector &x) override;
 
@@ -118,6 +124,8 @@ private:
   std::unique_ptr<NodalFields> fields_;
   std::unique_ptr<SolverHints> hints_;
   std::unique_ptr<ResidualTerms> terms_;
+  /// Changes of the constraints' rows (freeze_temperature()).
+  int constraint_generation_ = 0;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
 };

@@ -40,6 +40,11 @@ class CellKernel
 public:
   virtual ~CellKernel() = default;
   virtual void evaluate(const CellState &state, LocalSystem &local) const = 0;
+  /// Whether the Jacobian of evaluate() depends on neither the state (T, u) nor the time,
+  /// only (linearly) on the time-derivative coefficient a: then an unchanged Jacobian and
+  /// its preconditioner are reused (doc/solvers.md). Default false, the safe answer: a new
+  /// kernel whose Jacobian is constant says so by overriding it.
+  virtual bool constant_jacobian() const { return false; }
 };
 
 /// One boundary face: 4 local nodes in hex_face_nodes order.
@@ -57,6 +62,8 @@ class FaceKernel
 public:
   virtual ~FaceKernel() = default;
   virtual void evaluate(const FaceState &state, LocalSystem &local) const = 0;
+  /// As CellKernel::constant_jacobian().
+  virtual bool constant_jacobian() const { return false; }
 };
 
 /// One gap face: the side-a face, its two cells and the local nodes the kernel asked for
@@ -83,6 +90,11 @@ public:
   virtual std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const;
   /// Whether evaluate() reads the cells' shape functions (InterfaceState::fe_a, fe_b).
   virtual bool needs_cells() const { return false; }
+  /// Whether its temperature rows depend on the displacement (then the Jacobian's graph
+  /// holds the T-u blocks: Couplings). Default true, the safe answer.
+  virtual bool depends_on_displacement() const { return true; }
   virtual void evaluate(const InterfaceState &state, LocalSystem &local) const = 0;
+  /// As CellKernel::constant_jacobian().
+  virtual bool constant_jacobian() const { return false; }
 };
 } // namespace kiln

@@ -16,6 +16,17 @@ ResidualTerms::ResidualTerms(const Mesh &mesh, const DofManager &dofs, const Fie
     owns_cell_[c] = 1;
 }
 
+bool ResidualTerms::constant_jacobian() const
+{
+  for (const CellKernel *kernel : cell_kernels_)
+    if (!kernel->constant_jacobian())
+      return false;
+  for (const BoundaryFace &face : faces_)
+    if (!face.condition->constant_jacobian())
+      return false;
+  return interface_kernel_ == nullptr || interface_kernel_->constant_jacobian();
+}
+
 void ResidualTerms::add_cell_kernel(const CellKernel &kernel)
 {
   cell_kernels_.push_back(&kernel);

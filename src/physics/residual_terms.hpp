@@ -31,6 +31,8 @@ public:
 
   /// Evaluates every term at `fields` into systems with or without a Jacobian.
   void evaluate(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+  /// Whether every term's Jacobian is constant (CellKernel::constant_jacobian()).
+  bool constant_jacobian() const;
   /// The gap-face terms alone (the heat across the gap, for output).
   void evaluate_gap_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
 

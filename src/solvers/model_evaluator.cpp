@@ -15,8 +15,10 @@ using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
 
 ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
                                RCP<const NonlinearProblem::Vector> scale,
-                               RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory)
+                               RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory,
+                               RCP<JacobianReuse> reuse)
     : problem_(std::move(problem)), scale_(std::move(scale)), W_factory_(std::move(W_factory)),
+      reuse_(reuse.assert_not_null()),
       space_(Thyra::createVectorSpace<double>(problem_->solution_map()))
 {
   if (!scale_.is_null())
@@ -90,13 +92,20 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
   if (!W_thyra.is_null())
     J = Teuchos::rcp_dynamic_cast<NonlinearProblem::Matrix>(Extraction::getTpetraOperator(W_thyra),
                                                             true);
-  if (scale_.is_null())
+  if (!scale_.is_null())
+    x_unscaled_->elementWiseMultiply(1.0, *scale_, *x, 0.0);
+  const NonlinearProblem::Vector &x_problem = scale_.is_null() ? *x : *x_unscaled_;
+  if (!J.is_null() && reuse_->can_keep(*problem_, x_problem, *J))
   {
-    problem_->evaluate(*x, f.get(), J.get());
-    return;
+    problem_->jacobian_kept(x_problem);
+    J = Teuchos::null;
   }
-  x_unscaled_->elementWiseMultiply(1.0, *scale_, *x, 0.0);
-  problem_->evaluate(*x_unscaled_, f.get(), J.get());
+  if (!f.is_null() || !J.is_null())
+    problem_->evaluate(x_problem, f.get(), J.get());
+  if (!J.is_null())
+    reuse_->evaluated(*J);
+  if (scale_.is_null())
+    return;
   if (!f.is_null())
     f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
   if (!J.is_null())

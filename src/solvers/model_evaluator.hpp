@@ -4,8 +4,10 @@
 /// on jacobian_graph() (static graph), wrapped by Thyra::tpetraLinearOp and
 /// solved with the Stratimikos factory given at construction. With the
 /// unknown scale c (the problem's unknown_scale()), NOX sees the scaled system: x̂ = x / c,
-/// F̂(x̂) = c F(c x̂), Ŵ = diag(c) J diag(c).
+/// F̂(x̂) = c F(c x̂), Ŵ = diag(c) J diag(c). W is evaluated only when JacobianReuse says the
+/// matrix does not hold the Jacobian at x already.
 #include "discretization/nonlinear_problem.hpp"
+#include "solvers/jacobian_reuse.hpp"
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
@@ -20,7 +22,8 @@ public:
   /// `scale`: c, or null for none.
   ModelEvaluator(Teuchos::RCP<NonlinearProblem> problem,
                  Teuchos::RCP<const NonlinearProblem::Vector> scale,
-                 Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory);
+                 Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory,
+                 Teuchos::RCP<JacobianReuse> reuse);
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override;
@@ -40,6 +43,7 @@ private:
   Teuchos::RCP<const NonlinearProblem::Vector> scale_; ///< c, or null
   Teuchos::RCP<NonlinearProblem::Vector> x_unscaled_;  ///< c x̂
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory_;
+  Teuchos::RCP<JacobianReuse> reuse_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_values_;
 };

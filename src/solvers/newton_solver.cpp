@@ -1,6 +1,8 @@
 #include "solvers/newton_solver.hpp"
 
+#include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "solvers/jacobian_reuse.hpp"
 #include "solvers/model_evaluator.hpp"
 #include "solvers/package_errors.hpp"
 #include "solvers/package_parameters.hpp"
@@ -53,6 +55,16 @@ void check_muelu_parameters(const ParameterList &stratimikos,
   if (stratimikos.isSublist("Preconditioner Types") &&
       stratimikos.sublist("Preconditioner Types").isSublist("MueLu"))
     muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+  // MueLu's reuse of a hierarchy for new values inserts into the Jacobian's static graph in
+  // Trilinos 13.2 (both "RP" and "tP" stop the first re-setup); Kiln keeps an unchanged
+  // hierarchy itself (Solver/"Reuse").
+  if (muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none")
+    throw_input_error(where + "/Preconditioner Types/MueLu",
+                      "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
+                          "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
+                          "Jacobian's static graph); remove it (or set \"none\"): Kiln keeps "
+                          "the preconditioner while the Jacobian is unchanged (Solver/Reuse, "
+                          "doc/solvers.md)");
   // MueLu prints its distance to every valid name on std::cout; the message
   // has the closest one.
   std::ostringstream muelu_chatter;
@@ -95,6 +107,12 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
   p.set("Near-Null Space", true,
         "hand MueLu the problem's near-null space (the constant temperature and the six "
         "rigid-body modes) instead of MueLu's default (a constant per unknown of a node) [-]");
+  p.set("Reuse", true,
+        "keep the Jacobian and its preconditioner while the problem says they are unchanged "
+        "(every term linear in the state, the same time-step coefficient, constraints and "
+        "contact decision; doc/solvers.md): the result is the same to the last bit, without "
+        "the assembly and the preconditioner set-up. false: build both at every Newton "
+        "iteration [-]");
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
         positive_int_validator());
@@ -128,6 +146,7 @@ struct NewtonSolver::Impl
   ParameterList nonlinear;
   RCP<Stratimikos::DefaultLinearSolverBuilder> builder;
   RCP<internal::ModelEvaluator> model;
+  RCP<internal::JacobianReuse> reuse;
   /// The unknowns' scale c (NOX sees x / c), or null.
   RCP<const NonlinearProblem::Vector> scale;
   /// Kept between solves: it owns the Jacobian and the linear solver.
@@ -174,6 +193,17 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
                              lows_factory = Thyra::createLinearSolveStrategy(*builder);
                            });
   lows_factory->setOStream(out);
+  // The preconditioner is built by a factory that keeps it while the Jacobian is kept.
+  RCP<Thyra::PreconditionerFactoryBase<double>> preconditioner;
+  std::string preconditioner_name;
+  if (lows_factory->acceptsPreconditionerFactory() &&
+      !lows_factory->getPreconditionerFactory().is_null())
+  {
+    lows_factory->unsetPreconditionerFactory(&preconditioner, &preconditioner_name);
+    lows_factory->setPreconditionerFactory(
+        Teuchos::rcp(new internal::ReusingPreconditionerFactory(preconditioner, reuse)),
+        preconditioner_name);
+  }
   return lows_factory;
 }
 
@@ -205,8 +235,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   s.relative_tolerance = p.get<double>("Relative Tolerance");
   s.max_iterations = p.get<int>("Maximum Iterations");
   s.nonlinear = p.sublist(nonlinear_name);
+  s.reuse = Teuchos::rcp(new internal::JacobianReuse(p.get<bool>("Reuse")));
   const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory = s.create_linear_solver(p);
-  s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory));
+  s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse));
   s.check_nonlinear_parameters();
 }
 
@@ -222,6 +253,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
   namespace ST = NOX::StatusTest;
   using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
   Impl &s = *impl_;
+  const internal::JacobianReuse::Counts before = s.reuse->counts();
 
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
   // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
@@ -267,6 +299,11 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
   result.linear_iterations =
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
+  const internal::JacobianReuse::Counts &after = s.reuse->counts();
+  result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
+  result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
+  result.preconditioners_built = after.preconditioners_built - before.preconditioners_built;
+  result.preconditioners_kept = after.preconditioners_kept - before.preconditioners_kept;
   return result;
 }
 } // namespace kiln

@@ -36,6 +36,11 @@ public:
     int linear_iterations = 0; ///< summed over the Newton iterations
     double initial_residual_norm = 0.0;
     double final_residual_norm = 0.0;
+    /// Jacobians evaluated or kept (Solver/"Reuse"), preconditioners built or kept.
+    int jacobians_evaluated = 0;
+    int jacobians_kept = 0;
+    int preconditioners_built = 0;
+    int preconditioners_kept = 0;
   };
 
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on

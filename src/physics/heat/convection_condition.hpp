@@ -15,6 +15,8 @@ public:
 
   bool is_constraint() const override { return false; }
   void evaluate(const FaceState &state, LocalSystem &local) const override;
+  /// H constant (the ambient temperature only moves the residual).
+  bool constant_jacobian() const override { return true; }
   /// h [W/(m^2 K)].
   double coefficient() const { return coefficient_; }
   /// T_ambient(t) [K].

@@ -31,6 +31,10 @@ public:
                 const std::array<double, 4> &T_b, LocalSystem &local) const;
   /// The same from a gap face's state (local nodes 0-3 on side a, 4-7 their twins).
   void evaluate(const InterfaceState &state, LocalSystem &local) const override;
+  /// A constant conductance.
+  bool constant_jacobian() const override { return true; }
+  /// The heat across the gap depends on the temperatures alone.
+  bool depends_on_displacement() const override { return false; }
 
 private:
   double h_;

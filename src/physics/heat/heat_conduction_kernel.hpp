@@ -32,6 +32,8 @@ public:
                 double dTdot_dT, LocalSystem &local) const;
   /// The same from a cell's state.
   void evaluate(const CellState &state, LocalSystem &local) const override;
+  /// With a constant k: rho c a M + K.
+  bool constant_jacobian() const override { return conductivity_.is_constant(); }
   /// k(T).
   const ConductivityModel &conductivity() const { return conductivity_; }
   /// rho c [J/(m^3 K)].

@@ -14,6 +14,8 @@ public:
 
   bool is_constraint() const override { return false; }
   void evaluate(const FaceState &state, LocalSystem &local) const override;
+  /// No Jacobian.
+  bool constant_jacobian() const override { return true; }
   /// q(t) [W/m^2].
   double flux(const double t) const { return flux_.value(t); }
 

@@ -61,4 +61,9 @@ double ConductivityModel::derivative(const double T) const
 {
   return k_of_T_.slope(T);
 }
+
+bool ConductivityModel::is_constant() const
+{
+  return k_of_T_.n_points() == 1;
+}
 } // namespace kiln

@@ -33,6 +33,8 @@ public:
   double value(double T) const;
   /// dk/dT [W/(m K^2)]; T in [K]. At a breakpoint, the slope of the interval to the right.
   double derivative(double T) const;
+  /// Whether k does not depend on T ("Constant"; a "Table" counts as varying).
+  bool is_constant() const;
 
 private:
   /// Table: the table (at least 2 points). Constant: the single point (0 K, k).

@@ -45,6 +45,8 @@ public:
                 const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
   /// The same from a cell's state, with the body force given at construction.
   void evaluate(const CellState &state, LocalSystem &local) const override;
+  /// Linear thermo-elasticity.
+  bool constant_jacobian() const override { return true; }
 
   /// Volume averages over the cell: stress [Pa], total strain ε [-] and thermal strain
   /// α (T − T_ref) I [-].

@@ -15,6 +15,8 @@ public:
 
   bool is_constraint() const override { return false; }
   void evaluate(const FaceState &state, LocalSystem &local) const override;
+  /// No Jacobian (the load does not follow the face).
+  bool constant_jacobian() const override { return true; }
   /// t [Pa].
   const Point &traction() const { return traction_; }
 

@@ -52,7 +52,7 @@ struct Fixture
     auto T_overlap = assembler.make_overlap_vector();
     assembler.gather(T, *T_overlap);
     const auto t = T_overlap->getData();
-    assembler.begin(f != nullptr, J != nullptr);
+    assembler.begin(f != nullptr, J);
     kiln::ElementValues fe;
     kiln::LocalSystem cell(8, 1);
     for (const int c : dofs.owned_cells())
@@ -206,4 +206,43 @@ TEST(Assembler, GraphHasCellAndGapCouplings)
       graph->getGlobalRowCopy(row, cols(), count);
       EXPECT_NE(std::find(cols.begin(), cols.end(), partner), cols.end()) << "row " << row;
     }
+}
+
+/// Couplings::temperature_depends_on_displacement false: the temperature rows of a
+/// thermo-elastic layout hold temperature columns only, the displacement rows all four; a
+/// local system with a T-u entry is refused, one with zeros there is added.
+TEST(Assembler, LeavesOutTheTemperatureRowsDisplacementColumns)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const Mesh mesh = split_box();
+  const std::vector<int> cell_rank = kiln::partition_cells(mesh, *comm, "test");
+  const kiln::DofManager dofs{mesh, cell_rank, comm, kiln::DofLayout{true, true, false}};
+  for (const bool depends : {true, false})
+  {
+    kiln::Couplings couplings = kiln::Couplings::gap_faces(mesh);
+    couplings.temperature_depends_on_displacement = depends;
+    kiln::Assembler assembler(mesh, dofs, couplings);
+    const auto graph = assembler.owned_graph();
+    for (const int n : dofs.owned_nodes())
+    {
+      const std::size_t T_entries = graph->getNumEntriesInGlobalRow(dofs.dof(n, kiln::Field::T));
+      const std::size_t u_entries = graph->getNumEntriesInGlobalRow(dofs.dof(n, kiln::Field::ux));
+      EXPECT_EQ(u_entries % 4, 0u);
+      EXPECT_EQ(T_entries, depends ? u_entries : u_entries / 4) << "node " << n;
+    }
+    const int c = dofs.owned_cells().front();
+    const std::vector<int> nodes(mesh.connectivity[c].begin(), mesh.connectivity[c].end());
+    kiln::LocalSystem local(8, 4);
+    local.jacobian(0, 0, 0, 0) = 1.0; // T-T
+    local.jacobian(1, 0, 0, 0) = 1.0; // u-T
+    kiln::Assembler::Matrix J(graph);
+    J.fillComplete(graph->getDomainMap(), graph->getRangeMap());
+    assembler.begin(false, &J);
+    EXPECT_NO_THROW(assembler.add(assembler.node_lids(nodes), local));
+    local.jacobian(0, 0, 1, 0) = 1.0; // T-u
+    if (depends)
+      EXPECT_NO_THROW(assembler.add(assembler.node_lids(nodes), local));
+    else
+      EXPECT_THROW(assembler.add(assembler.node_lids(nodes), local), std::logic_error);
+  }
 }

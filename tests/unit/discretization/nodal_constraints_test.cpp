@@ -180,7 +180,7 @@ TEST(NodalConstraints, ConstraintRowsAndHeldTemperatures)
     const auto lid = s.dofs.owned_dof_map()->getLocalElement(s.dofs.dof(0, field));
     return lid == Teuchos::OrdinalTraits<kiln::LO>::invalid() ? std::nan("") : f.getData()[lid];
   };
-  assembler.begin(true, false);
+  assembler.begin(true, nullptr);
   s.constraints.add_rows(*x_overlap, assembler, false);
   assembler.finish(&f, nullptr);
   // s = c ∫|∇φ_0|^2 over the corner cell of the 2 x 2 x 2 unit-size box (cells of 0.5 m):
@@ -195,7 +195,7 @@ TEST(NodalConstraints, ConstraintRowsAndHeldTemperatures)
   kiln::Assembler::Vector held(s.dofs.owned_dof_map());
   held.putScalar(2.0);
   s.constraints.hold_temperature(&held);
-  assembler.begin(true, false);
+  assembler.begin(true, nullptr);
   s.constraints.add_rows(*x_overlap, assembler, false);
   assembler.finish(&f, nullptr);
   for (const int n : s.dofs.owned_nodes())
@@ -210,7 +210,7 @@ TEST(NodalConstraints, ConstraintRowsAndHeldTemperatures)
   EXPECT_EQ(local.jacobian(0, 0, 1, 0), 0.0); // the row is gone
   EXPECT_EQ(local.jacobian(1, 0, 0, 0), 4.0); // the column stays
   s.constraints.hold_temperature(nullptr);
-  assembler.begin(true, false);
+  assembler.begin(true, nullptr);
   s.constraints.add_rows(*x_overlap, assembler, false);
   assembler.finish(&f, nullptr);
   for (const int n : s.dofs.owned_nodes())

@@ -41,8 +41,10 @@ using LO = NonlinearProblem::Map::local_ordinal_type;
 class NonlinearDiffusion final : public NonlinearProblem
 {
 public:
-  NonlinearDiffusion(const RCP<const Teuchos::Comm<int>> &comm, const int n, const int dim)
-      : n_(n), dim_(dim)
+  /// `linear`: k = 1, F(u) = A u - b.
+  NonlinearDiffusion(const RCP<const Teuchos::Comm<int>> &comm, const int n, const int dim,
+                     const bool linear = false)
+      : n_(n), dim_(dim), linear_(linear)
   {
     GO n_total = 1;
     for (int a = 0; a < dim; ++a)
@@ -85,7 +87,10 @@ public:
     const auto u = x_col.getLocalViewHost(Tpetra::Access::ReadOnly);
     const auto &col_map = *graph_->getColMap();
     if (J != nullptr)
+    {
       J->resumeFill();
+      ++jacobian_evaluations;
+    }
     std::vector<double> F_values(map_->getNodeNumElements());
     {
       for (size_t lid = 0; lid < map_->getNodeNumElements(); ++lid)
@@ -108,7 +113,8 @@ public:
             const LO c = col_map.getLocalElement(j);
             const double u_j = u(c, 0);
             F += flux(u_i, u_j);
-            const double m = 0.5 * (u_i + u_j), k = 1.0 + m * m, dk = 2.0 * m;
+            const double m = 0.5 * (u_i + u_j), k = linear_ ? 1.0 : 1.0 + m * m,
+                         dk = linear_ ? 0.0 : 2.0 * m;
             values[0] += 0.5 * dk * (u_i - u_j) + k;
             columns.push_back(c);
             values.push_back(0.5 * dk * (u_i - u_j) - k);
@@ -141,6 +147,13 @@ public:
                           u_star(map_->getGlobalElement(static_cast<LO>(lid))));
     return u;
   }
+
+  std::vector<double> jacobian_dependencies(const Vector & /*x*/) override { return dependencies; }
+  void jacobian_kept(const Vector & /*x*/) override { ++jacobians_kept; }
+  /// What jacobian_dependencies() answers.
+  std::vector<double> dependencies;
+  int jacobian_evaluations = 0;
+  int jacobians_kept = 0;
 
   /// Multiplies F by this (NaN makes a problem whose residual is NaN).
   void set_residual_factor(const double factor) { residual_factor_ = factor; }
@@ -180,13 +193,14 @@ private:
     const auto p = point(gid);
     return 0.5 + p[0] + 2.0 * p[1] * p[2] + std::sin(3.0 * p[0] + p[1] - p[2]);
   }
-  static double flux(const double u_i, const double u_j)
+  double flux(const double u_i, const double u_j) const
   {
     const double m = 0.5 * (u_i + u_j);
-    return (1.0 + m * m) * (u_i - u_j);
+    return (linear_ ? 1.0 : 1.0 + m * m) * (u_i - u_j);
   }
 
   int n_, dim_;
+  bool linear_ = false;
   double residual_factor_ = 1.0;
   RCP<const Map> map_;
   RCP<const Graph> graph_;
@@ -453,3 +467,84 @@ TEST_F(NewtonSolverTest, DISABLED_IterationsPerLinearSolve)
   EXPECT_TRUE(r.converged);
 }
 } // namespace
+
+/// Solve/"Reuse": the Jacobian and the preconditioner are kept while the problem's
+/// dependencies are unchanged on every rank, and built anew otherwise.
+class JacobianReuseTest : public NewtonSolverTest
+{
+protected:
+  RCP<NonlinearDiffusion> problem = Teuchos::rcp(new NonlinearDiffusion(comm, 9, 3, true));
+  /// Solves from x = 0; checks the solution.
+  NewtonSolver::Result solve_once(NewtonSolver &solver)
+  {
+    NonlinearProblem::Vector x(problem->solution_map());
+    const NewtonSolver::Result result = solver.solve(x);
+    NonlinearProblem::Vector error = problem->exact_solution();
+    error.update(1.0, x, -1.0);
+    EXPECT_TRUE(result.converged);
+    EXPECT_LT(error.normInf(), 1e-8);
+    return result;
+  }
+};
+
+TEST_F(JacobianReuseTest, KeptWhileTheDependenciesAreUnchanged)
+{
+  problem->dependencies = {1.0, 2.0};
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  const NewtonSolver::Result first = solve_once(solver);
+  // One Jacobian per Newton iteration, the first evaluated, the others kept.
+  ASSERT_GE(first.newton_iterations, 1);
+  EXPECT_EQ(first.jacobians_evaluated, 1);
+  EXPECT_EQ(first.preconditioners_built, 1);
+  EXPECT_EQ(first.jacobians_kept, first.newton_iterations - 1);
+  EXPECT_EQ(first.preconditioners_kept, first.newton_iterations - 1);
+  const NewtonSolver::Result second = solve_once(solver);
+  EXPECT_EQ(second.jacobians_evaluated, 0);
+  EXPECT_EQ(second.jacobians_kept, second.newton_iterations);
+  EXPECT_EQ(second.preconditioners_built, 0);
+  EXPECT_EQ(second.preconditioners_kept, second.newton_iterations);
+  EXPECT_EQ(second.linear_iterations, first.linear_iterations);
+  EXPECT_EQ(problem->jacobian_evaluations, 1);
+  EXPECT_EQ(problem->jacobians_kept, first.newton_iterations + second.newton_iterations - 1);
+
+  problem->dependencies = {1.0, 3.0};
+  const NewtonSolver::Result changed = solve_once(solver);
+  EXPECT_EQ(changed.jacobians_evaluated, 1);
+  EXPECT_EQ(changed.preconditioners_built, 1);
+}
+
+TEST_F(JacobianReuseTest, NeverKeptWithoutDependencies)
+{
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  solve_once(solver);
+  const NewtonSolver::Result second = solve_once(solver);
+  EXPECT_EQ(second.jacobians_evaluated, second.newton_iterations);
+  EXPECT_EQ(second.jacobians_kept, 0);
+  EXPECT_EQ(second.preconditioners_built, second.newton_iterations);
+}
+
+TEST_F(JacobianReuseTest, NeverKeptWithReuseOff)
+{
+  problem->dependencies = {1.0};
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Reuse", false);
+  NewtonSolver solver(p, problem, quiet());
+  solve_once(solver);
+  const NewtonSolver::Result second = solve_once(solver);
+  EXPECT_EQ(second.jacobians_evaluated, second.newton_iterations);
+  EXPECT_EQ(second.preconditioners_built, second.newton_iterations);
+  EXPECT_EQ(problem->jacobians_kept, 0);
+}
+
+TEST_F(JacobianReuseTest, BuiltAnewWhenOneRanksDependenciesChange)
+{
+  problem->dependencies = {1.0};
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  solve_once(solver);
+  if (comm->getRank() == comm->getSize() - 1)
+    problem->dependencies = {4.0};
+  const NewtonSolver::Result second = solve_once(solver);
+  EXPECT_EQ(second.jacobians_evaluated, 1);
+  EXPECT_EQ(second.preconditioners_built, 1);
+  EXPECT_EQ(second.jacobians_kept, second.newton_iterations - 1);
+}
