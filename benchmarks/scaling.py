@@ -96,10 +96,12 @@ def launch(kiln, deck, np, work, tag):
 def record(case, n, np, work, tag, wall, copies=1):
     """The figures of a finished run from its log and its ranks' peak RSS."""
     log = (work / f"{tag}.log").read_text()
-    if "done:" not in log:
+    # The summary: "status: complete" and "steps: N" (before, one "done: N steps" line).
+    if "status: complete" not in log and "done:" not in log:
         sys.exit(f"scaling.py: {case} N={n} np={np} failed; its log:\n{log[-3000:]}")
     unknowns = int(re.search(r"unknowns: (\d+)", log).group(1))
-    steps = int(re.search(r"done: (\d+) steps?", log).group(1)) if case == "box" else 1
+    steps_found = re.search(r"^steps: (\d+)$", log, re.M) or re.search(r"done: (\d+) steps?", log)
+    steps = int(steps_found.group(1)) if case == "box" else 1
     # Every solve's line (the initial equilibrium's too): "Newton K (L linear)".
     solves = re.findall(r"Newton (\d+) \((\d+) linear\)", log)
     newton = sum(int(k) for k, _ in solves)
