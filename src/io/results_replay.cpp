@@ -92,7 +92,8 @@ int replay_results(const std::string &path, const double until, const ReplayRows
         const int rank = H5Sget_simple_extent_ndims(space.get());
         H5Sget_simple_extent_dims(space.get(), dims, nullptr);
         const FieldDescription *known = describe_field(field);
-        const bool on_nodes = known != nullptr ? known->on_nodes : dims[0] == static_cast<hsize_t>(rows.n_nodes);
+        const bool on_nodes =
+            known != nullptr ? known->on_nodes : dims[0] == static_cast<hsize_t>(rows.n_nodes);
         if (rank < 1 || rank > 2 ||
             dims[0] != static_cast<hsize_t>(on_nodes ? rows.n_nodes : rows.n_cells))
           throw std::runtime_error("step " + name + "/" + field + " has " +
