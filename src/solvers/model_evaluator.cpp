@@ -1,6 +1,7 @@
 #include "solvers/model_evaluator.hpp"
 
 #include "base/errors.hpp"
+#include "solvers/collective_evaluation.hpp"
 
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -92,11 +93,11 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
                                                             true);
   if (scale_.is_null())
   {
-    problem_->evaluate(*x, f.get(), J.get());
+    evaluate_collectively(*problem_, *x, f.get(), J.get());
     return;
   }
   x_unscaled_->elementWiseMultiply(1.0, *scale_, *x, 0.0);
-  problem_->evaluate(*x_unscaled_, f.get(), J.get());
+  evaluate_collectively(*problem_, *x_unscaled_, f.get(), J.get());
   if (!f.is_null())
     f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
   if (!J.is_null())
