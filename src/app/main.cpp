@@ -1,5 +1,6 @@
 // kiln: the command-line driver. See kiln --help.
 #include "app/command_line.hpp"
+#include "app/memory_estimate.hpp"
 #include "app/simulation.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
@@ -53,6 +54,8 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
     simulation.set_restart(cl.restart);
     kiln::install_stop_handlers();
     const kiln::Simulation::Ending ending = simulation.run();
+    *out << "memory: peak " << kiln::memory_text(kiln::peak_resident_memory(*comm))
+         << " resident on the largest rank\n";
     Teuchos::TimeMonitor::summarize(comm.ptr(), *out, false, true, false, Teuchos::Union);
     return ending == kiln::Simulation::Ending::finished ? 0 : 3;
   }
