@@ -1,5 +1,6 @@
 #include "app/progress_report.hpp"
 
+#include "app/memory_estimate.hpp"
 #include "base/log.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
@@ -34,12 +35,6 @@ std::string times_list(const std::vector<double> &times)
   return text;
 }
 
-std::string mib(const double value)
-{
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(1) << value << " MiB";
-  return s.str();
-}
 } // namespace
 
 std::string duration_text(const double seconds)
@@ -56,11 +51,11 @@ std::string duration_text(const double seconds)
   return text;
 }
 
-double peak_rss_mib()
+double peak_rss_bytes()
 {
   struct rusage usage = {};
   getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux: KiB
+  return 1024.0 * static_cast<double>(usage.ru_maxrss); // Linux: KiB
 }
 } // namespace internal
 
@@ -140,7 +135,7 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
                              const Teuchos::Comm<int> &comm) const
 {
   const int n_ranks = comm.getSize();
-  const double mine = internal::peak_rss_mib();
+  const double mine = internal::peak_rss_bytes();
   std::vector<double> peaks(static_cast<std::size_t>(n_ranks), 0.0);
   Teuchos::gatherAll(comm, 1, &mine, n_ranks, peaks.data());
   end_status_line();
@@ -164,9 +159,9 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   }
   std::string per_rank;
   for (const double p : peaks)
-    per_rank += (per_rank.empty() ? "" : ", ") + internal::mib(p);
+    per_rank += (per_rank.empty() ? "" : ", ") + memory_text(p);
   out << "peak RSS per rank: " << per_rank << "\n";
-  out << "peak RSS summed: " << internal::mib(std::accumulate(peaks.begin(), peaks.end(), 0.0))
+  out << "peak RSS summed: " << memory_text(std::accumulate(peaks.begin(), peaks.end(), 0.0))
       << "\n";
   for (const auto &[key, value] : files)
     out << key << ": " << value << "\n";

@@ -18,8 +18,8 @@ namespace internal
 {
 /// A wall-clock duration for people: "0.613 s", "2 min 05 s", "1 h 02 min".
 std::string duration_text(double seconds);
-/// The peak resident memory of this process [MiB] (getrusage).
-double peak_rss_mib();
+/// The peak resident memory of this process [bytes] (getrusage).
+double peak_rss_bytes();
 } // namespace internal
 
 /// The progress of a run, one report per accepted step, and its summary at the end.

@@ -1,6 +1,7 @@
 #include "app/simulation.hpp"
 
 #include "app/checkpoint_schedule.hpp"
+#include "app/memory_estimate.hpp"
 #include "app/output_schedule.hpp"
 #include "app/progress_report.hpp"
 #include "app/results_lock.hpp"
@@ -22,6 +23,7 @@
 #include "mesh/metis_partitioner.hpp"
 #include "physics/coupled_problem.hpp"
 #include "physics/materials/material.hpp"
+#include "solvers/fault_injection.hpp"
 #include "solvers/newton_solver.hpp"
 #include "solvers/time_stepper.hpp"
 
@@ -82,6 +84,8 @@ Teuchos::ParameterList Simulation::valid_parameters()
             "checkpoints to continue a run from (kiln INPUT.xml --restart FILE); see "
             "doc/user-guide.md")
       .setParameters(CheckpointSchedule::valid_parameters());
+  p.sublist("Debug", false, "testing aids; see FaultInjection and doc/user-guide.md")
+      .setParameters(FaultInjection::valid_parameters());
   return p;
 }
 
@@ -119,6 +123,7 @@ Simulation::~Simulation() = default;
 
 void Simulation::setup()
 {
+  check_memory(params_, layout_, input_path_, mesh_file_, *comm_, *out_);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 1 mesh"));
     const MeshFactory factory(params_.sublist("Mesh"), input_path_ + ": Kiln/Mesh", mesh_file_);
@@ -142,7 +147,10 @@ void Simulation::setup()
         Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
                                         params_.sublist("Mechanics"), input_path_ + ": Kiln"));
     problem_->set_log(out_);
-    newton_ = std::make_unique<NewtonSolver>(params_.sublist("Solver"), problem_, out_);
+    solved_ = FaultInjection::wrap(problem_, params_.sublist("Debug"), input_path_ + ": Kiln/Debug",
+                                   *out_);
+    newton_ = std::make_unique<NewtonSolver>(params_.sublist("Solver"), solved_, out_,
+                                             input_path_ + ": Kiln/Solver");
     stepper_ = std::make_unique<TimeStepper>(params_.sublist("Time Stepping"),
                                              input_path_ + ": Kiln/Time Stepping", out_);
   }
@@ -197,7 +205,7 @@ Simulation::Ending Simulation::run()
   bool finished = false;
   try
   {
-    finished = stepper_->run(*problem_, *newton_, state, stop_times(state, checkpoints), observer);
+    finished = stepper_->run(*solved_, *newton_, state, stop_times(state, checkpoints), observer);
   }
   catch (const RunError &e)
   {
@@ -411,12 +419,14 @@ void Simulation::equilibrate()
   problem_->freeze_temperature(nullptr);
   if (!r.converged)
     throw RunError(input_path_ +
-                   ": the initial equilibrium of the displacement (t = 0, at the "
-                   "initial temperature) did not converge (|F| " +
-                   std::to_string(r.initial_residual_norm) + " -> " +
-                   std::to_string(r.final_residual_norm) +
-                   "); check Kiln/Mechanics/Boundary Conditions (is every rigid-body motion "
-                   "held?) and Kiln/Solver");
+                   ": the initial equilibrium of the displacement (t = 0, at the initial "
+                   "temperature) did not converge: " +
+                   newton_failure(r, newton_->max_iterations()) + ". " +
+                   newton_advice(r, newton_->max_iterations()) +
+                   (r.final_residual_norm < 1e-2 * r.initial_residual_norm
+                        ? ""
+                        : "; a body free to move as a rigid body stops it too: check that "
+                          "Kiln/Mechanics/Boundary Conditions hold every rigid-body motion"));
   *out_ << "initial equilibrium: Newton " << r.newton_iterations << " (" << r.linear_iterations
         << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
         << " -> " << r.final_residual_norm << std::defaultfloat << "\n";

@@ -120,6 +120,8 @@ private:
   std::unique_ptr<DofManager> dofs_;
   DofLayout layout_;
   Teuchos::RCP<CoupledProblem> problem_;
+  /// What the solvers see: problem_, or problem_ with Kiln/Debug's fault (FaultInjection).
+  Teuchos::RCP<TransientProblem> solved_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
   std::unique_ptr<OutputSchedule> outputs_;

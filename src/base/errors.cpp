@@ -47,15 +47,19 @@ std::string one_line_library_message(const std::string &what)
   return result;
 }
 
-void check_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
-                        const std::string &where, const std::string &message)
+namespace
+{
+/// The message of the lowest rank where `local_ok` is false, on every rank; "" and false if
+/// it is true everywhere. Collective.
+bool first_failure(const Teuchos::Comm<int> &comm, const bool local_ok, const std::string &message,
+                   std::string &first)
 {
   const int rank = comm.getRank();
   const int my_failed_rank = local_ok ? comm.getSize() : rank;
   int first_failed = comm.getSize();
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, my_failed_rank, Teuchos::outArg(first_failed));
   if (first_failed == comm.getSize())
-    return;
+    return false;
   // Send the failing rank's message to everyone so all ranks throw the same text.
   int length = rank == first_failed ? static_cast<int>(message.size()) : 0;
   Teuchos::broadcast(comm, first_failed, Teuchos::outArg(length));
@@ -63,6 +67,24 @@ void check_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
   text.resize(length);
   if (length > 0)
     Teuchos::broadcast(comm, first_failed, length, text.data());
-  internal::throw_input_error(where, std::string(text.begin(), text.end()));
+  first.assign(text.begin(), text.end());
+  return true;
+}
+} // namespace
+
+void check_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
+                        const std::string &where, const std::string &message)
+{
+  std::string first;
+  if (first_failure(comm, local_ok, message, first))
+    internal::throw_input_error(where, first);
+}
+
+void check_run_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
+                            const std::string &message)
+{
+  std::string first;
+  if (first_failure(comm, local_ok, message, first))
+    throw RunError(first);
 }
 } // namespace kiln

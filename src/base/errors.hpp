@@ -59,6 +59,12 @@ std::string one_line_library_message(const std::string &what);
 /// `message` is taken from the lowest rank where the check failed.
 void check_collectively(const Teuchos::Comm<int> &comm, bool local_ok, const std::string &where,
                         const std::string &message);
+
+/// Throws the same RunError on every rank if `local_ok` is false on any rank (a failure of
+/// the run found on some ranks only: an exception in one rank's assembly). `message` is taken
+/// from the lowest rank where the check failed. Collective.
+void check_run_collectively(const Teuchos::Comm<int> &comm, bool local_ok,
+                            const std::string &message);
 } // namespace kiln
 
 #define KILN_CHECK_INPUT(cond, where, msg)                                                         \

@@ -224,7 +224,9 @@ void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string 
                               const Teuchos::ParameterList &defaults)
 {
   parent
-      .sublist(name, false, doc + internal::pass_through_marker + package + ", which validates it]")
+      .sublist(name, false,
+               doc + internal::pass_through_marker + package +
+                   "; its names and types are checked at kiln --check and when a run starts]")
       .setParameters(defaults);
 }
 

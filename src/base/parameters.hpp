@@ -24,8 +24,9 @@ Teuchos::ParameterList validated(const Teuchos::ParameterList &user,
                                  const std::string &path);
 
 /// Declares sublist `name` of `parent` whose content is handed as is to a
-/// Trilinos package (NOX, Stratimikos, MueLu), which validates it itself:
-/// kiln::validated() does not look inside. `defaults` are Kiln's defaults.
+/// Trilinos package (NOX, Stratimikos, MueLu): kiln::validated() does not look inside; it is
+/// checked against the packages' names (src/solvers/solver_parameter_checks.hpp). `defaults`
+/// are Kiln's defaults.
 void set_pass_through_sublist(Teuchos::ParameterList &parent, const std::string &name,
                               const std::string &package, const std::string &doc,
                               const Teuchos::ParameterList &defaults);

@@ -67,6 +67,16 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
                           "fewer cells");
 }
 
+long long BoxMeshGenerator::n_cells() const
+{
+  return static_cast<long long>(cells_[0]) * cells_[1] * cells_[2];
+}
+
+long long BoxMeshGenerator::n_nodes() const
+{
+  return (cells_[0] + 1LL) * (cells_[1] + 1LL) * (cells_[2] + 1LL);
+}
+
 Mesh BoxMeshGenerator::generate() const
 {
   const int nx = cells_[0], ny = cells_[1], nz = cells_[2];

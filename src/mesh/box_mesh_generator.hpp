@@ -18,6 +18,10 @@ public:
   /// `params` must be validated; `where` names it in messages.
   BoxMeshGenerator(const Teuchos::ParameterList &params, const std::string &where);
   Mesh generate() const;
+  /// The counts generate() makes, without making them (the gap split adds the nodes of the
+  /// plane x = 0 once more).
+  long long n_cells() const;
+  long long n_nodes() const;
 
 private:
   std::array<double, 3> size_;

@@ -458,6 +458,45 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   return mesh;
 }
 
+ExodusCounts exodus_counts(const std::string &path)
+{
+  KILN_CHECK_INPUT(std::ifstream(path).good(), "",
+                   "cannot open Exodus file \"" << path
+                                                << "\" (missing or not readable): check the path");
+  check_netcdf_file(path);
+  int comp_ws = sizeof(double), io_ws = 0;
+  float version = 0.0F;
+  const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
+  KILN_CHECK_INPUT(id >= 0, "",
+                   "cannot open Exodus file \"" << path
+                                                << "\": it is not an Exodus II (netCDF) file; "
+                                                   "check the path and export the mesh as Exodus");
+  internal::ExodusFile file(id);
+  // The counts the file's data back, not the header's alone: a damaged header (a node count
+  // without coordinates) is reported by read_exodus_mesh, not taken for a large mesh.
+  const auto dimension = [id](const std::string &name)
+  {
+    int dim = -1;
+    std::size_t length = 0;
+    return nc_inq_dimid(id, name.c_str(), &dim) == NC_NOERR &&
+                   nc_inq_dimlen(id, dim, &length) == NC_NOERR
+               ? static_cast<long long>(length)
+               : 0LL;
+  };
+  const auto variable = [id](const std::string &name)
+  {
+    int var = -1;
+    return nc_inq_varid(id, name.c_str(), &var) == NC_NOERR;
+  };
+  ExodusCounts counts;
+  if (variable("coord") || (variable("coordx") && variable("coordy") && variable("coordz")))
+    counts.nodes = dimension("num_nodes");
+  for (long long b = 1, n = dimension("num_el_blk"); b <= n; ++b)
+    if (variable("connect" + std::to_string(b)))
+      counts.elements += dimension("num_el_in_blk" + std::to_string(b));
+  return counts;
+}
+
 bool exodus_file_in_metres(const std::string &path)
 {
   KILN_CHECK_INPUT(std::ifstream(path).good(), "",

@@ -33,6 +33,18 @@ void write_exodus_mesh(const Mesh &mesh, const std::string &path, int gap_side_s
 /// The same with gap_side_set = mesh.gap_side_set.
 void write_exodus_mesh(const Mesh &mesh, const std::string &path);
 
+/// The node and element counts of the Exodus file at `path`, from its netCDF header alone
+/// (nothing else is read): the nodes if there are coordinates, the elements of the blocks
+/// with a connectivity (a damaged file is reported when read_exodus_mesh reads it). Throws
+/// InputError naming the file when it cannot be opened as Exodus or its netCDF header is
+/// damaged or cut short.
+struct ExodusCounts
+{
+  long long nodes = 0;
+  long long elements = 0;
+};
+ExodusCounts exodus_counts(const std::string &path);
+
 /// The info record of every Exodus file Kiln writes: its coordinates are in metres.
 inline constexpr const char *exodus_metres_record = "Kiln: coordinates in metres (m)";
 

@@ -90,6 +90,32 @@ Mesh MeshFactory::build() const
   return mesh;
 }
 
+MeshFactory::Counts MeshFactory::counts() const
+{
+  Counts c;
+  if (type_ == "Box")
+  {
+    const BoxMeshGenerator box(params_.sublist("Box"), where_ + "/Box"); // checks the counts
+    const auto &cells = params_.sublist("Box").get<Teuchos::Array<int>>("Cells");
+    c.cells = box.n_cells();
+    // The split at the plane x = 0 (the box's interior side set) gives its nodes twins.
+    c.nodes = box.n_nodes() + (gap_side_set_ != 0 ? (cells[1] + 1LL) * (cells[2] + 1LL) : 0LL);
+    c.source = where_ + "/Box/\"Cells\" = {" + std::to_string(cells[0]) + ", " +
+               std::to_string(cells[1]) + ", " + std::to_string(cells[2]) + "}";
+    return c;
+  }
+  KILN_CHECK_INPUT(std::filesystem::exists(exodus_file_), where_ + "/Exodus/\"File\"",
+                   "the mesh file \"" << exodus_file_
+                                      << "\" does not exist (relative paths start "
+                                         "from the working directory "
+                                      << std::filesystem::current_path().string() << ")");
+  const ExodusCounts exodus = exodus_counts(exodus_file_);
+  c.cells = exodus.elements;
+  c.nodes = exodus.nodes;
+  c.source = "the mesh file " + exodus_file_;
+  return c;
+}
+
 std::string MeshFactory::description() const
 {
   if (type_ == "Exodus")

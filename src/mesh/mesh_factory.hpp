@@ -20,6 +20,15 @@ public:
 
   /// The mesh as generated or read, checked, not yet split.
   Mesh build() const;
+  /// The counts of the mesh build() gives after the gap split, without building it: the
+  /// box's from "Cells", an Exodus file's from its header (without the twins of the split).
+  struct Counts
+  {
+    long long cells = 0;
+    long long nodes = 0;
+    std::string source; ///< what sets them, for messages: `where/Box/"Cells" = {...}` or the file
+  };
+  Counts counts() const;
   /// The side set to split at (0: none).
   int gap_side_set() const { return gap_side_set_; }
   /// A one-line description ("box 4 x 4 x 4" or the Exodus file name).

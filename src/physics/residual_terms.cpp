@@ -1,14 +1,46 @@
 #include "physics/residual_terms.hpp"
 
+#include "base/errors.hpp"
 #include "discretization/element_values.hpp"
 #include "discretization/face_values.hpp"
 #include "mesh/hex_geometry.hpp"
 
 #include <algorithm>
 #include <array>
+#include <new>
+#include <stdexcept>
+#include <string>
 
 namespace kiln
 {
+namespace internal
+{
+/// The exception of a term, with the cell or face it was evaluated on.
+class TermFailure : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Runs `evaluate`; an exception (but running out of memory) becomes a TermFailure naming
+/// `item()` ("cell 12 (block 2)").
+template <typename Evaluate, typename Item> void naming(const Evaluate &evaluate, const Item &item)
+{
+  try
+  {
+    evaluate();
+  }
+  catch (const std::bad_alloc &)
+  {
+    throw;
+  }
+  catch (const std::exception &e)
+  {
+    throw TermFailure(item() + ": " + one_line_library_message(e.what()));
+  }
+}
+} // namespace internal
+
 ResidualTerms::ResidualTerms(const Mesh &mesh, const DofManager &dofs, const FieldSlots slots)
     : mesh_(mesh), dofs_(dofs), slots_(slots), owns_cell_(mesh.n_cells(), 0)
 {
@@ -59,9 +91,23 @@ void ResidualTerms::set_interface_kernel(const InterfaceKernel &kernel)
 
 void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, const Sink &sink) const
 {
-  evaluate_cells(fields, jacobian, sink);
-  evaluate_faces(fields, jacobian, sink);
-  evaluate_gap_faces(fields, jacobian, sink);
+  // An exception of a term on some ranks must not leave the others waiting in the export that
+  // follows: every rank ends its terms, then one reduction decides.
+  std::string failure;
+  try
+  {
+    evaluate_cells(fields, jacobian, sink);
+    evaluate_faces(fields, jacobian, sink);
+    evaluate_gap_faces(fields, jacobian, sink);
+  }
+  catch (const internal::TermFailure &e)
+  {
+    const Teuchos::Comm<int> &comm = *dofs_.owned_dof_map()->getComm();
+    failure = "the assembly of the " + std::string(jacobian ? "Jacobian" : "residual") +
+              " failed on rank " + std::to_string(comm.getRank()) + " of " +
+              std::to_string(comm.getSize()) + " at " + e.what() + "; every rank stopped";
+  }
+  check_run_collectively(*dofs_.owned_dof_map()->getComm(), failure.empty(), failure);
 }
 
 void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobian,
@@ -82,11 +128,18 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
       T_dot[i] = fields.T_dot(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }
-    fe.reinit(cell_nodes(mesh_, c));
-    local.clear();
-    for (const CellKernel *kernel : cell_kernels_)
-      kernel->evaluate(state, local);
-    sink(nodes, local);
+    internal::naming(
+        [&]
+        {
+          fe.reinit(cell_nodes(mesh_, c));
+          local.clear();
+          for (const CellKernel *kernel : cell_kernels_)
+            kernel->evaluate(state, local);
+          sink(nodes, local);
+        },
+        [&] {
+          return "cell " + std::to_string(c) + " (block " + std::to_string(mesh_.block_id[c]) + ")";
+        });
   }
 }
 
@@ -107,10 +160,16 @@ void ResidualTerms::evaluate_faces(const NodalFields &fields, const bool jacobia
       T[i] = fields.T(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }
-    fv.reinit(face_nodes(mesh_, face.cell, face.face));
-    local.clear();
-    face.condition->evaluate(state, local);
-    sink(nodes, local);
+    internal::naming(
+        [&]
+        {
+          fv.reinit(face_nodes(mesh_, face.cell, face.face));
+          local.clear();
+          face.condition->evaluate(state, local);
+          sink(nodes, local);
+        },
+        [&]
+        { return "side " + std::to_string(face.face) + " of cell " + std::to_string(face.cell); });
   }
 }
 
@@ -137,25 +196,30 @@ void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jac
       T[i] = fields.T(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }
-    fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
-    if (kernel.needs_cells())
-    {
-      const auto local_of = [&](const int node)
-      {
-        const auto at = std::find(nodes.begin(), nodes.end(), node);
-        return at == nodes.end() ? -1 : static_cast<int>(at - nodes.begin());
-      };
-      for (int i = 0; i < n_hex_nodes; ++i)
-      {
-        cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
-        cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
-      }
-      fe_a.reinit(cell_nodes(mesh_, face.cell_a));
-      fe_b.reinit(cell_nodes(mesh_, face.cell_b));
-    }
-    LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
-    kernel.evaluate(state, local);
-    sink(nodes, local);
+    internal::naming(
+        [&]
+        {
+          fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
+          if (kernel.needs_cells())
+          {
+            const auto local_of = [&](const int node)
+            {
+              const auto at = std::find(nodes.begin(), nodes.end(), node);
+              return at == nodes.end() ? -1 : static_cast<int>(at - nodes.begin());
+            };
+            for (int i = 0; i < n_hex_nodes; ++i)
+            {
+              cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
+              cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
+            }
+            fe_a.reinit(cell_nodes(mesh_, face.cell_a));
+            fe_b.reinit(cell_nodes(mesh_, face.cell_b));
+          }
+          LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
+          kernel.evaluate(state, local);
+          sink(nodes, local);
+        },
+        [&] { return "gap face " + std::to_string(gap_faces_[f]); });
   }
 }
 } // namespace kiln

@@ -29,7 +29,9 @@ public:
   void add_boundary_conditions(const std::vector<std::unique_ptr<BoundaryCondition>> &conditions);
   void set_interface_kernel(const InterfaceKernel &kernel);
 
-  /// Evaluates every term at `fields` into systems with or without a Jacobian.
+  /// Evaluates every term at `fields` into systems with or without a Jacobian. An exception
+  /// of a term on some ranks becomes, once every rank has evaluated its terms, the same
+  /// RunError on every rank, naming the rank and the cell or face. Collective.
   void evaluate(const NodalFields &fields, bool jacobian, const Sink &sink) const;
   /// Whether every term's Jacobian is constant (CellKernel::constant_jacobian()).
   bool constant_jacobian() const;

@@ -1,6 +1,7 @@
 #include "solvers/model_evaluator.hpp"
 
 #include "base/errors.hpp"
+#include "solvers/collective_evaluation.hpp"
 
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -101,7 +102,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
     J = Teuchos::null;
   }
   if (!f.is_null() || !J.is_null())
-    problem_->evaluate(x_problem, f.get(), J.get());
+    evaluate_collectively(*problem_, x_problem, f.get(), J.get());
   if (!J.is_null())
     reuse_->evaluated(*J);
   if (scale_.is_null())

@@ -35,7 +35,8 @@ public:
 
 private:
   Thyra::ModelEvaluatorBase::OutArgs<double> createOutArgsImpl() const override;
-  /// f = F(x) and/or W = dF/dx through NonlinearProblem::evaluate.
+  /// f = F(x) and/or W = dF/dx through NonlinearProblem::evaluate; a failure on some ranks
+  /// is the same RunError on every rank (evaluate_collectively).
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double> &in_args,
                      const Thyra::ModelEvaluatorBase::OutArgs<double> &out_args) const override;
 

@@ -6,8 +6,8 @@
 #include "solvers/model_evaluator.hpp"
 #include "solvers/package_errors.hpp"
 #include "solvers/package_parameters.hpp"
+#include "solvers/solver_parameter_checks.hpp"
 
-#include <MueLu_ParameterListInterpreter.hpp>
 #include <NOX_SolverStats.hpp>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
@@ -24,6 +24,7 @@
 #include <Thyra_LinearSolverBuilderBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -41,47 +42,6 @@ const std::string solver_block = "Solver";
 const std::string nonlinear_name = "Nonlinear Solver";
 const std::string linear_name = "Linear Solver";
 
-/// MueLu reads its list only when the first preconditioner is built; check
-/// it now so that a wrong option is an input error before any solve, on every
-/// rank: "<where>/Preconditioner Types/MueLu: <MueLu's message>" (`where`: the
-/// Stratimikos list's block). Here and not in package_parameters.cpp: it needs
-/// MueLu's headers, which this file includes anyway.
-void check_muelu_parameters(const ParameterList &stratimikos,
-                            const RCP<const Teuchos::Comm<int>> &comm, const std::string &where)
-{
-  if (!uses_muelu(stratimikos))
-    return;
-  ParameterList muelu;
-  if (stratimikos.isSublist("Preconditioner Types") &&
-      stratimikos.sublist("Preconditioner Types").isSublist("MueLu"))
-    muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
-  // MueLu's reuse of a hierarchy for new values inserts into the Jacobian's static graph in
-  // Trilinos 13.2 (both "RP" and "tP" stop the first re-setup); Kiln keeps an unchanged
-  // hierarchy itself (Solver/"Reuse").
-  if (muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none")
-    throw_input_error(where + "/Preconditioner Types/MueLu",
-                      "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
-                          "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
-                          "Jacobian's static graph); remove it (or set \"none\"): Kiln keeps "
-                          "the preconditioner while the Jacobian is unchanged (Solver/Reuse, "
-                          "doc/solvers.md)");
-  // MueLu prints its distance to every valid name on std::cout; the message
-  // has the closest one.
-  std::ostringstream muelu_chatter;
-  std::streambuf *const cout_buffer = std::cout.rdbuf(muelu_chatter.rdbuf());
-  try
-  {
-    as_input_error(
-        *comm, where + "/Preconditioner Types/MueLu",
-        [&] { MueLu::ParameterListInterpreter<double, int, long long, Node> check(muelu, comm); });
-  }
-  catch (...)
-  {
-    std::cout.rdbuf(cout_buffer);
-    throw;
-  }
-  std::cout.rdbuf(cout_buffer);
-}
 } // namespace internal
 
 using internal::linear_name;
@@ -140,6 +100,7 @@ struct NewtonSolver::Impl
   RCP<NonlinearProblem> problem;
   RCP<Teuchos::FancyOStream> out;
   RCP<const Teuchos::Comm<int>> comm;
+  std::string where; ///< the block in messages ("in.xml: Kiln/Solver")
   double absolute_tolerance = 0.0;
   double relative_tolerance = 0.0;
   int max_iterations = 0;
@@ -168,7 +129,8 @@ struct NewtonSolver::Impl
 };
 
 /// Stratimikos validates its list and the Belos/Ifpack2 sublists when the strategy is
-/// created; MueLu's list is checked before. Sets `scale` too.
+/// created, but not the lists of Belos' solvers; those, NOX's and MueLu's lists are checked
+/// before (solver_parameter_checks.hpp). Sets `scale` too.
 RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
 {
@@ -180,9 +142,9 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
       Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
                                   Thyra::Ifpack2PreconditionerFactory<NonlinearProblem::Matrix>>(),
       "Ifpack2");
-  const std::string linear_block = internal::solver_block + "/" + linear_name;
+  const std::string linear_block = where + "/" + linear_name;
   internal::add_smoother_defaults(*linear);
-  internal::check_muelu_parameters(*linear, comm, linear_block);
+  internal::check_solver_parameters(p, *linear, *builder->getValidParameters(), comm, where);
   scale = p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;
   internal::add_coordinates(*linear, *problem, *comm, p.get<bool>("Near-Null Space"), scale);
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory;
@@ -212,7 +174,7 @@ void NewtonSolver::Impl::check_nonlinear_parameters()
 {
   const NOX::Thyra::Vector x0(model->getNominalValues().get_x()->clone_v());
   group = Teuchos::rcp(new NOX::Thyra::Group(x0, model));
-  internal::as_input_error(*comm, internal::solver_block + "/" + nonlinear_name,
+  internal::as_input_error(*comm, where + "/" + nonlinear_name,
                            [&]
                            {
                              NOX::Solver::buildSolver(
@@ -223,10 +185,11 @@ void NewtonSolver::Impl::check_nonlinear_parameters()
 
 NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
                            Teuchos::RCP<NonlinearProblem> problem,
-                           Teuchos::RCP<Teuchos::FancyOStream> out)
+                           Teuchos::RCP<Teuchos::FancyOStream> out, const std::string &where)
     : impl_(std::make_unique<Impl>())
 {
   Impl &s = *impl_;
+  s.where = where;
   const ParameterList p = validated(params, valid_parameters(), "", internal::solver_block);
   s.problem = problem.assert_not_null();
   s.out = out.is_null() ? Teuchos::getFancyOStream(Teuchos::rcpFromRef(std::cout)) : out;
@@ -272,6 +235,8 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
   s.group->computeF();
   Result result;
   result.initial_residual_norm = s.group->getNormF();
+  result.tolerance =
+      std::max(s.absolute_tolerance, s.relative_tolerance * result.initial_residual_norm);
 
   // NaN/Inf first: with the "Minimal" check type the first test that is not
   // Unconverged decides.

@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <memory>
+#include <string>
 
 namespace kiln
 {
@@ -24,9 +25,10 @@ public:
   /// Debian's Trilinos 13.2), each with documented defaults.
   static Teuchos::ParameterList valid_parameters();
 
-  /// `params` is the validated "Solver" block.
+  /// `params` is the validated "Solver" block; `where` names it in messages ("in.xml:
+  /// Kiln/Solver"). The package sublists are checked here (solver_parameter_checks.hpp).
   NewtonSolver(const Teuchos::ParameterList &params, Teuchos::RCP<NonlinearProblem> problem,
-               Teuchos::RCP<Teuchos::FancyOStream> out);
+               Teuchos::RCP<Teuchos::FancyOStream> out, const std::string &where = "Solver");
   ~NewtonSolver();
 
   struct Result
@@ -41,6 +43,9 @@ public:
     int jacobians_kept = 0;
     int preconditioners_built = 0;
     int preconditioners_kept = 0;
+    /// The ||F|| that counts as converged: max("Absolute Tolerance", "Relative Tolerance"
+    /// * initial_residual_norm).
+    double tolerance = 0.0;
   };
 
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on

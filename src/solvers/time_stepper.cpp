@@ -48,7 +48,79 @@ std::string seconds(const double t)
   s << std::setprecision(6) << t << " s";
   return s.str();
 }
+
+std::string norm(const double value)
+{
+  std::ostringstream s;
+  s << std::scientific << std::setprecision(3) << value;
+  return s.str();
+}
+
+/// The factor by which |F| fell ("1.2e+04"), or "none" if it did not.
+std::string reduction(const NewtonSolver::Result &r)
+{
+  if (!(r.final_residual_norm < r.initial_residual_norm) || r.final_residual_norm <= 0.0)
+    return r.final_residual_norm <= 0.0 ? "all" : "none";
+  std::ostringstream s;
+  s << std::setprecision(2) << r.initial_residual_norm / r.final_residual_norm;
+  return s.str();
+}
+
+bool finite(const NewtonSolver::Result &r)
+{
+  return std::isfinite(r.initial_residual_norm) && std::isfinite(r.final_residual_norm);
+}
+
+/// |F| ended near its tolerance, or so far below where it started that the tolerance is
+/// likely below the round-off of the problem.
+bool near_tolerance(const NewtonSolver::Result &r)
+{
+  return r.final_residual_norm <= 100.0 * r.tolerance ||
+         r.final_residual_norm <= 1e-8 * r.initial_residual_norm;
+}
 } // namespace internal
+
+std::string newton_failure(const NewtonSolver::Result &r, const int max_iterations)
+{
+  using internal::norm;
+  std::ostringstream s;
+  const std::string norms = "|F| " + norm(r.initial_residual_norm) + " -> " +
+                            norm(r.final_residual_norm) + ", tolerance " + norm(r.tolerance);
+  if (!std::isfinite(r.initial_residual_norm))
+    s << "the residual at the start of the step is not a finite number (NaN or Inf)";
+  else if (!std::isfinite(r.final_residual_norm))
+    s << "the residual became NaN or Inf after " << r.newton_iterations
+      << " Newton iterations (|F| " << norm(r.initial_residual_norm) << " before)";
+  else if (r.newton_iterations >= max_iterations)
+    s << "Newton reached its limit of " << max_iterations
+      << " iterations (Solver/\"Maximum Iterations\") without converging (" << norms
+      << "; |F| fell by a factor " << internal::reduction(r) << ")";
+  else
+    s << "NOX stopped after " << r.newton_iterations << " of " << max_iterations
+      << " iterations without converging, as a line search or a linear solve failed (" << norms
+      << ")";
+  return s.str();
+}
+
+std::string newton_advice(const NewtonSolver::Result &r, const int max_iterations)
+{
+  if (!internal::finite(r))
+    return "A NaN or Inf comes from a value out of its range at the state reached (material "
+           "data, a condition's value) or from a diverging solve; smaller steps help with the "
+           "latter (\"Maximum Step\", \"Initial Step\")";
+  if (r.newton_iterations >= max_iterations && internal::near_tolerance(r))
+    return "|F| came close to its tolerance or fell to the round-off of this problem: the "
+           "tolerance may be out of reach; loosen Solver/\"Absolute Tolerance\" or \"Relative "
+           "Tolerance\", or raise Solver/\"Maximum Iterations\"";
+  if (r.newton_iterations >= max_iterations &&
+      r.final_residual_norm < 1e-2 * r.initial_residual_norm)
+    return "|F| was still falling: raise Solver/\"Maximum Iterations\", or take smaller steps "
+           "(\"Maximum Step\")";
+  return "Newton does not converge from this state with this step: take smaller steps "
+         "(\"Maximum Step\", \"Initial Step\"), check that the linear solves converge "
+         "(Solver/Linear Solver: its iteration limit and tolerance), or use a line search "
+         "(Solver/Nonlinear Solver/Line Search/\"Method\" = \"Backtrack\")";
+}
 
 Teuchos::ParameterList TimeStepper::valid_parameters()
 {
@@ -144,10 +216,8 @@ NewtonSolver::Result TimeStepper::steady_solve(TransientProblem &problem, Newton
   const NewtonSolver::Result r = newton.solve(x);
   if (!r.converged)
     throw RunError(where_ + ": the steady solve at t = " + seconds(time) +
-                   " did not converge (|F| " + std::to_string(r.initial_residual_norm) + " -> " +
-                   std::to_string(r.final_residual_norm) +
-                   "); check the boundary conditions, or raise Solver/\"Maximum "
-                   "Iterations\"");
+                   " did not converge: " + newton_failure(r, newton.max_iterations()) + ". " +
+                   newton_advice(r, newton.max_iterations()));
   return r;
 }
 
@@ -258,20 +328,15 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
     ++state.statistics.newton_failures;
     state.newton_failed = true;
     state.next_step = h * step_reduction_;
-    std::ostringstream failure;
-    failure << "Newton did not converge in the step from t = " << seconds(t)
-            << " with dt = " << seconds(h) << " (|F| " << std::scientific << std::setprecision(3)
-            << r.initial_residual_norm << " -> " << r.final_residual_norm << std::defaultfloat
-            << " after " << r.newton_iterations << " iterations)";
+    const std::string failure = "Newton did not converge in the step from t = " + seconds(t) +
+                                " with dt = " + seconds(h) + ": " +
+                                newton_failure(r, newton.max_iterations());
     if (state.next_step < minimum_step_)
-      throw RunError(where_ + ": " + failure.str() + "; the next step, " +
-                     seconds(state.next_step) + ", would be below \"Minimum Step\" = " +
-                     seconds(minimum_step_) + ". The results up to t = " + seconds(t) +
-                     " are written. If |F| stalled near its tolerance, loosen Solver/"
-                     "\"Absolute Tolerance\" or \"Relative Tolerance\"; otherwise check the "
-                     "boundary conditions and material data, raise Solver/\"Maximum "
-                     "Iterations\", or lower \"Minimum Step\"");
-    *out_ << "  " << failure.str() << "; retrying with dt = " << seconds(state.next_step) << "\n";
+      throw RunError(where_ + ": " + failure + "; the next step, " + seconds(state.next_step) +
+                     ", would be below \"Minimum Step\" = " + seconds(minimum_step_) +
+                     ". The results up to t = " + seconds(t) + " are written. " +
+                     newton_advice(r, newton.max_iterations()) + "; or lower \"Minimum Step\"");
+    *out_ << "  " << failure << "; retrying with dt = " << seconds(state.next_step) << "\n";
     return false;
   }
 

@@ -13,6 +13,14 @@
 
 namespace kiln
 {
+/// What a Newton solve that did not converge did, for the log and messages: a residual that
+/// is not finite (NaN or Inf), the iteration limit reached (with |F| at the start and the
+/// end, its tolerance and how much it fell), or NOX stopping before it (a failed line search
+/// or linear solve).
+std::string newton_failure(const NewtonSolver::Result &r, int max_iterations);
+/// What to try after such a solve, from what newton_failure() says of it.
+std::string newton_advice(const NewtonSolver::Result &r, int max_iterations);
+
 /// Steps a TransientProblem F(x, xdot, t) = 0 from t0 through every output time.
 ///
 /// With h = t_{n+1} - t_n, k = t_n - t_{n-1}, w = h / k:

@@ -1,13 +1,15 @@
 // Tests src/mesh/mesh_factory.cpp on Exodus files: a file Kiln wrote (in metres) read with a
 // Coordinate Scale other than 1 is an InputError naming the parameter and the file, whether
 // it comes from the input or from kiln --mesh; with scale 1 it is read unchanged, and a Cubit
-// file (no Kiln record) is scaled as asked.
+// file (no Kiln record) is scaled as asked; counts() gives the cells and nodes of the mesh
+// (after the gap split) without building it.
 // KILN_TEST_NP: 1
 #include "mesh/mesh_factory.hpp"
 
 #include "base/errors.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/exodus_io.hpp"
+#include "mesh/gap_splitter.hpp"
 #include "support/parameter_lists.hpp"
 
 #include <gmock/gmock.h>
@@ -97,4 +99,29 @@ TEST(MeshFactory, CubitMeshIsScaled)
   for (int n = 0; n < in_m.n_nodes(); ++n)
     for (int d = 0; d < 3; ++d)
       EXPECT_DOUBLE_EQ(in_m.coordinates[n][d], 0.01 * in_cm.coordinates[n][d]);
+}
+
+TEST(MeshFactory, CountsAreThoseOfTheMeshWithoutBuildingIt)
+{
+  // A box with its gap split: the nodes of the plane x = 0 get twins.
+  Teuchos::ParameterList box = kiln::MeshFactory::valid_parameters();
+  box.sublist("Box").set("Cells", kiln_test::ids({4, 2, 6}));
+  const kiln::MeshFactory factory(box, where);
+  const kiln::MeshFactory::Counts counts = factory.counts();
+  kiln::Mesh mesh = factory.build();
+  EXPECT_EQ(counts.cells, mesh.n_cells());
+  split_gap(mesh, factory.gap_side_set(), where);
+  EXPECT_EQ(counts.nodes, mesh.n_nodes());
+  EXPECT_EQ(counts.source, where + "/Box/\"Cells\" = {4, 2, 6}");
+  // An Exodus file's counts come from its header.
+  const std::string cubit = std::string(KILN_SHARED_DIR) + "/meshes/rotated-cube.exo";
+  const kiln::MeshFactory::Counts file =
+      kiln::MeshFactory(exodus_params(cubit, 0.01), where).counts();
+  EXPECT_EQ(file.cells, 64);
+  EXPECT_EQ(file.nodes, 125);
+  EXPECT_EQ(file.source, "the mesh file " + cubit);
+  // A box that cannot be numbered is refused here already.
+  box.sublist("Box").set("Cells", kiln_test::ids({2000, 2000, 2000}));
+  EXPECT_THAT(kiln_test::input_error_message([&] { kiln::MeshFactory(box, where).counts(); }),
+              HasSubstr("a Kiln mesh can number"));
 }

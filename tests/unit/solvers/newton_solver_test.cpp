@@ -405,14 +405,16 @@ TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
         .sublist("Belos")
         .set("Solver Type", "No Such Solver");
     const std::string message = input_error(comm, p);
-    EXPECT_THAT(message, StartsWith("Solver/Linear Solver: "));
-    EXPECT_THAT(message, HasSubstr("No Such Solver"));
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver/Linear Solver Types/Belos/\"Solver "
+                                    "Type\" = No Such Solver: not one of the choices of Belos."));
+    EXPECT_THAT(message, HasSubstr("\"Pseudo Block GMRES\"")); // the choices listed
   }
   {
     Teuchos::ParameterList p = solver_parameters();
     p.sublist("Linear Solver").set("Preconditioner Type", "No Such Preconditioner");
     const std::string message = input_error(comm, p);
-    EXPECT_THAT(message, StartsWith("Solver/Linear Solver: "));
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver/\"Preconditioner Type\" = No Such "
+                                    "Preconditioner: not one of the choices of Stratimikos."));
     EXPECT_THAT(message, HasSubstr("\"Ifpack2\"")); // listed among the valid values
   }
   {
@@ -430,8 +432,55 @@ TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
     Teuchos::ParameterList p = solver_parameters();
     p.sublist("Nonlinear Solver").sublist("Direction").set("Method", "No Such Direction");
     const std::string message = input_error(comm, p);
-    EXPECT_THAT(message, StartsWith("Solver/Nonlinear Solver: "));
-    EXPECT_THAT(message, HasSubstr("Invalid choice for \"Method\" in \"Direction\""));
+    EXPECT_THAT(message, StartsWith("Solver/Nonlinear Solver/Direction/\"Method\" = No Such "
+                                    "Direction: not one of the choices of NOX. Choices: "
+                                    "\"Newton\", \"Steepest Descent\""));
+  }
+  {
+    // Belos reads the names it knows from its solver's list and ignores the others.
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver")
+        .sublist("Linear Solver Types")
+        .sublist("Belos")
+        .sublist("Solver Types")
+        .sublist("Pseudo Block GMRES")
+        .set("Convergence Tolerence", 1e-9);
+    const std::string message = input_error(comm, p);
+    EXPECT_THAT(message, StartsWith("Solver/Linear Solver/Linear Solver Types/Belos/Solver "
+                                    "Types/Pseudo Block GMRES/\"Convergence Tolerence\": unknown "
+                                    "parameter of Belos. Did you mean \"Convergence "
+                                    "Tolerance\"? Valid names here: \"Convergence Tolerance\""));
+    EXPECT_THAT(message, HasSubstr("correct it or remove it"));
+    EXPECT_THAT(message, testing::Not(HasSubstr("Output Stream"))); // not from an input
+  }
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver")
+        .sublist("Linear Solver Types")
+        .sublist("Belos")
+        .sublist("Solver Types")
+        .sublist("Block CG")
+        .set("Maximum Iterations", 10.0);
+    EXPECT_THAT(input_error(comm, p),
+                HasSubstr("Solver Types/Block CG/\"Maximum Iterations\": expected type "
+                          "\"int\", got type \"double\""));
+  }
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Linear Solver").sublist("Linear Solver Types").sublist("Bellos");
+    EXPECT_THAT(input_error(comm, p),
+                StartsWith("Solver/Linear Solver/Linear Solver Types/\"Bellos\": unknown "
+                           "sublist of Stratimikos. Did you mean \"Belos\"?"));
+  }
+  {
+    // The block's name in messages is the caller's.
+    Teuchos::ParameterList p = solver_parameters();
+    p.sublist("Nonlinear Solver").sublist("Line Search").set("Methd", "Backtrack");
+    auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 11, 1));
+    EXPECT_THAT(kiln_test::input_error_message(
+                    [&] { NewtonSolver solver(p, problem, quiet(), "in.xml: Kiln/Solver"); }),
+                StartsWith("in.xml: Kiln/Solver/Nonlinear Solver/Line Search/\"Methd\": unknown "
+                           "parameter of NOX. Did you mean \"Method\"?"));
   }
   {
     Teuchos::ParameterList p; // as read from an input: no validators

@@ -1,7 +1,8 @@
 // Tests solvers/time_stepper: on y' = -lambda y (a few unknowns per rank, diagonal
 // Jacobian) the steps land exactly on the output times, the error control meets tighter
 // tolerances with more steps and repeats steps it rejects, and a failed Newton solve is
-// repeated with a smaller step.
+// repeated with a smaller step; the message of a failed Newton solve says what happened and
+// what to try, not "the boundary conditions".
 // KILN_TEST_NP: 1 2
 #include "base/errors.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -10,6 +11,7 @@
 
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_oblackholestream.hpp>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -178,4 +180,59 @@ TEST(TimeStepper, StepBelowMinimumIsARunError)
   Teuchos::ParameterList p = stepping("Backward Euler", 1.0, 1.0, false);
   p.set("Minimum Step", 0.5);
   EXPECT_THROW(run(p, {2.0}, 2.0, 0.3), kiln::RunError);
+}
+
+namespace
+{
+/// A Newton solve that did not converge.
+kiln::NewtonSolver::Result failed(const double initial, const double final_norm,
+                                  const int iterations, const double tolerance)
+{
+  kiln::NewtonSolver::Result r;
+  r.newton_iterations = iterations;
+  r.initial_residual_norm = initial;
+  r.final_residual_norm = final_norm;
+  r.tolerance = tolerance;
+  return r;
+}
+} // namespace
+
+TEST(NewtonFailure, SaysWhatHappenedAndWhatToTryWithoutBlamingTheConditions)
+{
+  using kiln::newton_advice;
+  using kiln::newton_failure;
+  using testing::HasSubstr;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // The iteration limit at a tiny residual: the tolerance is out of reach.
+  auto r = failed(2.036e2, 2.9e-13, 20, 1e-300);
+  EXPECT_EQ(newton_failure(r, 20),
+            "Newton reached its limit of 20 iterations (Solver/\"Maximum Iterations\") without "
+            "converging (|F| 2.036e+02 -> 2.900e-13, tolerance 1.000e-300; |F| fell by a factor "
+            "7e+14)");
+  EXPECT_THAT(newton_advice(r, 20), HasSubstr("the tolerance may be out of reach; loosen "
+                                              "Solver/\"Absolute Tolerance\""));
+  // Still falling at the limit.
+  r = failed(1e2, 1e-3, 20, 1e-8);
+  EXPECT_THAT(newton_advice(r, 20), HasSubstr("|F| was still falling: raise Solver/\"Maximum "
+                                              "Iterations\""));
+  // Not falling.
+  r = failed(1e2, 50.0, 20, 1e-8);
+  EXPECT_THAT(newton_failure(r, 20), HasSubstr("|F| fell by a factor 2"));
+  EXPECT_THAT(newton_advice(r, 20), HasSubstr("take smaller steps"));
+  // NOX stopped before the limit.
+  r = failed(1e2, 50.0, 3, 1e-8);
+  EXPECT_THAT(newton_failure(r, 20), HasSubstr("NOX stopped after 3 of 20 iterations without "
+                                               "converging, as a line search or a linear solve "
+                                               "failed"));
+  // Not a number, at the start or on the way.
+  r = failed(nan, nan, 0, nan);
+  EXPECT_EQ(newton_failure(r, 20),
+            "the residual at the start of the step is not a finite number (NaN or Inf)");
+  r = failed(1e2, nan, 2, 1e-8);
+  EXPECT_EQ(newton_failure(r, 20),
+            "the residual became NaN or Inf after 2 Newton iterations (|F| 1.000e+02 before)");
+  EXPECT_THAT(newton_advice(r, 20), HasSubstr("A NaN or Inf comes from a value out of its range"));
+  for (const auto &c : {failed(2e2, 3e-13, 20, 1e-300), failed(1e2, 1e-3, 20, 1e-8),
+                        failed(1e2, 50.0, 20, 1e-8), failed(nan, nan, 0, nan)})
+    EXPECT_THAT(newton_failure(c, 20) + newton_advice(c, 20), testing::Not(HasSubstr("boundary")));
 }

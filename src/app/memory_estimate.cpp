@@ -1,0 +1,226 @@
+#include "app/memory_estimate.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <mpi.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace kiln
+{
+namespace internal
+{
+// Calibrated on the development machine (2 cores, 24 GB; Debian 12, Trilinos 13.2, Open MPI
+// 4.1): the peak resident memory (VmHWM, largest rank) of a run of the contact box of
+// inputs/contact-box-close.xml (Thermo-Elasticity with contact, F = 4 unknowns per node) at
+// 16^3, 24^3, 32^3, 40^3 cells and of its heat conduction alone (F = 1) at 24^3, 32^3, 48^3,
+// 64^3 cells, each on 1 and 2 ranks, one backward Euler step after the output at t = 0.
+// Fitted by least squares to
+//   base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V),
+// V the Krylov vectors the solves touched (their linear iterations + 2; the pages of the
+// others are never touched): every run within 4.3% (most within 1.5%). The terms are what
+// every rank holds whole (the mesh, its partition, the numbering: 535 bytes per cell for
+// F = 1, 4485 for F = 4) and its share of the unknowns (matrices, graphs, multigrid,
+// vectors: 920 bytes per unknown for F = 1, 4646 for F = 4); F = 3 (elasticity) lies on the
+// line between, not measured. The estimate counts the whole Krylov basis (V = "Num Blocks"
+// + 1 for GMRES), as a long solve touches it. Measured at 1 and 2 ranks only: the largest
+// rank's extra (ghost layer, imbalance) is in the per-cell term, which overestimates it on
+// many ranks. A direct solver's fill-in is not counted.
+constexpr double base_bytes = 94e6;                         ///< the program, Trilinos, MPI
+constexpr double mesh_bytes_per_cell[2] = {-782.0, 1317.0}; ///< m0, m1 [bytes]
+constexpr double bytes_per_unknown[2] = {-322.0, 1242.0};   ///< k0, k1 [bytes]
+
+/// One value of /proc/self/status ("VmHWM:  1234 kB") [bytes], or -1.
+double proc_status_bytes(const std::string &key)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind(key + ":", 0) == 0)
+    {
+      std::istringstream value(line.substr(key.size() + 1));
+      double kb = -1.0;
+      value >> kb;
+      return kb < 0.0 ? -1.0 : kb * 1024.0;
+    }
+  return -1.0;
+}
+
+/// MemAvailable of /proc/meminfo [bytes], or -1.
+double mem_available()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kb = -1.0;
+  std::string unit;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:")
+      return kb * 1024.0;
+  return -1.0;
+}
+
+/// The ranks of `comm` on this node.
+int ranks_on_this_node(const Teuchos::Comm<int> &comm)
+{
+  const auto *mpi = dynamic_cast<const Teuchos::MpiComm<int> *>(&comm);
+  if (mpi == nullptr)
+    return 1;
+  MPI_Comm node;
+  MPI_Comm_split_type(*mpi->getRawMpiComm(), MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int size = 1;
+  MPI_Comm_size(node, &size);
+  MPI_Comm_free(&node);
+  return size;
+}
+
+/// The vectors the linear solver of the "Solver" block keeps: a GMRES basis of "Num Blocks"
+/// + 1 vectors (Belos' default 300), a few for the other Krylov methods.
+int krylov_vectors(const Teuchos::ParameterList &solver)
+{
+  const Teuchos::ParameterList &linear = solver.sublist("Linear Solver");
+  if (!linear.isType<std::string>("Linear Solver Type") ||
+      linear.get<std::string>("Linear Solver Type") != "Belos")
+    return 0;
+  const Teuchos::ParameterList belos =
+      linear.isSublist("Linear Solver Types") &&
+              linear.sublist("Linear Solver Types").isSublist("Belos")
+          ? linear.sublist("Linear Solver Types").sublist("Belos")
+          : Teuchos::ParameterList();
+  const std::string type = belos.isType<std::string>("Solver Type")
+                               ? belos.get<std::string>("Solver Type")
+                               : std::string("Pseudo Block GMRES");
+  if (type.find("GMRES") == std::string::npos && type != "GCRODR")
+    return 8;
+  int blocks = 300;
+  if (belos.isSublist("Solver Types") && belos.sublist("Solver Types").isSublist(type) &&
+      belos.sublist("Solver Types").sublist(type).isType<int>("Num Blocks"))
+    blocks = belos.sublist("Solver Types").sublist(type).get<int>("Num Blocks");
+  return blocks + 1;
+}
+} // namespace internal
+
+MemoryEstimate::MemoryEstimate(const long long cells, const long long nodes, const int fields,
+                               const int krylov_vectors, const int ranks)
+    : cells_(cells), nodes_(nodes), fields_(fields), krylov_vectors_(krylov_vectors),
+      ranks_(std::max(1, ranks)), unknowns_(nodes * fields)
+{
+}
+
+MemoryEstimate MemoryEstimate::of(const MeshFactory::Counts &counts, const DofLayout &layout,
+                                  const Teuchos::ParameterList &solver, const int ranks)
+{
+  return MemoryEstimate(counts.cells, counts.nodes, layout.n_node_fields(),
+                        internal::krylov_vectors(solver), ranks);
+}
+
+double MemoryEstimate::mesh_bytes() const
+{
+  using internal::mesh_bytes_per_cell;
+  return static_cast<double>(cells_) * (mesh_bytes_per_cell[0] + mesh_bytes_per_cell[1] * fields_);
+}
+
+double MemoryEstimate::unknown_bytes() const
+{
+  using internal::bytes_per_unknown;
+  const double per_unknown =
+      bytes_per_unknown[0] + bytes_per_unknown[1] * fields_ + 8.0 * krylov_vectors_;
+  return per_unknown * static_cast<double>(unknowns_) / ranks_;
+}
+
+double MemoryEstimate::bytes_per_rank() const
+{
+  return internal::base_bytes + mesh_bytes() + unknown_bytes();
+}
+
+std::string memory_text(const double bytes)
+{
+  std::ostringstream s;
+  s << std::setprecision(3);
+  if (bytes >= 1e12)
+    s << bytes / 1e12 << " TB";
+  else if (bytes >= 1e9)
+    s << bytes / 1e9 << " GB";
+  else if (bytes >= 1e6)
+    s << bytes / 1e6 << " MB";
+  else
+    s << bytes / 1e3 << " kB";
+  return s.str();
+}
+
+std::string MemoryEstimate::summary() const
+{
+  std::ostringstream s;
+  s << "about " << memory_text(bytes_per_rank()) << " per rank (" << memory_text(mesh_bytes())
+    << " for the mesh of " << cells_ << " cells, held whole on every rank; "
+    << memory_text(unknown_bytes()) << " for ";
+  if (ranks_ > 1)
+    s << "1/" << ranks_ << " of ";
+  s << "the " << unknowns_ << " unknowns";
+  if (krylov_vectors_ > 0)
+    s << ", with a Krylov basis of " << krylov_vectors_ << " vectors";
+  s << ")";
+  return s.str();
+}
+
+double available_memory(const Teuchos::Comm<int> &comm, std::string &how)
+{
+  const double resident = std::max(0.0, internal::proc_status_bytes("VmRSS"));
+  const double available = internal::mem_available();
+  const int on_node = internal::ranks_on_this_node(comm);
+  double room = available < 0.0 ? HUGE_VAL : available / on_node;
+  std::ostringstream s;
+  if (available >= 0.0)
+    s << "MemAvailable " << memory_text(available) << " for the " << on_node << " rank"
+      << (on_node > 1 ? "s" : "") << " on this node";
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+  {
+    const double in_use = std::max(0.0, internal::proc_status_bytes("VmSize"));
+    const double left = std::max(0.0, static_cast<double>(limit.rlim_cur) - in_use);
+    room = std::min(room, left);
+    s << (available >= 0.0 ? "; " : "") << "an address-space limit (ulimit -v) of "
+      << memory_text(static_cast<double>(limit.rlim_cur)) << ", " << memory_text(in_use)
+      << " of it in use";
+  }
+  how = s.str();
+  return resident + room;
+}
+
+void check_memory(const Teuchos::ParameterList &params, const DofLayout &layout,
+                  const std::string &input_path, const std::string &mesh_file,
+                  const Teuchos::Comm<int> &comm, std::ostream &out)
+{
+  const MeshFactory factory(params.sublist("Mesh"), input_path + ": Kiln/Mesh", mesh_file);
+  const MeshFactory::Counts counts = factory.counts();
+  const MemoryEstimate estimate =
+      MemoryEstimate::of(counts, layout, params.sublist("Solver"), comm.getSize());
+  std::string how;
+  const double available = available_memory(comm, how);
+  const bool fits = estimate.bytes_per_rank() <= available;
+  std::ostringstream message;
+  if (!fits)
+    message << counts.source << ": the run needs " << estimate.summary()
+            << ", but this machine gives a rank about " << memory_text(available) << " (" << how
+            << "): use fewer cells (a coarser mesh), or more ranks on more nodes (the unknowns "
+               "are shared among the ranks, the mesh is not)";
+  check_collectively(comm, fits, "", message.str());
+  if (comm.getRank() == 0)
+    out << "memory: " << estimate.summary() << " estimated; a rank has about "
+        << memory_text(available) << "\n";
+}
+
+double peak_resident_memory(const Teuchos::Comm<int> &comm)
+{
+  const double mine = std::max(0.0, internal::proc_status_bytes("VmHWM"));
+  double largest = 0.0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(largest));
+  return largest;
+}
+} // namespace kiln

@@ -1,0 +1,40 @@
+#include "solvers/collective_evaluation.hpp"
+
+#include "base/errors.hpp"
+
+#include <new>
+#include <string>
+
+namespace kiln
+{
+namespace internal
+{
+void evaluate_collectively(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
+                           NonlinearProblem::Vector *f, NonlinearProblem::Matrix *J)
+{
+  const Teuchos::Comm<int> &comm = *problem.solution_map()->getComm();
+  std::string failure;
+  try
+  {
+    problem.evaluate(x, f, J);
+  }
+  catch (const std::bad_alloc &)
+  {
+    throw;
+  }
+  catch (const RunError &e)
+  {
+    failure = e.what();
+  }
+  catch (const std::exception &e)
+  {
+    failure = "rank " + std::to_string(comm.getRank()) + " of " + std::to_string(comm.getSize()) +
+              " failed in the evaluation of the " + (f != nullptr ? "residual" : "Jacobian") +
+              ": " + one_line_library_message(e.what()) +
+              "; every rank stopped. This is a bug in Kiln or a library it uses: please report "
+              "it with the input";
+  }
+  check_run_collectively(comm, failure.empty(), failure);
+}
+} // namespace internal
+} // namespace kiln

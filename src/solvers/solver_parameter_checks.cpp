@@ -1,0 +1,422 @@
+#include "solvers/solver_parameter_checks.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+#include "solvers/package_errors.hpp"
+#include "solvers/package_parameters.hpp"
+
+#include <MueLu_ParameterListInterpreter.hpp>
+#include <NOX_Solver_SolverUtils.H>
+#include <Teuchos_Array.hpp>
+#include <Tpetra_Map.hpp>
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace kiln
+{
+namespace internal
+{
+namespace
+{
+using Teuchos::ParameterEntry;
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Node = Tpetra::Map<>::node_type;
+
+/// The doc string of the entries NOX writes into its list (output values): accepted, but not
+/// offered in messages.
+const std::string written_by_nox = "written by NOX";
+
+/// Types of value an input file can give (those of the input reader).
+bool settable_in_input(const ParameterEntry &e)
+{
+  if (e.isList())
+    return true;
+  const std::type_info &t = e.getAny(false).type();
+  return t == typeid(int) || t == typeid(double) || t == typeid(bool) || t == typeid(std::string) ||
+         t == typeid(Teuchos::Array<int>) || t == typeid(Teuchos::Array<double>) ||
+         t == typeid(Teuchos::Array<std::string>);
+}
+
+std::string quoted(const std::vector<std::string> &names)
+{
+  std::string s;
+  for (const auto &n : names)
+    s += (s.empty() ? "\"" : ", \"") + n + "\"";
+  return s;
+}
+
+std::string value_text(const ParameterEntry &entry)
+{
+  std::ostringstream s;
+  entry.leftshift(s, false);
+  return s.str();
+}
+
+/// How one package's list is checked and named in messages.
+struct PackageList
+{
+  std::string package; ///< "Belos", "NOX"
+  /// Sentences added to the message for an unknown name.
+  std::map<std::string, std::string> hints;
+  /// Parameters that may also be given as a sublist, with the sublist's valid names.
+  std::map<std::string, ParameterList> list_forms;
+};
+
+void check_list(const ParameterList &user, const ParameterList &valid, const std::string &at,
+                const PackageList &p);
+
+[[noreturn]] void unknown_name(const std::string &here, const std::string &name, const bool list,
+                               const std::vector<std::string> &names, const PackageList &p)
+{
+  std::ostringstream m;
+  m << here << ": unknown " << (list ? "sublist" : "parameter") << " of " << p.package << ".";
+  const std::string guess = closest_name(name, names);
+  if (!guess.empty())
+    m << " Did you mean \"" << guess << "\"?";
+  if (const auto hint = p.hints.find(name); hint != p.hints.end())
+    m << " " << hint->second << ".";
+  m << " Valid names here: " << quoted(names) << ". " << p.package
+    << " does not know this name: it would be ignored (the setting would have no effect) or "
+       "refused later; correct it or remove it";
+  throw InputError(m.str());
+}
+
+/// A string value against the choices of the valid entry's validator, if it has some.
+void check_choice(const ParameterEntry &entry, const ParameterEntry &valid_entry,
+                  const std::string &here, const PackageList &p)
+{
+  const auto validator = valid_entry.validator();
+  if (validator.is_null() || validator->validStringValues().is_null() ||
+      entry.getAny(false).type() != typeid(std::string))
+    return;
+  const auto &choices = *validator->validStringValues();
+  const std::string value = Teuchos::getValue<std::string>(entry);
+  if (std::find(choices.begin(), choices.end(), value) != choices.end())
+    return;
+  const std::vector<std::string> names(choices.begin(), choices.end());
+  std::ostringstream m;
+  m << here << " = " << value << ": not one of the choices of " << p.package << ".";
+  const std::string guess = closest_name(value, names);
+  if (!guess.empty())
+    m << " Did you mean \"" << guess << "\"?";
+  m << " Choices: " << quoted(names);
+  throw InputError(m.str());
+}
+
+void check_entry(const std::string &name, const ParameterEntry &entry,
+                 const ParameterEntry &valid_entry, const std::string &at, const PackageList &p)
+{
+  const std::string here = at + "/\"" + name + "\"";
+  if (valid_entry.isList())
+  {
+    KILN_CHECK_INPUT(entry.isList(), here,
+                     "expected a sublist (<ParameterList name=\"" << name
+                                                                  << "\">), got a parameter");
+    check_list(Teuchos::getValue<ParameterList>(entry),
+               Teuchos::getValue<ParameterList>(valid_entry), at + "/" + name, p);
+    return;
+  }
+  KILN_CHECK_INPUT(settable_in_input(valid_entry), here,
+                   "is set by Kiln or by a program (type "
+                       << valid_entry.getAny(false).typeName()
+                       << "), not from an input file: remove it");
+  const std::string expected = valid_entry.getAny(false).typeName();
+  if (entry.isList())
+  {
+    const auto form = p.list_forms.find(name);
+    KILN_CHECK_INPUT(form != p.list_forms.end(), here,
+                     "expected a parameter of type \"" << expected << "\", got a sublist");
+    check_list(Teuchos::getValue<ParameterList>(entry), form->second, at + "/" + name, p);
+    return;
+  }
+  KILN_CHECK_INPUT(entry.getAny(false).type() == valid_entry.getAny(false).type(), here,
+                   "expected type \"" << expected << "\", got type \""
+                                      << entry.getAny(false).typeName() << "\" (value "
+                                      << value_text(entry) << "); write type=\"" << expected
+                                      << "\"");
+  check_choice(entry, valid_entry, here, p);
+}
+
+/// Every entry of `user` against `valid`; an empty valid list takes any names.
+void check_list(const ParameterList &user, const ParameterList &valid, const std::string &at,
+                const PackageList &p)
+{
+  if (valid.numParams() == 0)
+    return;
+  std::vector<std::string> names;
+  for (auto it = valid.begin(); it != valid.end(); ++it)
+    if (settable_in_input(valid.entry(it)) && valid.entry(it).docString() != written_by_nox)
+      names.push_back(valid.name(it));
+  for (auto it = user.begin(); it != user.end(); ++it)
+  {
+    const std::string &name = user.name(it);
+    const ParameterEntry *valid_entry = valid.getEntryPtr(name);
+    if (valid_entry == nullptr)
+      unknown_name(at + "/\"" + name + "\"", name, user.entry(it).isList(), names, p);
+    check_entry(name, user.entry(it), *valid_entry, at, p);
+  }
+}
+
+/// `list` with the content of its sublist `name` left unchecked (any names).
+void leave_unchecked(ParameterList &list, const std::string &name)
+{
+  list.remove(name, false);
+  list.sublist(name);
+}
+
+void set_choice(ParameterList &list, const std::string &name,
+                const std::vector<std::string> &choices)
+{
+  list.set(name, choices.front(), "", choice_validator(choices));
+}
+
+ParameterList nox_linear_solver()
+{
+  // NOX::Thyra::Group::applyJacobianInverse; the choices of its getThyraNormType.
+  const std::vector<std::string> measures = {"Norm Residual", "Norm Initial Residual", "None",
+                                             "Norm Solution", "Norm RHS"};
+  ParameterList p;
+  p.set("Tolerance", 1e-6);
+  set_choice(p, "Solve Measure Numerator", measures);
+  set_choice(p, "Solve Measure Denominator", measures);
+  p.sublist("Output", false, written_by_nox); // the linear iteration counts
+  return p;
+}
+
+/// NOX::Direction::Utils::InexactNewton (Newton and Broyden directions).
+void add_forcing_terms(ParameterList &p)
+{
+  set_choice(p, "Forcing Term Method", {"Constant", "Type 1", "Type 2"});
+  for (const char *name :
+       {"Forcing Term Initial Tolerance", "Forcing Term Minimum Tolerance",
+        "Forcing Term Maximum Tolerance", "Forcing Term Alpha", "Forcing Term Gamma"})
+    p.set(name, 0.0);
+  p.set("Set Tolerance in Parameter List", true);
+  p.sublist("Linear Solver").setParameters(nox_linear_solver());
+}
+
+ParameterList nox_direction(const std::string &default_method)
+{
+  std::vector<std::string> methods = {"Newton", "Steepest Descent", "NonlinearCG", "Broyden"};
+  std::swap(*std::find(methods.begin(), methods.end(), default_method), methods.front());
+  ParameterList p;
+  set_choice(p, "Method", methods);
+  ParameterList &newton = p.sublist("Newton");
+  add_forcing_terms(newton);
+  newton.set("Rescue Bad Newton Solve", true);
+  set_choice(p.sublist("Steepest Descent"), "Scaling Type",
+             {"2-Norm", "Quadratic Model Min", "F 2-Norm", "None"});
+  ParameterList &cg = p.sublist("Nonlinear CG");
+  cg.set("Restart Frequency", 10);
+  set_choice(cg, "Precondition", {"Off", "On"});
+  set_choice(cg, "Orthogonalize", {"Fletcher-Reeves", "Polak-Ribiere"});
+  ParameterList &broyden = p.sublist("Broyden");
+  add_forcing_terms(broyden);
+  broyden.set("Restart Frequency", 10);
+  broyden.set("Max Convergence Rate", 1.0);
+  broyden.set("Memory", 10);
+  return p;
+}
+
+ParameterList nox_line_search()
+{
+  ParameterList p;
+  // Not from an input file: "User Defined" needs a factory object, "Safeguarded Step" and
+  // "Safeguarded Direction" an "Update Limit Vector" (NOX refuses them without one).
+  set_choice(p, "Method", {"Full Step", "Backtrack", "Polynomial", "More'-Thuente", "NonlinearCG"});
+  p.sublist("Full Step").set("Full Step", 1.0);
+  ParameterList &backtrack = p.sublist("Backtrack");
+  for (const char *name : {"Default Step", "Minimum Step", "Recovery Step", "Reduction Factor"})
+    backtrack.set(name, 0.0);
+  backtrack.set("Max Iters", 100);
+  const std::vector<std::string> decrease = {"Armijo-Goldstein", "Ared/Pred", "None"};
+  const std::vector<std::string> recovery = {"Constant", "Last Computed Step"};
+  ParameterList &polynomial = p.sublist("Polynomial");
+  for (const char *name : {"Default Step", "Minimum Step", "Recovery Step", "Min Bounds Factor",
+                           "Max Bounds Factor", "Alpha Factor", "Allowed Relative Increase"})
+    polynomial.set(name, 0.0);
+  polynomial.set("Max Iters", 100);
+  polynomial.set("Maximum Iteration for Increase", 0);
+  polynomial.set("Force Interpolation", false);
+  polynomial.set("Use Counters", true);
+  set_choice(polynomial, "Recovery Step Type", recovery);
+  set_choice(polynomial, "Interpolation Type", {"Cubic", "Quadratic", "Quadratic3"});
+  set_choice(polynomial, "Sufficient Decrease Condition", decrease);
+  ParameterList &more_thuente = p.sublist("More'-Thuente");
+  for (const char *name : {"Sufficient Decrease", "Curvature Condition", "Interval Width",
+                           "Maximum Step", "Minimum Step", "Default Step", "Recovery Step"})
+    more_thuente.set(name, 0.0);
+  more_thuente.set("Max Iters", 20);
+  more_thuente.set("Optimize Slope Calculation", false);
+  set_choice(more_thuente, "Recovery Step Type", recovery);
+  set_choice(more_thuente, "Sufficient Decrease Condition", decrease);
+  p.sublist("NonlinearCG"); // reads nothing of its own
+  p.set("Adjusted Tolerance", 0.0, written_by_nox);
+  p.sublist("Output", false, written_by_nox);
+  return p;
+}
+
+/// NOX's own valid list of the one sublist it validates that an input can use.
+void add_nox_validated_lists(ParameterList &valid)
+{
+  ParameterList options;
+  NOX::Solver::validateSolverOptionsSublist(options); // sets every valid name's default
+  valid.sublist("Solver Options").setParameters(options);
+}
+
+PackageList nox_package()
+{
+  PackageList p{"NOX", {}, {}};
+  p.hints["Status Tests"] =
+      "Kiln sets NOX's status tests itself, from Solver/\"Absolute Tolerance\", \"Relative "
+      "Tolerance\" and \"Maximum Iterations\"";
+  p.hints["Thyra Group Options"] = "Kiln builds NOX's Thyra group itself and does not read it";
+  ParameterList &information = p.list_forms["Output Information"];
+  for (const char *name :
+       {"Error", "Warning", "Outer Iteration", "Inner Iteration", "Parameters", "Details",
+        "Outer Iteration StatusTest", "Linear Solver Details", "Test Details", "Stepper Iteration",
+        "Stepper Details", "Stepper Parameters", "Debug"})
+    information.set(name, false);
+  return p;
+}
+} // namespace
+
+ParameterList nox_known_parameters()
+{
+  // NOX 13.2 has no validator for these sublists: each class reads its names with
+  // get(name, default) in its constructor or reset() and ignores the others. The names are
+  // those of NOX 13.2's sources (NOX_Solver_*.C, NOX_Direction_*.C, NOX_LineSearch_*.C,
+  // NOX_Utils.C, NOX_Thyra_Group.C), with the types NOX reads them with, checked against the
+  // installed library: every solver, direction and line search built once from an empty list,
+  // which NOX fills with the defaults of every name it reads. Keep them in step with NOX.
+  ParameterList p("NOX");
+  set_choice(p, "Nonlinear Solver",
+             {"Line Search Based", "Newton", "Trust Region Based", "Inexact Trust Region Based",
+              "Tensor Based", "Anderson Accelerated Fixed-Point", "Single Step",
+              "Pseudo-Transient"});
+  ParameterList &printing = p.sublist("Printing"); // NOX::Utils
+  for (const char *name : {"Output Information", "Output Precision", "Output Processor", "MyPID"})
+    printing.set(name, 0);
+  printing.set("Output Stream", Teuchos::RCP<std::ostream>()); // set by Kiln
+  printing.set("Error Stream", Teuchos::RCP<std::ostream>());
+  p.sublist("Line Search").setParameters(nox_line_search());
+  p.sublist("Direction").setParameters(nox_direction("Newton"));
+  p.sublist("Cauchy Direction").setParameters(nox_direction("Steepest Descent"));
+  ParameterList &trust_region = p.sublist("Trust Region"); // both trust region solvers
+  set_choice(trust_region, "Inner Iteration Method",
+             {"Inexact Trust Region", "Standard Trust Region"});
+  for (const char *name :
+       {"Minimum Trust Region Radius", "Maximum Trust Region Radius", "Initial Trust Region Radius",
+        "Minimum Improvement Ratio", "Contraction Trigger Ratio", "Expansion Trigger Ratio",
+        "Contraction Factor", "Expansion Factor", "Recovery Step"})
+    trust_region.set(name, 0.0);
+  for (const char *name :
+       {"Use Ared/Pred Ratio Calculation", "Use Cauchy in Newton Direction",
+        "Use Dogleg Segment Minimization", "Use Counters", "Write Output Parameters"})
+    trust_region.set(name, false);
+  trust_region.sublist("Output", false, written_by_nox);
+  ParameterList &anderson = p.sublist("Anderson Parameters");
+  for (const char *name :
+       {"Storage Depth", "Reorthogonalization Frequency", "Acceleration Start Iteration"})
+    anderson.set(name, 0);
+  anderson.set("Mixing Parameter", 1.0);
+  anderson.set("Condition Number Drop Tolerance", 1e12);
+  anderson.set("Adjust Matrix for Condition Number", false);
+  anderson.set("Disable Checks for Unit Testing", false);
+  anderson.sublist("Preconditioning"); // not checked
+  ParameterList &single_step = p.sublist("Single Step Solver");
+  for (const char *name :
+       {"Ignore Linear Solver Failures", "Update Jacobian", "Print Norms", "Compute Relative Norm"})
+    single_step.set(name, false);
+  single_step.sublist("Linear Solver").setParameters(nox_linear_solver());
+  p.sublist("Pseudo-Transient"); // NOX validates it when the solver is built
+  p.sublist("Output", false, written_by_nox);
+  return p;
+}
+
+void check_muelu_parameters(const ParameterList &stratimikos,
+                            const RCP<const Teuchos::Comm<int>> &comm, const std::string &where)
+{
+  if (!uses_muelu(stratimikos))
+    return;
+  ParameterList muelu;
+  if (stratimikos.isSublist("Preconditioner Types") &&
+      stratimikos.sublist("Preconditioner Types").isSublist("MueLu"))
+    muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+  // MueLu's reuse of a hierarchy for new values inserts into the Jacobian's static graph in
+  // Trilinos 13.2 (both "RP" and "tP" stop the first re-setup); Kiln keeps an unchanged
+  // hierarchy itself (Solver/"Reuse").
+  if (muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none")
+    throw_input_error(where + "/Preconditioner Types/MueLu",
+                      "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
+                          "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
+                          "Jacobian's static graph); remove it (or set \"none\"): Kiln keeps "
+                          "the preconditioner while the Jacobian is unchanged (Solver/Reuse, "
+                          "doc/solvers.md)");
+  // MueLu prints its distance to every valid name on std::cout; the message
+  // has the closest one.
+  std::ostringstream muelu_chatter;
+  std::streambuf *const cout_buffer = std::cout.rdbuf(muelu_chatter.rdbuf());
+  try
+  {
+    as_input_error(
+        *comm, where + "/Preconditioner Types/MueLu",
+        [&] { MueLu::ParameterListInterpreter<double, int, long long, Node> check(muelu, comm); });
+  }
+  catch (...)
+  {
+    std::cout.rdbuf(cout_buffer);
+    throw;
+  }
+  std::cout.rdbuf(cout_buffer);
+}
+
+void check_stratimikos_parameters(const ParameterList &stratimikos, const ParameterList &valid,
+                                  const std::string &where)
+{
+  // Stratimikos' own names; the lists of its solvers and preconditioners below are left to
+  // the packages (MueLu: check_muelu_parameters), but for Belos'.
+  ParameterList top(valid);
+  leave_unchecked(top, "Preconditioner Types");
+  ParameterList &solvers = top.sublist("Linear Solver Types");
+  std::vector<std::string> names;
+  for (auto it = solvers.begin(); it != solvers.end(); ++it)
+    names.push_back(solvers.name(it));
+  for (const std::string &name : names)
+    leave_unchecked(solvers, name);
+  check_list(stratimikos, top, where, PackageList{"Stratimikos", {}, {}});
+  const std::string belos = "Linear Solver Types";
+  if (stratimikos.isSublist(belos) && stratimikos.sublist(belos).isSublist("Belos"))
+    check_list(stratimikos.sublist(belos).sublist("Belos"), valid.sublist(belos).sublist("Belos"),
+               where + "/" + belos + "/Belos", PackageList{"Belos", {}, {}});
+}
+
+void check_nox_parameters(const ParameterList &nox, const std::string &where)
+{
+  ParameterList valid = nox_known_parameters();
+  add_nox_validated_lists(valid);
+  // The tensor method reads its own direction and line search names ("Tensor", "Curvilinear").
+  if (nox.isType<std::string>("Nonlinear Solver") &&
+      nox.get<std::string>("Nonlinear Solver") == "Tensor Based")
+  {
+    leave_unchecked(valid, "Direction");
+    leave_unchecked(valid, "Line Search");
+  }
+  check_list(nox, valid, where, nox_package());
+}
+
+void check_solver_parameters(const ParameterList &solver, const ParameterList &stratimikos,
+                             const ParameterList &stratimikos_valid,
+                             const RCP<const Teuchos::Comm<int>> &comm, const std::string &where)
+{
+  check_nox_parameters(solver.sublist("Nonlinear Solver"), where + "/Nonlinear Solver");
+  check_stratimikos_parameters(stratimikos, stratimikos_valid, where + "/Linear Solver");
+  check_muelu_parameters(stratimikos, comm, where + "/Linear Solver");
+}
+} // namespace internal
+} // namespace kiln
