@@ -84,7 +84,9 @@ Teuchos::ParameterList Simulation::valid_parameters()
             "checkpoints to continue a run from (kiln INPUT.xml --restart FILE); see "
             "doc/user-guide.md")
       .setParameters(CheckpointSchedule::valid_parameters());
-  p.sublist("Debug", false, "testing aids; see FaultInjection and doc/user-guide.md")
+  p.sublist("Debug", false,
+            "testing aids: faults injected on purpose, never for real runs; see doc/user-guide.md "
+            "(Faults)")
       .setParameters(FaultInjection::valid_parameters());
   return p;
 }
