@@ -152,6 +152,10 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   out << "steps repeated after Newton failed: " << stats.newton_failures << "\n";
   out << "Newton iterations: " << stats.newton_iterations << "\n";
   out << "linear iterations: " << stats.linear_iterations << "\n";
+  out << "Jacobians assembled in this run: " << stats.jacobians_evaluated << "\n";
+  out << "Jacobians kept in this run: " << stats.jacobians_kept << "\n";
+  out << "preconditioners built in this run: " << stats.preconditioners_built << "\n";
+  out << "preconditioners kept in this run: " << stats.preconditioners_kept << "\n";
   if (last_active_ >= 0)
   {
     out << "gap closed at: " << internal::times_list(closed_) << "\n";

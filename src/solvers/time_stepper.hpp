@@ -64,6 +64,19 @@ public:
     int newton_failures = 0;   ///< repeated because Newton did not converge
     int newton_iterations = 0; ///< summed over accepted steps
     int linear_iterations = 0; ///< summed over accepted steps
+    /// Of this run's accepted steps (not in checkpoints): Jacobians and preconditioners
+    /// built anew or kept (Solver/"Reuse").
+    int jacobians_evaluated = 0;
+    int jacobians_kept = 0;
+    int preconditioners_built = 0;
+    int preconditioners_kept = 0;
+    void add_reuse(const NewtonSolver::Result &r)
+    {
+      jacobians_evaluated += r.jacobians_evaluated;
+      jacobians_kept += r.jacobians_kept;
+      preconditioners_built += r.preconditioners_built;
+      preconditioners_kept += r.preconditioners_kept;
+    }
   };
 
   /// The integration after an accepted step (or at its start).
