@@ -396,11 +396,12 @@ void put_records(const int exo, const std::string &path)
 } // namespace
 } // namespace internal
 
-Mesh read_exodus_mesh(const std::string &path, const double scale)
+namespace
 {
-  using internal::check_exodus;
-  KILN_CHECK_INPUT(std::isfinite(scale) && scale > 0.0, path,
-                   "the coordinate scale factor " << scale << " must be > 0");
+/// Opens an Exodus file for reading, or an InputError naming what is wrong with it (missing,
+/// not netCDF, damaged header).
+int open_exodus_for_reading(const std::string &path)
+{
   KILN_CHECK_INPUT(std::ifstream(path).good(), "",
                    "cannot open Exodus file \"" << path
                                                 << "\" (missing or not readable): check the path");
@@ -412,6 +413,17 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
                    "cannot open Exodus file \"" << path
                                                 << "\": it is not an Exodus II (netCDF) file; "
                                                    "check the path and export the mesh as Exodus");
+  return id;
+}
+
+} // namespace
+
+Mesh read_exodus_mesh(const std::string &path, const double scale)
+{
+  using internal::check_exodus;
+  KILN_CHECK_INPUT(std::isfinite(scale) && scale > 0.0, path,
+                   "the coordinate scale factor " << scale << " must be > 0");
+  const int id = open_exodus_for_reading(path);
   internal::ExodusFile file(id);
 
   char title[MAX_LINE_LENGTH + 1] = {};
@@ -460,17 +472,7 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
 
 ExodusCounts exodus_counts(const std::string &path)
 {
-  KILN_CHECK_INPUT(std::ifstream(path).good(), "",
-                   "cannot open Exodus file \"" << path
-                                                << "\" (missing or not readable): check the path");
-  check_netcdf_file(path);
-  int comp_ws = sizeof(double), io_ws = 0;
-  float version = 0.0F;
-  const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
-  KILN_CHECK_INPUT(id >= 0, "",
-                   "cannot open Exodus file \"" << path
-                                                << "\": it is not an Exodus II (netCDF) file; "
-                                                   "check the path and export the mesh as Exodus");
+  const int id = open_exodus_for_reading(path);
   internal::ExodusFile file(id);
   // The counts the file's data back, not the header's alone: a damaged header (a node count
   // without coordinates) is reported by read_exodus_mesh, not taken for a large mesh.
