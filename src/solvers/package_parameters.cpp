@@ -99,7 +99,7 @@ void add_smoother_defaults(ParameterList &stratimikos)
   if (is("smoother: type", "RELAXATION"))
   {
     ParameterList &relaxation = muelu.sublist("smoother: params");
-    relaxation.get("relaxation: type", std::string("Symmetric Gauss-Seidel"));
+    relaxation.get("relaxation: type", std::string("Gauss-Seidel"));
     relaxation.get("relaxation: sweeps", 1);
   }
   if (is("coarse: type", "RELAXATION"))

@@ -350,6 +350,34 @@ TEST_F(NewtonSolverTest, BelosOptionsFromTheInputTakeEffect)
   EXPECT_LT(limited.result.final_residual_norm, limited.result.initial_residual_norm);
 }
 
+/// On a linear problem one Newton iteration solves the step; with the adaptive tolerance its
+/// Krylov solve stops at 0.1 times the Newton target instead of Belos' 1e-10.
+TEST_F(NewtonSolverTest, AdaptiveLinearToleranceStopsAtTheNewtonTarget)
+{
+  const auto run = [&](const bool adaptive)
+  {
+    auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 12, 3, true));
+    Teuchos::ParameterList p = solver_parameters();
+    p.set("Absolute Tolerance", 1e-5);
+    p.set("Adaptive Linear Tolerance", adaptive);
+    NewtonSolver solver(p, problem, quiet());
+    NonlinearProblem::Vector x(problem->solution_map());
+    return solver.solve(x);
+  };
+  const NewtonSolver::Result tight = run(false);
+  const NewtonSolver::Result adapted = run(true);
+  ASSERT_TRUE(tight.converged);
+  ASSERT_TRUE(adapted.converged);
+  ASSERT_GT(tight.initial_residual_norm, 1e3 * tight.tolerance);
+  EXPECT_EQ(tight.newton_iterations, 1);
+  EXPECT_EQ(adapted.newton_iterations, 1);
+  // Belos' 1e-10 of ||F(x0)||, against 0.1 of the absolute tolerance.
+  EXPECT_LT(tight.final_residual_norm, 1e-9 * tight.initial_residual_norm);
+  EXPECT_LT(adapted.final_residual_norm, 0.1 * adapted.tolerance * 1.01);
+  EXPECT_GT(adapted.final_residual_norm, 1e-9 * adapted.initial_residual_norm);
+  EXPECT_LT(adapted.linear_iterations, tight.linear_iterations);
+}
+
 TEST_F(NewtonSolverTest, Ifpack2PreconditionerCanBeChosen)
 {
   Teuchos::ParameterList p = solver_parameters();

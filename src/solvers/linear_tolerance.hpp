@@ -1,0 +1,64 @@
+#pragma once
+/// The tolerance of the Krylov solve inside each Newton iteration (inexact Newton,
+/// doc/solvers.md): loose enough to stop once the Newton test will pass with a margin, never
+/// tighter than the Belos solver's own Convergence Tolerance.
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+namespace NOX
+{
+class Observer;
+}
+
+namespace kiln
+{
+namespace internal
+{
+/// eta_k, the Krylov residual over ||F_k||: safety * target / ||F_k||, clamped to
+/// [floor, ceiling]. Newton's next residual is ||F_k + J dx|| <= eta_k ||F_k|| on a problem
+/// linear between changes of the contact set, so it meets `target` with the factor `safety`
+/// to spare, in one Newton iteration.
+struct LinearTolerance
+{
+  double floor = 1e-10; ///< the Belos solver's Convergence Tolerance
+  double ceiling = 0.1; ///< never looser: the Newton step must stay a descent direction
+  double safety = 0.1;  ///< fraction of the Newton target left for the Krylov residual
+  /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||.
+  double operator()(double target, double residual_norm) const;
+};
+
+/// The Krylov tolerance of the Belos solver chosen in a Stratimikos list ("Convergence
+/// Tolerance" of its Solver Types sublist, Belos' default 1e-8 if not set), or 0 when the
+/// linear solver is not Belos (then the tolerance is not adapted).
+double belos_convergence_tolerance(const Teuchos::ParameterList &stratimikos);
+
+/// A NOX observer that sets NOX's Direction/Newton/Linear Solver "Tolerance" before every
+/// Newton iteration from ||F_k|| of the solver's current group and the target set for the
+/// solve (set_target). The list is NOX's, so it reads the tolerance when it solves.
+class AdaptiveLinearTolerance
+{
+public:
+  AdaptiveLinearTolerance(LinearTolerance rule, Teuchos::ParameterList &linear_solver);
+  /// The Newton test's ||F|| to reach in this solve: max(absolute, relative ||F(x0)||).
+  void set_target(double target);
+  /// Sets the Tolerance in the NOX linear solver list from the current residual norm.
+  void update(double residual_norm);
+  /// The observer to register in NOX's "Solver Options"/"Observer".
+  Teuchos::RCP<NOX::Observer> observer();
+  /// The tolerance of the last Newton iteration [-].
+  double last() const { return last_; }
+
+private:
+  LinearTolerance rule_;
+  Teuchos::ParameterList &linear_solver_;
+  double target_ = 0.0;
+  double last_ = 0.0;
+};
+
+/// Prepares the NOX list's Direction/Newton/Linear Solver for the adapted tolerance: the
+/// solve measure ||r|| / ||b|| (Belos' "Norm of RHS" scaling) and the first tolerance.
+void use_relative_residual_measure(Teuchos::ParameterList &nox, double first_tolerance);
+
+} // namespace internal
+} // namespace kiln
