@@ -96,11 +96,11 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       p, linear_name, "Stratimikos (Belos, MueLu, Ifpack2)",
       "Stratimikos parameters (default: Belos Pseudo Block GMRES, relative tolerance 1e-10, "
       "500 iterations, preconditioned by MueLu smoothed aggregation (drop tolerance 0.02) with "
-      "symmetric Gauss-Seidel smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
+      "Gauss-Seidel smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
-      "1 symmetric Gauss-Seidel sweep, of a CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and "
-      "30 eigenvalue iterations, and to \"coarse: params\" of a RELAXATION coarse level 4 "
-      "symmetric Gauss-Seidel sweeps",
+      "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES), of a "
+      "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and 30 eigenvalue iterations, and to "
+      "\"coarse: params\" of a RELAXATION coarse level 4 symmetric Gauss-Seidel sweeps",
       internal::linear_solver_defaults());
   return p;
 }

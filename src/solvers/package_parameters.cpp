@@ -80,6 +80,22 @@ bool uses_muelu(const ParameterList &stratimikos)
          stratimikos.get<std::string>("Preconditioner Type") == "MueLu";
 }
 
+bool symmetric_krylov(const ParameterList &stratimikos)
+{
+  if (!stratimikos.isSublist("Linear Solver Types") ||
+      !stratimikos.sublist("Linear Solver Types").isSublist("Belos"))
+    return false;
+  const ParameterList &belos = stratimikos.sublist("Linear Solver Types").sublist("Belos");
+  if (!belos.isType<std::string>("Solver Type"))
+    return false;
+  const std::string type = belos.get<std::string>("Solver Type");
+  for (const char *symmetric :
+       {"Block CG", "Pseudo Block CG", "Pseudo Block Stochastic CG", "MINRES", "PCPG", "RCG"})
+    if (type == symmetric)
+      return true;
+  return false;
+}
+
 void add_smoother_defaults(ParameterList &stratimikos)
 {
   if (!uses_muelu(stratimikos))
@@ -98,8 +114,12 @@ void add_smoother_defaults(ParameterList &stratimikos)
   }
   if (is("smoother: type", "RELAXATION"))
   {
+    // Forward Gauss-Seidel costs half a symmetric sweep and the V-cycle less than half
+    // (doc/solvers.md); CG and MINRES need the symmetric one.
     ParameterList &relaxation = muelu.sublist("smoother: params");
-    relaxation.get("relaxation: type", std::string("Gauss-Seidel"));
+    relaxation.get(
+        "relaxation: type",
+        std::string(symmetric_krylov(stratimikos) ? "Symmetric Gauss-Seidel" : "Gauss-Seidel"));
     relaxation.get("relaxation: sweeps", 1);
   }
   if (is("coarse: type", "RELAXATION"))

@@ -37,6 +37,11 @@ bool uses_muelu(const Teuchos::ParameterList &stratimikos);
 /// "KLU2").
 void add_smoother_defaults(Teuchos::ParameterList &stratimikos);
 
+/// Whether the Belos solver chosen in a Stratimikos list needs a symmetric preconditioner
+/// (CG, MINRES and their variants): then the default relaxation is symmetric Gauss-Seidel,
+/// else forward Gauss-Seidel.
+bool symmetric_krylov(const Teuchos::ParameterList &stratimikos);
+
 /// Hands the problem's node coordinates (if any) to MueLu, for aggregation
 /// and repartitioning; the number of unknowns per node is the ratio of owned
 /// rows to owned nodes, the same on every rank. With `near_null_space`, also the
