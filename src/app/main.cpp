@@ -90,10 +90,14 @@ int main(int argc, char **argv)
   if (answered_without_mpi(argc, argv))
     return 0;
   // Run by hand, one process communicates with no other: Open MPI's point-to-point layer
-  // need not probe the network libraries (UCX, OFI, PSM), which takes 0.25 s here. Under
+  // need not probe the network libraries (UCX, OFI, PSM), which takes 0.25 s here, and the
+  // singleton need not start an orted daemon (Kiln spawns no processes), 0.1 s more. Under
   // mpirun the launcher's or the user's choice stands (doc/user-guide.md).
   if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr && std::getenv("PMI_SIZE") == nullptr)
+  {
     setenv("OMPI_MCA_pml", "ob1", 0);
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  }
   Teuchos::GlobalMPISession session(&argc, &argv, nullptr);
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   try
