@@ -80,15 +80,18 @@ def kiln_flags(kiln):
     return ["--timers"] if "--timers" in help_text else []
 
 
-def launch(kiln, deck, np, work, tag):
-    """Starts `mpirun -np np kiln deck` with GNU time on every rank; returns the process."""
+def launch(kiln, deck, np, work, tag, alone=True):
+    """Starts `mpirun -np np kiln deck` with GNU time on every rank; returns the process.
+    `alone` false: another mpirun runs at the same time, so this one binds its ranks to no
+    core (Open MPI binds each mpirun's rank 0 to core 0: two copies would share one core)."""
     wrapper = work / "rank.sh"
     if not wrapper.exists():
         wrapper.write_text('#!/bin/sh\nexec /usr/bin/time -f "%M" -o "$KILN_RSS.$OMPI_COMM_WORLD_RANK" '
                            '"$@"\n')
         wrapper.chmod(0o755)
     env = dict(os.environ, **MPI_ENV, KILN_RSS=str(work / f"{tag}.rss"))
-    command = ["mpirun", "-np", str(np), str(wrapper), kiln, *kiln_flags(kiln), str(deck)]
+    binding = [] if alone else ["--bind-to", "none"]
+    command = ["mpirun", "-np", str(np), *binding, str(wrapper), kiln, *kiln_flags(kiln), str(deck)]
     log = open(work / f"{tag}.log", "w")
     return subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work)
 
@@ -138,7 +141,7 @@ def run(kiln, case, n, np, args, work, copies=1):
             deck = work / f"{tag}.xml"
             base = work / f"{tag}-out"
             deck.write_text(deck_box(n, args.end_time, base) if case == "box" else deck_cube(n, base))
-            procs.append(launch(kiln, deck, np, work, tag))
+            procs.append(launch(kiln, deck, np, work, tag, alone=copies == 1))
             tags.append(tag)
         for p in procs:
             p.wait()
