@@ -98,9 +98,11 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "500 iterations, preconditioned by MueLu smoothed aggregation (drop tolerance 0.02) with "
       "Gauss-Seidel smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
-      "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES), of a "
+      "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
+      "unknown per node), of a "
       "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and 30 eigenvalue iterations, and to "
-      "\"coarse: params\" of a RELAXATION coarse level 4 symmetric Gauss-Seidel sweeps",
+      "\"coarse: params\" of a RELAXATION coarse level 4 symmetric Gauss-Seidel sweeps, and "
+      "with the sa or unsmoothed algorithm \"transpose: use implicit\" true",
       internal::linear_solver_defaults());
   return p;
 }
@@ -155,10 +157,10 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
                                   Thyra::Ifpack2PreconditionerFactory<NonlinearProblem::Matrix>>(),
       "Ifpack2");
   const std::string linear_block = where + "/" + linear_name;
-  internal::add_smoother_defaults(*linear);
   internal::check_solver_parameters(p, *linear, *builder->getValidParameters(), comm, where);
   scale = p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;
   internal::add_coordinates(*linear, *problem, *comm, p.get<bool>("Near-Null Space"), scale);
+  internal::add_smoother_defaults(*linear);
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory;
   internal::as_input_error(*comm, linear_block,
                            [&]

@@ -30,11 +30,13 @@ Teuchos::ParameterList linear_solver_defaults();
 /// Whether the Stratimikos list asks for MueLu (Stratimikos checks the value).
 bool uses_muelu(const Teuchos::ParameterList &stratimikos);
 
-/// Kiln's defaults for the parameters of the smoother types chosen, set
+/// Kiln's defaults for the parameters of the smoother types and algorithm chosen, set
 /// where the input gives none. They cannot be in valid_parameters(): they
 /// would be merged into the input's list, where they are invalid for
 /// another type (Amesos2 rejects "relaxation: type" if "coarse: type" is
-/// "KLU2").
+/// "KLU2"; "pg" aggregation forms its own restriction, so "transpose: use
+/// implicit" is set only for "sa" and "unsmoothed"). Reads MueLu's "number of
+/// equations" (add_coordinates sets it): call it after add_coordinates.
 void add_smoother_defaults(Teuchos::ParameterList &stratimikos);
 
 /// Whether the Belos solver chosen in a Stratimikos list needs a symmetric preconditioner

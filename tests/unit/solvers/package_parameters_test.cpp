@@ -38,6 +38,16 @@ TEST(SmootherDefaults, SymmetricGaussSeidelUnderCgAndMinres)
     EXPECT_EQ(relaxation(with_krylov(krylov)), "Symmetric Gauss-Seidel") << krylov;
 }
 
+TEST(SmootherDefaults, SymmetricGaussSeidelForOneUnknownPerNode)
+{
+  ParameterList p = kiln::internal::linear_solver_defaults();
+  ParameterList &muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+  muelu.set("number of equations", 1);
+  EXPECT_EQ(relaxation(p), "Symmetric Gauss-Seidel");
+  muelu.set("number of equations", 4);
+  EXPECT_EQ(relaxation(p), "Gauss-Seidel");
+}
+
 TEST(SmootherDefaults, TheInputsChoiceIsKept)
 {
   ParameterList p = with_krylov("Pseudo Block CG");
@@ -46,5 +56,23 @@ TEST(SmootherDefaults, TheInputsChoiceIsKept)
       .sublist("smoother: params")
       .set("relaxation: type", "Jacobi");
   EXPECT_EQ(relaxation(p), "Jacobi");
+}
+TEST(MueLuDefaults, ImplicitTransposeForAggregationNotPetrovGalerkin)
+{
+  const auto implicit = [](ParameterList p)
+  {
+    kiln::internal::add_smoother_defaults(p);
+    const ParameterList &muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+    return muelu.isType<bool>("transpose: use implicit") &&
+           muelu.get<bool>("transpose: use implicit");
+  };
+  ParameterList p = kiln::internal::linear_solver_defaults();
+  EXPECT_TRUE(implicit(p));
+  ParameterList &muelu = p.sublist("Preconditioner Types").sublist("MueLu");
+  muelu.set("multigrid algorithm", "pg");
+  EXPECT_FALSE(implicit(p));
+  muelu.set("multigrid algorithm", "sa");
+  muelu.set("transpose: use implicit", false); // the input's choice
+  EXPECT_FALSE(implicit(p));
 }
 } // namespace
