@@ -61,7 +61,7 @@ double belos_convergence_tolerance(const Teuchos::ParameterList &stratimikos)
 
 AdaptiveLinearTolerance::AdaptiveLinearTolerance(const LinearTolerance rule,
                                                  Teuchos::ParameterList &linear_solver)
-    : rule_(rule), linear_solver_(linear_solver), last_(rule.floor)
+    : rule_(rule), linear_solver_(linear_solver)
 {
 }
 
@@ -72,8 +72,7 @@ void AdaptiveLinearTolerance::set_target(const double target)
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  last_ = rule_(target_, residual_norm);
-  linear_solver_.set("Tolerance", last_);
+  linear_solver_.set("Tolerance", rule_(target_, residual_norm));
 }
 
 Teuchos::RCP<NOX::Observer> AdaptiveLinearTolerance::observer()

@@ -46,14 +46,11 @@ public:
   void update(double residual_norm);
   /// The observer to register in NOX's "Solver Options"/"Observer".
   Teuchos::RCP<NOX::Observer> observer();
-  /// The tolerance of the last Newton iteration [-].
-  double last() const { return last_; }
 
 private:
   LinearTolerance rule_;
   Teuchos::ParameterList &linear_solver_;
   double target_ = 0.0;
-  double last_ = 0.0;
 };
 
 /// Prepares the NOX list's Direction/Newton/Linear Solver for the adapted tolerance: the
