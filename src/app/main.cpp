@@ -1,5 +1,6 @@
 // kiln: the command-line driver. See kiln --help.
 #include "app/command_line.hpp"
+#include "app/mpi_defaults.hpp"
 #include "app/print_parameters.hpp"
 #include "app/simulation.hpp"
 #include "base/errors.hpp"
@@ -89,15 +90,11 @@ int main(int argc, char **argv)
 {
   if (answered_without_mpi(argc, argv))
     return 0;
-  // Run by hand, one process communicates with no other: Open MPI's point-to-point layer
-  // need not probe the network libraries (UCX, OFI, PSM), which takes 0.25 s here, and the
-  // singleton need not start an orted daemon (Kiln spawns no processes), 0.1 s more. Under
-  // mpirun the launcher's or the user's choice stands (doc/user-guide.md).
-  if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr && std::getenv("PMI_SIZE") == nullptr)
-  {
-    setenv("OMPI_MCA_pml", "ob1", 0);
-    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  }
+  // On one machine Open MPI's point-to-point layer need not probe the network libraries
+  // (UCX, OFI, PSM), 0.25 s of every start here, and a process run by hand need not start an
+  // orted daemon (Kiln spawns no processes), 0.1 s more (doc/user-guide.md, Start-up).
+  for (const auto &[name, value] : kiln::open_mpi_defaults(std::getenv))
+    setenv(name.c_str(), value.c_str(), 0);
   Teuchos::GlobalMPISession session(&argc, &argv, nullptr);
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   try

@@ -8,6 +8,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace kiln
@@ -35,6 +36,12 @@ public:
   /// is this rank's part; the solver compares on every rank. Collective. Default: empty
   /// (the Jacobian may change with x or t: never reused).
   virtual std::vector<double> jacobian_dependencies(const Vector & /*x*/) { return {}; }
+  /// Optional: how many leading entries of jacobian_dependencies() are coefficients the
+  /// Jacobian varies with smoothly (the time-derivative coefficient a). A Jacobian whose
+  /// coefficients differ from those a preconditioner was built for by a small relative
+  /// amount, the other entries equal, is still evaluated anew, but may keep that
+  /// preconditioner (Solver/"Preconditioner Reuse Tolerance"). Default: none.
+  virtual std::size_t smooth_dependencies() const { return 0; }
   /// Called instead of evaluate(x, nullptr, J) when the solver keeps the Jacobian it holds
   /// (the dependencies at x are those of its last evaluation). Collective. Default: nothing.
   virtual void jacobian_kept(const Vector & /*x*/) {}

@@ -60,6 +60,8 @@ public:
   /// the constraints' generation (freeze_temperature()) and the contact decision's
   /// (NormalContact::jacobian_dependencies()); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
+  /// a, the first of the dependencies.
+  std::size_t smooth_dependencies() const override { return 1; }
   /// The contact monitor sees the active set as after an evaluation.
   void jacobian_kept(const Vector &x) override;
   void set_time_derivative(double time, double a, const Vector &b) override;

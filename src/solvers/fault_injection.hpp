@@ -41,6 +41,7 @@ public:
   {
     return problem_->jacobian_dependencies(x);
   }
+  std::size_t smooth_dependencies() const override { return problem_->smooth_dependencies(); }
   void jacobian_kept(const Vector &x) override { problem_->jacobian_kept(x); }
   Teuchos::RCP<const Tpetra::MultiVector<double>> node_coordinates() const override
   {

@@ -3,6 +3,8 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <algorithm>
+
 namespace kiln
 {
 namespace internal
@@ -23,13 +25,36 @@ bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::
   return same == 1;
 }
 
-void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J)
+void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size_t smooth)
 {
+  const bool same_matrix = &J == matrix_;
   matrix_ = &J;
   dependencies_ = std::move(pending_);
   pending_.clear();
-  ++version_;
   ++counts_.jacobians_evaluated;
+  if (enabled_ && tolerance_ > 0.0 && same_matrix)
+  {
+    const int serves_here = serves(version_dependencies_, dependencies_, smooth) ? 1 : 0;
+    int served = 0;
+    Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, serves_here, Teuchos::outArg(served));
+    if (served == 1)
+      return;
+  }
+  version_dependencies_ = dependencies_;
+  ++version_;
+}
+
+bool JacobianReuse::serves(const std::vector<double> &built, const std::vector<double> &now,
+                           const std::size_t smooth) const
+{
+  if (built.empty() || built.size() != now.size() || smooth > now.size())
+    return false;
+  // Each coefficient within a factor 1 + tolerance of its value at the build, either way.
+  for (std::size_t i = 0; i < smooth; ++i)
+    if (now[i] != built[i] && !(now[i] * built[i] > 0.0 &&
+                                std::max(now[i] / built[i], built[i] / now[i]) <= 1.0 + tolerance_))
+      return false;
+  return std::equal(built.begin() + smooth, built.end(), now.begin() + smooth);
 }
 
 ReusingPreconditionerFactory::ReusingPreconditionerFactory(

@@ -9,6 +9,7 @@
 
 #include <Thyra_PreconditionerFactoryBase.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,17 +22,25 @@ class JacobianReuse
 {
 public:
   /// `enabled` false: every Jacobian and preconditioner is built anew (Solver/"Reuse").
-  explicit JacobianReuse(bool enabled) : enabled_(enabled) {}
+  /// `tolerance` > 0: a preconditioner is also kept for a Jacobian evaluated anew whose
+  /// smooth dependencies (NonlinearProblem::smooth_dependencies) are each within a factor
+  /// 1 + tolerance of those it was built for (same sign), the others equal
+  /// (Solver/"Preconditioner Reuse Tolerance").
+  explicit JacobianReuse(bool enabled, double tolerance = 0.0)
+      : enabled_(enabled), tolerance_(tolerance)
+  {
+  }
 
   /// Whether J still holds the problem's Jacobian at x (x as the problem sees it): its
   /// dependencies are non-empty and equal to those of J's last evaluation, on every rank.
   /// Collective. If not, the caller evaluates J and then calls evaluated(J).
   bool can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                 const NonlinearProblem::Matrix &J);
-  /// J now holds the Jacobian of the state of the last can_keep().
-  void evaluated(const NonlinearProblem::Matrix &J);
-  /// Changes with every evaluated(): a preconditioner built at one version is valid while
-  /// it lasts.
+  /// J now holds the Jacobian of the state of the last can_keep(), whose first `smooth`
+  /// dependencies are smooth coefficients. Collective.
+  void evaluated(const NonlinearProblem::Matrix &J, std::size_t smooth = 0);
+  /// Changes with every evaluated() whose Jacobian the last preconditioner does not serve:
+  /// a preconditioner built at one version is used while it lasts.
   std::uint64_t version() const { return version_; }
 
   bool enabled() const { return enabled_; }
@@ -46,11 +55,18 @@ public:
   Counts &counts() { return counts_; }
 
 private:
+  /// Whether a preconditioner built for a Jacobian with the dependencies `built` serves one
+  /// with `now` (this rank's part).
+  bool serves(const std::vector<double> &built, const std::vector<double> &now,
+              std::size_t smooth) const;
+
   bool enabled_;
+  double tolerance_;
   std::uint64_t version_ = 0;
   const NonlinearProblem::Matrix *matrix_ = nullptr; ///< the last evaluated
   std::vector<double> dependencies_;                 ///< of its last evaluation
   std::vector<double> pending_;                      ///< of the last can_keep()
+  std::vector<double> version_dependencies_;         ///< of the evaluation that began version_
   Counts counts_;
 };
 

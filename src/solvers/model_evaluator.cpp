@@ -104,7 +104,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
   if (!f.is_null() || !J.is_null())
     evaluate_collectively(*problem_, x_problem, f.get(), J.get());
   if (!J.is_null())
-    reuse_->evaluated(*J);
+    reuse_->evaluated(*J, problem_->smooth_dependencies());
   if (scale_.is_null())
     return;
   if (!f.is_null())

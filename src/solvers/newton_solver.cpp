@@ -75,6 +75,14 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "contact decision; doc/solvers.md): the result is the same to the last bit, without "
         "the assembly and the preconditioner set-up. false: build both at every Newton "
         "iteration [-]");
+  p.set("Preconditioner Reuse Tolerance", 1.0,
+        "with Reuse: keep the preconditioner (not the Jacobian, which is evaluated anew) "
+        "while the time-derivative coefficient a (about 1/dt) is within a factor 1 + this of "
+        "the a it was built for (1: from half to twice it), the constraints and the contact "
+        "decision unchanged: the Krylov solver then sees the new Jacobian with the "
+        "preconditioner of an earlier one (its finest level reads the new matrix; "
+        "doc/solvers.md). 0: build one for every new Jacobian [-], must be >= 0",
+        nonnegative_double_validator());
   p.set("Adaptive Linear Tolerance", false,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "
         "||F_k||, is below 0.1 max(Absolute Tolerance, Relative Tolerance ||F(x0)||) / ||F_k||, "
@@ -217,7 +225,8 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
                                 newton.get<std::string>("Forcing Term Method") == "Constant";
   if (p.get<bool>("Adaptive Linear Tolerance") && constant_forcing)
     s.adaptive_floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
-  s.reuse = Teuchos::rcp(new internal::JacobianReuse(p.get<bool>("Reuse")));
+  s.reuse = Teuchos::rcp(new internal::JacobianReuse(
+      p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance")));
   const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory = s.create_linear_solver(p);
   s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse));
   s.check_nonlinear_parameters();

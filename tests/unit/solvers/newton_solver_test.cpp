@@ -107,7 +107,9 @@ public:
         }
         else
         {
-          F = -b_[lid];
+          // shift (u - u*): a term the Jacobian varies with smoothly, zero at u*.
+          F = -b_[lid] + shift * (u_i - u_star(gid));
+          values[0] = shift;
           for (const GO j : neighbours(gid))
           {
             const LO c = col_map.getLocalElement(j);
@@ -149,6 +151,11 @@ public:
   }
 
   std::vector<double> jacobian_dependencies(const Vector & /*x*/) override { return dependencies; }
+  std::size_t smooth_dependencies() const override { return smooth; }
+  /// The coefficient of a term shift (u - u*) of the interior rows.
+  double shift = 0.0;
+  /// What smooth_dependencies() answers.
+  std::size_t smooth = 0;
   void jacobian_kept(const Vector & /*x*/) override { ++jacobians_kept; }
   /// What jacobian_dependencies() answers.
   std::vector<double> dependencies;
@@ -611,6 +618,71 @@ TEST_F(JacobianReuseTest, NeverKeptWithReuseOff)
   EXPECT_EQ(second.jacobians_evaluated, second.newton_iterations);
   EXPECT_EQ(second.preconditioners_built, second.newton_iterations);
   EXPECT_EQ(problem->jacobians_kept, 0);
+}
+
+/// Solver/"Preconditioner Reuse Tolerance": a Jacobian whose smooth coefficient changed is
+/// evaluated anew, but keeps the preconditioner while the coefficient stays within a factor
+/// 1 + tolerance of the one it was built for and the other dependencies are equal; the
+/// solution is that of the new Jacobian.
+TEST_F(JacobianReuseTest, PreconditionerKeptWhileTheCoefficientStaysNear)
+{
+  problem->smooth = 1;
+  problem->shift = 4.0;
+  problem->dependencies = {4.0, 2.0};
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  EXPECT_EQ(solve_once(solver).preconditioners_built, 1);
+
+  const auto solve_with = [&](const double shift, const double discrete)
+  {
+    problem->shift = shift;
+    problem->dependencies = {shift, discrete};
+    return solve_once(solver);
+  };
+  // Within a factor 2 of 4 (the default tolerance 1): evaluated, preconditioner kept.
+  const NewtonSolver::Result near = solve_with(7.0, 2.0);
+  EXPECT_EQ(near.jacobians_evaluated, 1);
+  EXPECT_EQ(near.preconditioners_built, 0);
+  EXPECT_EQ(near.preconditioners_kept, near.newton_iterations);
+  EXPECT_EQ(solve_with(2.5, 2.0).preconditioners_built, 0);
+  // Measured against the coefficient it was built for (4), not the last one (2.5).
+  EXPECT_EQ(solve_with(8.5, 2.0).preconditioners_built, 1);
+  EXPECT_EQ(solve_with(5.0, 2.0).preconditioners_built, 0);
+  // Another discrete dependency: built anew.
+  EXPECT_EQ(solve_with(5.5, 3.0).preconditioners_built, 1);
+  // The same dependencies: the Jacobian is kept too.
+  const NewtonSolver::Result same = solve_with(5.5, 3.0);
+  EXPECT_EQ(same.jacobians_evaluated, 0);
+  EXPECT_EQ(same.preconditioners_built, 0);
+}
+
+TEST_F(JacobianReuseTest, PreconditionerBuiltForEveryNewJacobianWithToleranceZero)
+{
+  problem->smooth = 1;
+  problem->shift = 4.0;
+  problem->dependencies = {4.0};
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Preconditioner Reuse Tolerance", 0.0);
+  NewtonSolver solver(p, problem, quiet());
+  solve_once(solver);
+  problem->shift = 4.5;
+  problem->dependencies = {4.5};
+  const NewtonSolver::Result changed = solve_once(solver);
+  EXPECT_EQ(changed.jacobians_evaluated, 1);
+  EXPECT_EQ(changed.preconditioners_built, 1);
+}
+
+TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyChanges)
+{
+  problem->smooth = 1;
+  problem->dependencies = {1.0, 2.0};
+  NewtonSolver solver(solver_parameters(), problem, quiet());
+  solve_once(solver);
+  problem->dependencies = {1.2, 2.0};
+  if (comm->getRank() == comm->getSize() - 1)
+    problem->dependencies = {1.2, 5.0};
+  const NewtonSolver::Result second = solve_once(solver);
+  EXPECT_EQ(second.jacobians_evaluated, 1);
+  EXPECT_EQ(second.preconditioners_built, 1);
 }
 
 TEST_F(JacobianReuseTest, BuiltAnewWhenOneRanksDependenciesChange)
