@@ -75,13 +75,15 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "contact decision; doc/solvers.md): the result is the same to the last bit, without "
         "the assembly and the preconditioner set-up. false: build both at every Newton "
         "iteration [-]");
-  p.set("Preconditioner Reuse Tolerance", 1.0,
+  p.set("Preconditioner Reuse Tolerance", 0.0,
         "with Reuse: keep the preconditioner (not the Jacobian, which is evaluated anew) "
         "while the time-derivative coefficient a (about 1/dt) is within a factor 1 + this of "
         "the a it was built for (1: from half to twice it), the constraints and the contact "
         "decision unchanged: the Krylov solver then sees the new Jacobian with the "
         "preconditioner of an earlier one (its finest level reads the new matrix; "
-        "doc/solvers.md). 0: build one for every new Jacobian [-], must be >= 0",
+        "doc/solvers.md): fewer set-ups, but a restarted run then equals an uninterrupted "
+        "one only to the Krylov tolerance. 0: build one for every new Jacobian, restarts "
+        "exact [-], must be >= 0",
         nonnegative_double_validator());
   p.set("Adaptive Linear Tolerance", false,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "

@@ -629,7 +629,9 @@ TEST_F(JacobianReuseTest, PreconditionerKeptWhileTheCoefficientStaysNear)
   problem->smooth = 1;
   problem->shift = 4.0;
   problem->dependencies = {4.0, 2.0};
-  NewtonSolver solver(solver_parameters(), problem, quiet());
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Preconditioner Reuse Tolerance", 1.0);
+  NewtonSolver solver(p, problem, quiet());
   EXPECT_EQ(solve_once(solver).preconditioners_built, 1);
 
   const auto solve_with = [&](const double shift, const double discrete)
@@ -638,7 +640,7 @@ TEST_F(JacobianReuseTest, PreconditionerKeptWhileTheCoefficientStaysNear)
     problem->dependencies = {shift, discrete};
     return solve_once(solver);
   };
-  // Within a factor 2 of 4 (the default tolerance 1): evaluated, preconditioner kept.
+  // Within a factor 2 of 4 (tolerance 1): evaluated, preconditioner kept.
   const NewtonSolver::Result near = solve_with(7.0, 2.0);
   EXPECT_EQ(near.jacobians_evaluated, 1);
   EXPECT_EQ(near.preconditioners_built, 0);
@@ -655,14 +657,13 @@ TEST_F(JacobianReuseTest, PreconditionerKeptWhileTheCoefficientStaysNear)
   EXPECT_EQ(same.preconditioners_built, 0);
 }
 
-TEST_F(JacobianReuseTest, PreconditionerBuiltForEveryNewJacobianWithToleranceZero)
+/// The default, 0: a preconditioner for every new Jacobian (restarts stay exact).
+TEST_F(JacobianReuseTest, PreconditionerBuiltForEveryNewJacobianByDefault)
 {
   problem->smooth = 1;
   problem->shift = 4.0;
   problem->dependencies = {4.0};
-  Teuchos::ParameterList p = solver_parameters();
-  p.set("Preconditioner Reuse Tolerance", 0.0);
-  NewtonSolver solver(p, problem, quiet());
+  NewtonSolver solver(solver_parameters(), problem, quiet());
   solve_once(solver);
   problem->shift = 4.5;
   problem->dependencies = {4.5};
@@ -675,7 +676,9 @@ TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyC
 {
   problem->smooth = 1;
   problem->dependencies = {1.0, 2.0};
-  NewtonSolver solver(solver_parameters(), problem, quiet());
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Preconditioner Reuse Tolerance", 1.0);
+  NewtonSolver solver(p, problem, quiet());
   solve_once(solver);
   problem->dependencies = {1.2, 2.0};
   if (comm->getRank() == comm->getSize() - 1)
