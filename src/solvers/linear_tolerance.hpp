@@ -23,7 +23,9 @@ struct LinearTolerance
 {
   double floor = 1e-10; ///< the Belos solver's Convergence Tolerance
   double ceiling = 0.1; ///< never looser: the Newton step must stay a descent direction
-  double safety = 0.1;  ///< fraction of the Newton target left for the Krylov residual
+  /// Fraction of the Newton target left for the Krylov residual (Solver/"Adaptive Linear
+  /// Tolerance Safety"; 0: always the floor).
+  double safety = 0.0;
   /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||.
   double operator()(double target, double residual_norm) const;
 };

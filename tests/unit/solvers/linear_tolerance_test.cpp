@@ -11,7 +11,8 @@ using kiln::internal::LinearTolerance;
 
 TEST(LinearTolerance, LeavesTheSafetyFactorOfTheNewtonTarget)
 {
-  const LinearTolerance rule; // floor 1e-10, ceiling 0.1, safety 0.1
+  LinearTolerance rule; // floor 1e-10, ceiling 0.1
+  rule.safety = 0.1;
   // ||F_k|| = 100, the Newton test wants 1e-6: the Krylov residual must reach 1e-7.
   EXPECT_DOUBLE_EQ(rule(1e-6, 100.0), 1e-9);
   EXPECT_DOUBLE_EQ(rule(1e-8, 1e-4), 1e-5);
@@ -20,12 +21,20 @@ TEST(LinearTolerance, LeavesTheSafetyFactorOfTheNewtonTarget)
 TEST(LinearTolerance, NeverTighterThanTheFloorNorLooserThanTheCeiling)
 {
   LinearTolerance rule;
+  rule.safety = 0.1;
   rule.floor = 1e-8;
   EXPECT_DOUBLE_EQ(rule(1e-12, 1.0), 1e-8);
   EXPECT_DOUBLE_EQ(rule(0.5, 1.0), 0.05);
   EXPECT_DOUBLE_EQ(rule(5.0, 1.0), 0.1);   // F_k below the target: the ceiling
   EXPECT_DOUBLE_EQ(rule(1e-8, 0.0), 1e-8); // nothing to solve: the floor
   EXPECT_DOUBLE_EQ(rule(0.0, 1.0), 1e-8);  // no target: the floor
+}
+
+TEST(LinearTolerance, SafetyZeroIsAlwaysTheFloor)
+{
+  const LinearTolerance rule;
+  EXPECT_DOUBLE_EQ(rule(1e-6, 100.0), 1e-10);
+  EXPECT_DOUBLE_EQ(rule(1e-8, 1e-9), 1e-10);
 }
 
 TEST(LinearTolerance, FloorIsTheChosenBelosSolversTolerance)
