@@ -134,10 +134,9 @@ struct NewtonSolver::Impl
   double absolute_tolerance = 0.0;
   double relative_tolerance = 0.0;
   int max_iterations = 0;
-  /// The Belos Convergence Tolerance if the Krylov tolerance is adapted, else 0.
-  double adaptive_floor = 0.0;
-  /// Adaptive Linear Tolerance Safety.
-  double adaptive_safety = 0.1;
+  /// The Krylov tolerance's rule (Adaptive Linear Tolerance): its floor is the Belos
+  /// Convergence Tolerance if the tolerance is adapted, else 0.
+  internal::LinearTolerance adaptive{0.0};
   ParameterList nonlinear;
   RCP<Stratimikos::DefaultLinearSolverBuilder> builder;
   RCP<internal::ModelEvaluator> model;
@@ -236,8 +235,10 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   const bool constant_forcing = !newton.isType<std::string>("Forcing Term Method") ||
                                 newton.get<std::string>("Forcing Term Method") == "Constant";
   if (p.get<bool>("Adaptive Linear Tolerance") && constant_forcing)
-    s.adaptive_floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
-  s.adaptive_safety = p.get<double>("Adaptive Linear Tolerance Safety");
+  {
+    s.adaptive.floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
+    s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
+  }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance")));
   const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory = s.create_linear_solver(p);
@@ -290,14 +291,11 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
 
   const RCP<ParameterList> nox = s.nox_parameters();
   std::unique_ptr<internal::AdaptiveLinearTolerance> adaptive;
-  if (s.adaptive_floor > 0.0)
+  if (s.adaptive.floor > 0.0)
   {
-    internal::LinearTolerance rule;
-    rule.floor = s.adaptive_floor;
-    rule.safety = s.adaptive_safety;
-    internal::use_relative_residual_measure(*nox, rule.floor);
+    internal::use_relative_residual_measure(*nox, s.adaptive.floor);
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
-        rule, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
+        s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
     adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
