@@ -47,3 +47,44 @@ function(kiln_add_command_test)
   endif()
   set_tests_properties(${T_NAME} PROPERTIES LABELS "${labels}" PROCESSORS ${T_NP} TIMEOUT 300)
 endfunction()
+
+# kiln_isolate_test_tmpdirs(): gives every test of the current folder a temporary folder of
+# its own, TMPDIR=/tmp/kiln-<build hash>/<test number>; call it at the end of every
+# CMakeLists.txt that adds tests (kiln_check_test_tmpdirs() at the top level checks).
+# Open MPI 4.1 keeps its session folders in TMPDIR, shared by every process of a user: a
+# singleton that finishes removes the shared /tmp/ompi.<host>.<uid> while another process
+# starts in it ("A call to mkdir was unable to create the desired directory ... orte_init
+# failed", about one singleton in 200 when singletons and mpirun runs overlap, as under
+# ctest -j2). The folder is short because Open MPI puts Unix sockets in it (108 characters
+# at most). No test may set ENVIRONMENT itself: this replaces it.
+function(kiln_isolate_test_tmpdirs)
+  string(MD5 build_hash "${CMAKE_BINARY_DIR}")
+  string(SUBSTRING "${build_hash}" 0 8 build_hash)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(test IN LISTS tests)
+    get_property(index GLOBAL PROPERTY kiln_test_tmpdir_count)
+    math(EXPR index "${index} + 1")
+    set_property(GLOBAL PROPERTY kiln_test_tmpdir_count ${index})
+    set(folder /tmp/kiln-${build_hash}/${index})
+    file(MAKE_DIRECTORY ${folder})
+    set_tests_properties(${test} PROPERTIES ENVIRONMENT TMPDIR=${folder})
+  endforeach()
+  set_property(DIRECTORY PROPERTY kiln_test_tmpdirs_isolated ${tests})
+endfunction()
+
+# kiln_check_test_tmpdirs(): fails the configuration if a folder under the current one has a
+# test that kiln_isolate_test_tmpdirs() did not reach.
+function(kiln_check_test_tmpdirs)
+  set(folders ${CMAKE_CURRENT_SOURCE_DIR})
+  while(folders)
+    list(POP_FRONT folders folder)
+    get_property(children DIRECTORY ${folder} PROPERTY SUBDIRECTORIES)
+    list(APPEND folders ${children})
+    get_property(tests DIRECTORY ${folder} PROPERTY TESTS)
+    get_property(isolated DIRECTORY ${folder} PROPERTY kiln_test_tmpdirs_isolated)
+    if(NOT "${tests}" STREQUAL "${isolated}")
+      message(FATAL_ERROR "${folder}/CMakeLists.txt adds tests after (or without) "
+        "kiln_isolate_test_tmpdirs(): call it at the end of that file")
+    endif()
+  endwhile()
+endfunction()

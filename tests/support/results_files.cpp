@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace kiln_test
 {
@@ -25,11 +26,16 @@ std::string temporary_base(const std::string &name, const Teuchos::Comm<int> &co
 void remove_results(const std::string &base, const Teuchos::Comm<int> &comm)
 {
   comm.barrier();
-  if (comm.getRank() == 0)
-  {
-    std::remove((base + ".h5").c_str());
-    std::remove((base + ".xmf").c_str());
-  }
+  if (comm.getRank() != 0)
+    return;
+  const std::filesystem::path path(base);
+  const std::string prefix = path.filename().string() + ".";
+  std::vector<std::filesystem::path> files;
+  for (const auto &entry : std::filesystem::directory_iterator(path.parent_path()))
+    if (entry.path().filename().string().rfind(prefix, 0) == 0)
+      files.push_back(entry.path());
+  for (const auto &file : files)
+    std::filesystem::remove(file);
 }
 
 std::vector<double> read_step(const std::string &h5_path, const std::string &field, const int step,

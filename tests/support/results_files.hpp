@@ -13,7 +13,8 @@ namespace kiln_test
 /// A results path (without extension) in the temp folder, kiln_<name>_np<ranks>_<pid>: named
 /// after the test, the number of ranks and rank 0's process id (collective).
 std::string temporary_base(const std::string &name, const Teuchos::Comm<int> &comm);
-/// Removes base.h5 and base.xmf on rank 0 once every rank is done (collective).
+/// Removes every file of the run, base.* (results, XDMF, checkpoints, gap and history CSV),
+/// on rank 0 once every rank is done (collective).
 void remove_results(const std::string &base, const Teuchos::Comm<int> &comm);
 
 /// Output step `step` of an HDF5 results file (-1: the last): its time and one node or cell

@@ -48,6 +48,16 @@ struct Fixture
   kiln::RunFingerprint fingerprint = kiln::RunFingerprint::of(mesh, dofs.layout(), input);
   std::string folder = kiln_test::shared_test_folder(MPI_COMM_WORLD, "checkpoint");
 
+  Fixture() = default;
+  Fixture(const Fixture &) = delete;
+  Fixture &operator=(const Fixture &) = delete;
+  ~Fixture()
+  {
+    comm->barrier();
+    if (comm->getRank() == 0)
+      std::filesystem::remove_all(folder);
+  }
+
   /// A state whose unknowns depend on their global ids alone (the same on any ranks).
   kiln::TimeStepper::State state() const
   {
