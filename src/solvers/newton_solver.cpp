@@ -113,8 +113,9 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
   set_pass_through_sublist(
       p, linear_name, "Stratimikos (Belos, MueLu, Ifpack2)",
       "Stratimikos parameters (default: Belos Pseudo Block GMRES, relative tolerance 1e-10, "
-      "500 iterations, preconditioned by MueLu smoothed aggregation (drop tolerance 0.02) with "
-      "Gauss-Seidel smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
+      "500 iterations, preconditioned by MueLu smoothed aggregation (distance-Laplacian drop "
+      "tolerance 0.02, no aggregate across a gap that separates bodies) with Gauss-Seidel "
+      "smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
       "unknown per node), of a "

@@ -1,5 +1,8 @@
 #include "solvers/solver_hints.hpp"
 
+#include "mesh/mesh_bodies.hpp"
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -20,10 +23,19 @@ SolverHints::SolverHints(const Mesh &mesh, const DofManager &dofs,
   const auto owned_map = dofs.owned_dof_map();
   const auto &owned_nodes = dofs.owned_nodes();
   coordinates_ = Teuchos::rcp(new MultiVector(dofs.owned_node_map(), 3));
-  Point centre{};
+  Point centre{}, lowest = mesh.coordinates.front(), highest = lowest;
   for (const Point &x : mesh.coordinates)
     for (int d = 0; d < 3; ++d)
+    {
       centre[d] += x[d] / mesh.n_nodes();
+      lowest[d] = std::min(lowest[d], x[d]);
+      highest[d] = std::max(highest[d], x[d]);
+    }
+  // MueLu's coordinates: body k moved by k times ten diagonals along x, so that its distance
+  // Laplacian sees no coupling across a gap that separates bodies.
+  const MeshBodies bodies = mesh_bodies(mesh);
+  const Point extent{highest[0] - lowest[0], highest[1] - lowest[1], highest[2] - lowest[2]};
+  const double body_spacing = 10.0 * std::sqrt(dot(extent, extent));
   const int n_modes = (T_slot >= 0 ? 1 : 0) + (u_slot >= 0 ? 6 : 0);
   near_null_space_ = Teuchos::rcp(new MultiVector(owned_map, n_modes));
   unknown_scale_ = Teuchos::rcp(new Vector(owned_map));
@@ -34,6 +46,8 @@ SolverHints::SolverHints(const Mesh &mesh, const DofManager &dofs,
     const Point &x = mesh.coordinates[n];
     for (int d = 0; d < 3; ++d)
       coordinates_->replaceLocalValue(static_cast<LO>(i), d, x[d]);
+    coordinates_->sumIntoLocalValue(static_cast<LO>(i), 0,
+                                    std::max(bodies.body[n], 0) * body_spacing);
     const LO row = static_cast<LO>(F * i);
     int mode = 0;
     if (T_slot >= 0)

@@ -11,7 +11,12 @@
 namespace kiln
 {
 /// For the unknowns of a DofManager's layout (doc/mechanics.md, "Scaling"; doc/solvers.md):
-/// - coordinates: of the owned nodes, for MueLu's aggregation;
+/// - coordinates: of the owned nodes, for MueLu's aggregation (its distance Laplacian), with
+///   the mesh's k-th body (mesh_bodies(): the two halves of a box cut by its gap) moved by k
+///   times ten diagonals of the mesh's bounding box along x, so that no aggregate crosses a
+///   gap that separates bodies: with the pairs in contact, the rows of the pair couple the
+///   two sides as strongly as a body's own rows, and aggregates across the gap cannot
+///   represent the sliding of one side on the other (doc/solvers.md);
 /// - near-null space: the constant temperature and the six rigid-body modes
 ///   (translations, rotations about the mesh centre), in the nodes' frame unknowns;
 /// - unknown scale c: 1 for T, sqrt(k / (lambda + 2G)) for u when both fields are solved
