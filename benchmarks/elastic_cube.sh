@@ -24,9 +24,8 @@ for n in ${sizes[@]}; do
   log=$(mpirun --oversubscribe -np "$np" /usr/bin/time -f "peak_kib %M" "$kiln" "$deck" 2>&1)
   end=$(date +%s.%N)
   unknowns=$(grep -o 'unknowns: [0-9]*' <<< "$log" | grep -o '[0-9]*')
-  # The solve is the initial equilibrium's (the summary's count is the time steps'): the
-  # Krylov iterations of every "Newton K (L linear)" line.
-  linear=$(grep -o '([0-9]* linear)' <<< "$log" | grep -o '[0-9]*' | awk '{s += $1} END {print s}')
+  # The summary's count: every solve's Krylov iterations.
+  linear=$(grep -o '^linear iterations: [0-9]*' <<< "$log" | grep -o '[0-9]*')
   peak=$(grep -o 'peak_kib [0-9]*' <<< "$log" | awk '{if ($2 > m) m = $2} END {printf "%.0f", m / 1024}')
   umax=$(h5dump -d /steps/000000/displacement -y -w 0 "$work/out$n.h5" | sed -n '/DATA {/,/}/p' |
          tr ', ' '\n\n' | grep -E '^-?[0-9]' |

@@ -66,7 +66,7 @@ ProgressReport::ProgressReport(Teuchos::RCP<Teuchos::FancyOStream> out, Run run)
 
 double ProgressReport::wall_time() const
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - run_.started).count();
 }
 
 void ProgressReport::start(const StateSummary &summary)
@@ -85,9 +85,12 @@ std::string ProgressReport::figures(const double time, const StateSummary &summa
     s << summary.n_active << "/" << summary.n_pairs << " pairs in contact, ";
   const double wall = wall_time();
   s << "wall " << internal::duration_text(wall);
+  // The time left from the pace of the steps so far (the set-up before them left out).
+  const double stepping =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   const double done = time - run_.start_time;
   if (span > 0.0 && done > 0.0 && time < run_.end_time)
-    s << ", " << internal::duration_text(wall * (run_.end_time - time) / done) << " left";
+    s << ", " << internal::duration_text(stepping * (run_.end_time - time) / done) << " left";
   return s.str();
 }
 

@@ -41,8 +41,12 @@ public:
     double end_time = 0.0;   ///< [s]
     int start_steps = 0;     ///< accepted steps before this run (a restart)
     bool terminal = false;   ///< rank 0's log is a terminal
+    /// When the run began (before its mesh and its initial equilibrium): the wall times of
+    /// the steps, the history and the summary count from it; the time left is estimated
+    /// from the steps alone.
+    std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
   };
-  /// Lines go to `out` (rank 0); the wall clock starts now.
+  /// Lines go to `out` (rank 0); the steps start now.
   ProgressReport(Teuchos::RCP<Teuchos::FancyOStream> out, Run run);
 
   /// The state the run starts from (its contact state: the gap events are changes from it).
@@ -50,7 +54,7 @@ public:
   /// After an accepted step with its solve and error estimate (-1: none), and its summary.
   void step(const TimeStepper::State &state, const NewtonSolver::Result &newton, double error,
             const StateSummary &summary);
-  /// The wall-clock time since construction [s].
+  /// The wall-clock time since the run began (Run::started) [s].
   double wall_time() const;
   /// Ends the status line and prints the summary: `status`, the figures of `state`, then
   /// `files` ("key", "value") in order. Collective over `comm` (the memory of every rank).
@@ -64,7 +68,7 @@ private:
 
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Run run_;
-  std::chrono::steady_clock::time_point started_;
+  std::chrono::steady_clock::time_point started_; ///< the first step's start (construction)
   int last_active_ = -1; ///< pairs in contact at the last state (-1: none yet)
   std::vector<double> closed_, opened_;
 };

@@ -195,9 +195,9 @@ Simulation::Ending Simulation::run()
   const int output_steps =
       earlier_results.empty() ? 0 : continue_results(earlier_results, state.time);
   HistoryCsv history = open_history(state);
-  ProgressReport progress(out_,
-                          {params_.sublist("Time Stepping").get<std::string>("Method"), state.time,
-                           outputs_->end_time(), state.statistics.steps, log_is_terminal()});
+  ProgressReport progress(out_, {params_.sublist("Time Stepping").get<std::string>("Method"),
+                                 state.time, outputs_->end_time(), state.statistics.steps,
+                                 log_is_terminal(), started_});
   RunObserver observer({*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints,
                         history, progress, RunFingerprint::of(mesh_, layout_, params_),
                         CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}},
@@ -273,9 +273,15 @@ TimeStepper::State Simulation::start()
 {
   solution_ = Teuchos::rcp(new NonlinearProblem::Vector(problem_->solution_map()));
   problem_->initial_condition(0.0, *solution_);
-  if (layout_.displacement)
-    equilibrate();
-  return stepper_->initial_state(0.0, *solution_);
+  // Without a temperature a steady solve is the equilibrium itself (the same equations at
+  // t = 0): solving it twice only made NOX warn that the second one was converged.
+  const bool steady = params_.sublist("Time Stepping").get<std::string>("Method") == "Steady";
+  const NewtonSolver::Result equilibrium = layout_.displacement && !(steady && !layout_.temperature)
+                                               ? equilibrate()
+                                               : NewtonSolver::Result{};
+  TimeStepper::State state = stepper_->initial_state(0.0, *solution_);
+  state.statistics.add_solve(equilibrium);
+  return state;
 }
 
 std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
@@ -410,7 +416,7 @@ void Simulation::open_results(const int first_gap_step)
   field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
 }
 
-void Simulation::equilibrate()
+NewtonSolver::Result Simulation::equilibrate()
 {
   // Quasi-static: the displacement at t = 0 is in equilibrium with the initial
   // temperature (and, with contact, decides which pairs start in contact).
@@ -433,6 +439,7 @@ void Simulation::equilibrate()
         << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
         << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
   problem_->step_accepted(0.0, *solution_);
+  return r;
 }
 
 void Simulation::print_header() const

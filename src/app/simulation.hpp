@@ -12,6 +12,7 @@
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <utility>
@@ -105,8 +106,10 @@ private:
   /// `first_gap_step`) and the field output.
   void open_results(int first_gap_step);
   /// Solves for the displacement at t = 0 with the temperature held at its initial value.
-  void equilibrate();
+  NewtonSolver::Result equilibrate();
 
+  /// When the run began: the summary's wall time counts from it.
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   Teuchos::ParameterList params_;
   std::string input_path_;
   std::string input_xml_; ///< the input as given

@@ -241,9 +241,7 @@ bool TimeStepper::run(TransientProblem &problem, NewtonSolver &newton, State &st
       state.time = t;
       ++state.accepted;
       ++state.statistics.steps;
-      state.statistics.newton_iterations += r.newton_iterations;
-      state.statistics.linear_iterations += r.linear_iterations;
-      state.statistics.add_reuse(r);
+      state.statistics.add_solve(r);
       // The observer reports the solve (app/progress_report).
       problem.step_accepted(t, *state.x);
       observer.step_accepted(state, r, -1.0);
@@ -397,9 +395,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   ++state.accepted;
   Statistics &stats = state.statistics;
   ++stats.steps;
-  stats.newton_iterations += r.newton_iterations;
-  stats.linear_iterations += r.linear_iterations;
-  stats.add_reuse(r);
+  stats.add_solve(r);
   state.next_step = h * factor;
   if (h < wanted && factor >= 1.0)
     state.next_step = std::max(state.next_step, wanted);

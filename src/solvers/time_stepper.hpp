@@ -62,16 +62,19 @@ public:
     int steps = 0;             ///< accepted
     int error_rejections = 0;  ///< repeated because of the error estimate
     int newton_failures = 0;   ///< repeated because Newton did not converge
-    int newton_iterations = 0; ///< summed over accepted steps
-    int linear_iterations = 0; ///< summed over accepted steps
+    int newton_iterations = 0; ///< summed over accepted steps and the initial equilibrium
+    int linear_iterations = 0; ///< summed over accepted steps and the initial equilibrium
     /// Of this run's accepted steps (not in checkpoints): Jacobians and preconditioners
     /// built anew or kept (Solver/"Reuse").
     int jacobians_evaluated = 0;
     int jacobians_kept = 0;
     int preconditioners_built = 0;
     int preconditioners_kept = 0;
-    void add_reuse(const NewtonSolver::Result &r)
+    /// Counts the iterations, Jacobians and preconditioners of an accepted solve.
+    void add_solve(const NewtonSolver::Result &r)
     {
+      newton_iterations += r.newton_iterations;
+      linear_iterations += r.linear_iterations;
       jacobians_evaluated += r.jacobians_evaluated;
       jacobians_kept += r.jacobians_kept;
       preconditioners_built += r.preconditioners_built;

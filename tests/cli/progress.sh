@@ -7,7 +7,8 @@
 # - On a terminal (a pseudo-terminal made by script(1)): the step lines are one status line
 #   rewritten in place ("\r...ESC[K"), none is a line of its own, and the log's other lines
 #   (outputs, the summary) still are.
-# Both end with the summary's "key: value" lines.
+# Both end with the summary's "key: value" lines, whose Newton and linear iterations are the
+# sums over the solves (the initial equilibrium and the steps).
 set -u
 kiln=$(realpath "$1") input=$(realpath "$2")
 work=$(mktemp -d)
@@ -24,6 +25,17 @@ for key in "status: complete" "wall time: " "steps: " "Newton iterations: " \
            "peak RSS per rank: " "peak RSS summed: " "results: " "history: " "gap tables: "; do
   grep -q "^$key" pipe.log || fail "no summary line \"$key\""
 done
+# The summary's iterations are those of every solve, the initial equilibrium's included.
+sums=$(awk '/^(initial equilibrium|step [0-9]+):/ {
+              match($0, /Newton [0-9]+ \([0-9]+ linear/)
+              split(substr($0, RSTART, RLENGTH), n, /[ (]+/); newton += n[2]; linear += n[3]; solves++ }
+            END { print solves, newton, linear }' pipe.log)
+read -r solves newton linear <<< "$sums"
+grep -q "^initial equilibrium: Newton [1-9]" pipe.log || fail "no initial equilibrium line"
+grep -qx "Newton iterations: $newton" pipe.log ||
+  fail "the summary's Newton iterations are not the $newton of the $solves solves"
+grep -qx "linear iterations: $linear" pipe.log ||
+  fail "the summary's linear iterations are not the $linear of the $solves solves"
 command -v script > /dev/null || { echo "progress.sh: no script(1): the terminal is not tested"; exit 0; }
 rm -rf results
 script -qec "\"$kiln\" \"$input\"" /dev/null > tty.log 2>&1 || { cat -v tty.log; fail "kiln failed on a terminal"; }
