@@ -372,17 +372,7 @@ ExodusCounts exodus_counts(const std::string &path)
 
 bool exodus_file_in_metres(const std::string &path)
 {
-  KILN_CHECK_INPUT(std::ifstream(path).good(), "",
-                   "cannot open Exodus file \"" << path
-                                                << "\" (missing or not readable): check the path");
-  check_netcdf_file(path); // a damaged file is named as such before Exodus reads it
-  int comp_ws = sizeof(double), io_ws = 0;
-  float version = 0.0F;
-  const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
-  KILN_CHECK_INPUT(id >= 0, "",
-                   "cannot open Exodus file \"" << path
-                                                << "\": it is not an Exodus II (netCDF) file; "
-                                                   "check the path and export the mesh as Exodus");
+  const int id = open_exodus_for_reading(path);
   internal::ExodusFile file(id);
   const int n_info = static_cast<int>(ex_inquire_int(id, EX_INQ_INFO));
   if (n_info <= 0)
