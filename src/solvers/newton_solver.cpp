@@ -120,7 +120,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
       "unknown per node), of a "
       "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and 30 eigenvalue iterations, and to "
-      "\"coarse: params\" of a RELAXATION coarse level 4 symmetric Gauss-Seidel sweeps, and "
+      "\"coarse: params\" of a RELAXATION coarse level 10 symmetric Gauss-Seidel sweeps, and "
       "with the sa or unsmoothed algorithm \"transpose: use implicit\" true",
       internal::linear_solver_defaults());
   return p;
