@@ -54,11 +54,26 @@ std::vector<int> read_boundary_side_sets(const Teuchos::ParameterList &p, const 
 
 InteriorFaceCheck::InteriorFaceCheck(const Mesh &mesh) : mesh_(mesh)
 {
-  all_faces_.reserve(static_cast<std::size_t>(mesh.n_cells()) * n_hex_faces);
+  // The faces of every side set, and one pass over every cell face counting the cells that
+  // have each (sorting all 6 n_cells faces instead took a tenth of the set-up at 60^3 cells).
+  for (const auto &set : mesh.side_sets)
+    for (int s = 0; s < set.n_sides(); ++s)
+      side_faces_.push_back(mesh.face_key(set.cells[s], set.faces[s]));
+  std::sort(side_faces_.begin(), side_faces_.end());
+  side_faces_.erase(std::unique(side_faces_.begin(), side_faces_.end()), side_faces_.end());
+  cells_with_face_.assign(side_faces_.size(), 0);
+  if (side_faces_.empty())
+    return;
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (int f = 0; f < n_hex_faces; ++f)
-      all_faces_.push_back(mesh.face_key(c, f));
-  std::sort(all_faces_.begin(), all_faces_.end());
+    {
+      const FaceKey key = mesh.face_key(c, f);
+      if (key < side_faces_.front() || side_faces_.back() < key)
+        continue;
+      const auto it = std::lower_bound(side_faces_.begin(), side_faces_.end(), key);
+      if (it != side_faces_.end() && *it == key)
+        ++cells_with_face_[static_cast<std::size_t>(it - side_faces_.begin())];
+    }
 }
 
 void InteriorFaceCheck::check(const std::vector<int> &ids, const std::string &path) const
@@ -69,8 +84,9 @@ void InteriorFaceCheck::check(const std::vector<int> &ids, const std::string &pa
     for (int s = 0; s < set.n_sides(); ++s)
     {
       const FaceKey key = mesh_.face_key(set.cells[s], set.faces[s]);
-      const auto range = std::equal_range(all_faces_.begin(), all_faces_.end(), key);
-      KILN_CHECK_INPUT(range.second - range.first == 1, path,
+      const auto it = std::lower_bound(side_faces_.begin(), side_faces_.end(), key);
+      KILN_CHECK_INPUT(cells_with_face_[static_cast<std::size_t>(it - side_faces_.begin())] == 1,
+                       path,
                        "side set " << id << " has faces inside the body (cell " << set.cells[s] + 1
                                    << ", side " << set.faces[s] + 1
                                    << " is shared with another cell); boundary conditions "

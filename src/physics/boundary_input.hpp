@@ -27,7 +27,7 @@ std::vector<int> read_boundary_side_sets(const Teuchos::ParameterList &p, const 
 class InteriorFaceCheck
 {
 public:
-  /// Sorts the keys of every cell face once.
+  /// Counts, once, the cells that have each face of the mesh's side sets.
   explicit InteriorFaceCheck(const Mesh &mesh);
   /// Throws InputError if a side set of `ids` has a face shared by two cells; `path` names
   /// the "Side Sets" parameter of the condition.
@@ -35,6 +35,7 @@ public:
 
 private:
   const Mesh &mesh_;
-  std::vector<FaceKey> all_faces_;
+  std::vector<FaceKey> side_faces_;  ///< of every side set, sorted, unique
+  std::vector<int> cells_with_face_; ///< the cells that have side_faces_[i]
 };
 } // namespace kiln
