@@ -119,7 +119,8 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
       "unknown per node), of a "
-      "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and 30 eigenvalue iterations, and to "
+      "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and an eigenvalue estimate by 30 "
+      "power iterations (by 10 of CG's under a CG solver), and to "
       "\"coarse: params\" of a RELAXATION coarse level 10 symmetric Gauss-Seidel sweeps, and "
       "with the sa or unsmoothed algorithm \"transpose: use implicit\" true",
       internal::linear_solver_defaults());

@@ -43,6 +43,10 @@ void add_smoother_defaults(Teuchos::ParameterList &stratimikos);
 /// (CG, MINRES and their variants): then the default relaxation is symmetric Gauss-Seidel,
 /// else forward Gauss-Seidel.
 bool symmetric_krylov(const Teuchos::ParameterList &stratimikos);
+/// Whether the Belos solver of a Stratimikos list is a conjugate-gradient method (the
+/// operator and the preconditioner symmetric positive definite): Block CG, Pseudo Block
+/// CG, Pseudo Block Stochastic CG, RCG.
+bool conjugate_gradients(const Teuchos::ParameterList &stratimikos);
 
 /// Hands the problem's node coordinates (if any) to MueLu, for aggregation
 /// and repartitioning; the number of unknowns per node is the ratio of owned

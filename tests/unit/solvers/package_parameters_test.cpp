@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 namespace
 {
 using Teuchos::ParameterList;
@@ -57,6 +60,38 @@ TEST(SmootherDefaults, TheInputsChoiceIsKept)
       .set("relaxation: type", "Jacobi");
   EXPECT_EQ(relaxation(p), "Jacobi");
 }
+/// The Chebyshev smoother's eigenvalue analysis Kiln adds: (type, iterations).
+std::pair<std::string, int> chebyshev_eigen_analysis(ParameterList p)
+{
+  p.sublist("Preconditioner Types").sublist("MueLu").set("smoother: type", "CHEBYSHEV");
+  kiln::internal::add_smoother_defaults(p);
+  const ParameterList &c =
+      p.sublist("Preconditioner Types").sublist("MueLu").sublist("smoother: params");
+  return {c.isType<std::string>("eigen-analysis: type") ? c.get<std::string>("eigen-analysis: type")
+                                                        : std::string("(Ifpack2's default)"),
+          c.get<int>("chebyshev: eigenvalue max iterations")};
+}
+
+TEST(SmootherDefaults, ChebyshevEigenvaluesByCgUnderCg)
+{
+  using Analysis = std::pair<std::string, int>;
+  for (const char *krylov : {"Pseudo Block CG", "Block CG"})
+    EXPECT_EQ(chebyshev_eigen_analysis(with_krylov(krylov)), Analysis("cg", 10)) << krylov;
+  // Not symmetric positive definite: the power method, 30 iterations.
+  for (const char *krylov : {"Pseudo Block GMRES", "MINRES"})
+    EXPECT_EQ(chebyshev_eigen_analysis(with_krylov(krylov)), Analysis("power method", 30))
+        << krylov;
+  // The input's choice of either is kept, the other not added.
+  ParameterList p = with_krylov("Pseudo Block CG");
+  ParameterList &params =
+      p.sublist("Preconditioner Types").sublist("MueLu").sublist("smoother: params");
+  params.set("chebyshev: eigenvalue max iterations", 50);
+  EXPECT_EQ(chebyshev_eigen_analysis(p), Analysis("(Ifpack2's default)", 50));
+  params.remove("chebyshev: eigenvalue max iterations");
+  params.set("eigen-analysis: type", "power method");
+  EXPECT_EQ(chebyshev_eigen_analysis(p), Analysis("power method", 30));
+}
+
 TEST(MueLuDefaults, ImplicitTransposeForAggregationNotPetrovGalerkin)
 {
   const auto implicit = [](ParameterList p)
