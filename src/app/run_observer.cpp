@@ -122,6 +122,7 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
   CheckpointInfo info = c_.info;
   info.created = internal::utc_now();
   info.output_steps = output_steps_;
+  info.preconditioner_origin = c_.newton.preconditioner_origin();
   const CoupledProblem::ContactOutput contact = c_.problem.contact_output(*state.x);
   for (const GapPair &pair : c_.mesh.gap_pairs)
   {

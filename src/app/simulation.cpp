@@ -199,8 +199,8 @@ Simulation::Ending Simulation::run()
                                  state.time, outputs_->end_time(), state.statistics.steps,
                                  log_is_terminal(), started_});
   RunObserver observer({*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints,
-                        history, progress, RunFingerprint::of(mesh_, layout_, params_),
-                        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}},
+                        history, progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
+                        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}},
                         comm_, out_},
                        output_steps);
   observer.start(state, fresh);
@@ -336,6 +336,7 @@ TimeStepper::State Simulation::resume()
     *out_ << "warning: the checkpoint says " << saved_active
           << " gap pairs were in contact; its state gives " << active << "\n";
   restart_output_steps_ = c.info.output_steps;
+  newton_->restore_preconditioner_origin(std::move(c.info.preconditioner_origin));
   solution_ = c.state.x;
   return c.state;
 }

@@ -131,7 +131,8 @@ void NodalConstraints::set_time(const double t)
 void NodalConstraints::hold_temperature(const Tpetra::Vector<> *x)
 {
   held_.clear();
-  if (x == nullptr || T_slot_ < 0)
+  holds_temperature_ = x != nullptr && T_slot_ >= 0;
+  if (!holds_temperature_)
     return;
   const auto values = x->getData();
   for (std::size_t i = 0; i < dofs_.owned_nodes().size(); ++i)

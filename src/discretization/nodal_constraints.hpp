@@ -75,6 +75,8 @@ public:
   void set_time(double t);
   /// Holds every temperature at its value in x (owned unknowns); nullptr releases it.
   void hold_temperature(const Tpetra::Vector<> *x);
+  /// Whether the temperatures are held (hold_temperature() with a vector).
+  bool holds_temperature() const { return holds_temperature_; }
 
   // --- Use ---------------------------------------------------------------------------------
   /// The name of a value (its condition).
@@ -134,6 +136,7 @@ private:
   std::vector<Frame> frames_;
   std::vector<double> displacement_scale_; ///< per mesh node [N/m]
   std::vector<double> held_;               ///< per owned node [K]; empty if none held
+  bool holds_temperature_ = false;
   bool closed_ = false;
 };
 } // namespace kiln

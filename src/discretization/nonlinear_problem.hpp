@@ -42,6 +42,18 @@ public:
   /// amount, the other entries equal, is still evaluated anew, but may keep that
   /// preconditioner (Solver/"Preconditioner Reuse Tolerance"). Default: none.
   virtual std::size_t smooth_dependencies() const { return 0; }
+  /// Optional, with smooth_dependencies(): J = the Jacobian at x with the smooth coefficients
+  /// `smooth` in place of the problem's own, every other dependency as at the last
+  /// evaluation at x (x must be the state of that evaluation); the problem's own coefficients
+  /// and state stay as they were. So a restarted run can build its first preconditioner from
+  /// the Jacobian an uninterrupted run built the preconditioner it keeps from
+  /// (Solver/"Preconditioner Reuse Tolerance"). Returns false, J untouched, if it cannot.
+  /// Collective. Default: false.
+  virtual bool jacobian_with(const std::vector<double> & /*smooth*/, const Vector & /*x*/,
+                             Matrix & /*J*/)
+  {
+    return false;
+  }
   /// Called instead of evaluate(x, nullptr, J) when the solver keeps the Jacobian it holds
   /// (the dependencies at x are those of its last evaluation). Collective. Default: nothing.
   virtual void jacobian_kept(const Vector & /*x*/) {}

@@ -2,6 +2,7 @@
 
 #include "base/errors.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Import.hpp>
 #include <hdf5.h>
@@ -163,6 +164,41 @@ std::vector<double> gather(const Tpetra::Vector<> &x)
   return std::vector<double>(values.begin(), values.end());
 }
 
+/// Every rank's `record` (all of one length) on rank 0, rank by rank; empty if the lengths
+/// differ or are 0. Collective.
+std::vector<double> gather_records(const std::vector<double> &record,
+                                   const Teuchos::Comm<int> &comm, int &length)
+{
+  const int here = static_cast<int>(record.size());
+  int shortest = 0, longest = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, here, Teuchos::outArg(shortest));
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, here, Teuchos::outArg(longest));
+  length = shortest == longest ? longest : 0;
+  if (length == 0)
+    return {};
+  std::vector<double> all(comm.getRank() == 0 ? static_cast<std::size_t>(length * comm.getSize())
+                                              : 0);
+  Teuchos::gather(record.data(), length, all.data(), length, 0, comm);
+  return all;
+}
+
+/// Row `row` of the two-dimensional dataset `name`, or empty if it has not `rows` rows.
+std::vector<double> read_row(const hid_t group, const std::string &name, const int rows,
+                             const int row)
+{
+  const H5 d(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  const H5 space(H5Dget_space(d), H5Sclose, "dataset " + name);
+  hsize_t dims[2] = {0, 0};
+  if (H5Sget_simple_extent_ndims(space) != 2 ||
+      H5Sget_simple_extent_dims(space, dims, nullptr) != 2 || dims[0] != static_cast<hsize_t>(rows))
+    return {};
+  std::vector<double> all(dims[0] * dims[1]);
+  check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, all.data()),
+        "dataset " + name);
+  return std::vector<double>(all.begin() + static_cast<std::ptrdiff_t>(row * dims[1]),
+                             all.begin() + static_cast<std::ptrdiff_t>((row + 1) * dims[1]));
+}
+
 const char *const physics_blocks[] = {"Mesh", "Material", "Thermal", "Mechanics"};
 } // namespace internal
 
@@ -236,6 +272,9 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                             x_2 = gather(*state.x_2);
   const hsize_t F = static_cast<hsize_t>(state.x->getMap()->getGlobalNumElements()) /
                     static_cast<hsize_t>(fingerprint.n_nodes);
+  int origin_length = 0;
+  const std::vector<double> origins =
+      gather_records(info.preconditioner_origin, comm, origin_length);
   std::string error;
   if (comm.getRank() == 0)
   {
@@ -291,6 +330,14 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                          H5Gclose, "group contact");
         write_array(contact, "active", info.active, 1);
         write_array(contact, "gap_normal_traction", info.traction, 1);
+        if (!origins.empty())
+        {
+          // One row per rank (NewtonSolver::preconditioner_origin()).
+          const H5 solver(H5Gcreate2(file, "solver", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                          H5Gclose, "group solver");
+          write_array(solver, "preconditioner_origin", origins,
+                      static_cast<hsize_t>(origin_length));
+        }
       }
       std::filesystem::rename(tmp, path);
     }
@@ -380,6 +427,12 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
     const H5 contact(H5Gopen2(file, "contact", H5P_DEFAULT), H5Gclose, "group contact");
     c.info.active = read_array<int>(contact, "active", f.n_pairs);
     c.info.traction = read_array<double>(contact, "gap_normal_traction", f.n_pairs);
+    if (H5Lexists(file, "solver", H5P_DEFAULT) > 0)
+    {
+      const H5 solver(H5Gopen2(file, "solver", H5P_DEFAULT), H5Gclose, "group solver");
+      c.info.preconditioner_origin =
+          read_row(solver, "preconditioner_origin", comm.getSize(), comm.getRank());
+    }
   }
   catch (const std::exception &e)
   {

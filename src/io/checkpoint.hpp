@@ -47,6 +47,9 @@ struct CheckpointInfo
   /// Per gap pair (Mesh::gap_pairs order): 1 in contact, and the normal traction [Pa].
   std::vector<int> active;
   std::vector<double> traction;
+  /// This rank's NewtonSolver::preconditioner_origin() (written for every rank; read back
+  /// only on as many ranks, else empty).
+  std::vector<double> preconditioner_origin;
 };
 
 /// Writes `state` (on the owned map of the unknowns), `info` and `fingerprint` to `path`:

@@ -102,7 +102,6 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
 void CoupledProblem::freeze_temperature(const Vector *x)
 {
   constraints_.hold_temperature(x);
-  ++constraint_generation_;
   if (contact_)
     contact_->invalidate();
 }
@@ -164,7 +163,7 @@ std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
 {
   if (!terms_->constant_jacobian())
     return {};
-  std::vector<double> d{fields_->a(), static_cast<double>(constraint_generation_)};
+  std::vector<double> d{fields_->a(), constraints_.holds_temperature() ? 1.0 : 0.0};
   if (contact_)
   {
     decide(x);
@@ -172,6 +171,19 @@ std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
     d.insert(d.end(), c.begin(), c.end());
   }
   return d;
+}
+
+bool CoupledProblem::jacobian_with(const std::vector<double> &smooth, const Vector &x, Matrix &J)
+{
+  if (!terms_->constant_jacobian() || smooth.size() != 1 || (contact_ && !contact_->decided_at(x)))
+    return false;
+  const double a = fields_->a();
+  fields_->set_a(smooth[0]);
+  prepare(x);
+  assemble(nullptr, &J);
+  fields_->set_a(a);
+  prepare(x);
+  return true;
 }
 
 void CoupledProblem::jacobian_kept(const Vector &x)

@@ -57,11 +57,14 @@ public:
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
-  /// the constraints' generation (freeze_temperature()) and the contact decision's
+  /// whether the temperature is held (freeze_temperature()) and the contact decision's
   /// (NormalContact::jacobian_dependencies()); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
   /// a, the first of the dependencies.
   std::size_t smooth_dependencies() const override { return 1; }
+  /// With terms whose Jacobians are all constant: J at x with a = smooth[0], the contact
+  /// decision taken at x kept (false if none was taken at x).
+  bool jacobian_with(const std::vector<double> &smooth, const Vector &x, Matrix &J) override;
   /// The contact monitor sees the active set as after an evaluation.
   void jacobian_kept(const Vector &x) override;
   void set_time_derivative(double time, double a, const Vector &b) override;
@@ -126,8 +129,6 @@ private:
   std::unique_ptr<NodalFields> fields_;
   std::unique_ptr<SolverHints> hints_;
   std::unique_ptr<ResidualTerms> terms_;
-  /// Changes of the constraints' rows (freeze_temperature()).
-  int constraint_generation_ = 0;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
 };

@@ -24,6 +24,8 @@ public:
   void set_time_derivative(double time, double a, const Vector &b);
   double time() const { return time_; }
   double a() const { return a_; }
+  /// Replaces a only (CoupledProblem::jacobian_with); the next update() uses it.
+  void set_a(const double a) { a_ = a; }
 
   /// The fields at x (overlap values).
   void update(const Vector &x_overlap);

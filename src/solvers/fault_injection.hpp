@@ -42,6 +42,10 @@ public:
     return problem_->jacobian_dependencies(x);
   }
   std::size_t smooth_dependencies() const override { return problem_->smooth_dependencies(); }
+  bool jacobian_with(const std::vector<double> &smooth, const Vector &x, Matrix &J) override
+  {
+    return problem_->jacobian_with(smooth, x, J);
+  }
   void jacobian_kept(const Vector &x) override { problem_->jacobian_kept(x); }
   Teuchos::RCP<const Tpetra::MultiVector<double>> node_coordinates() const override
   {

@@ -1,9 +1,12 @@
 #include "solvers/jacobian_reuse.hpp"
 
+#include "base/errors.hpp"
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 namespace kiln
 {
@@ -31,7 +34,10 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   matrix_ = &J;
   dependencies_ = std::move(pending_);
   pending_.clear();
+  smooth_ = smooth;
   ++counts_.jacobians_evaluated;
+  if (!restored_.empty() && restore(J, smooth))
+    return;
   if (enabled_ && tolerance_ > 0.0 && same_matrix)
   {
     const int serves_here = serves(version_dependencies_, dependencies_, smooth) ? 1 : 0;
@@ -42,6 +48,95 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   }
   version_dependencies_ = dependencies_;
   ++version_;
+}
+
+namespace
+{
+/// FNV-1a of the bytes of d[from..], in 52 bits (a double holds it exactly).
+double hash_from(const std::vector<double> &d, const std::size_t from)
+{
+  std::uint64_t h = 14695981039346656037ull;
+  for (std::size_t i = from; i < d.size(); ++i)
+  {
+    unsigned char bytes[sizeof(double)];
+    std::memcpy(bytes, &d[i], sizeof(double));
+    for (const unsigned char b : bytes)
+      h = (h ^ b) * 1099511628211ull;
+  }
+  return static_cast<double>(h & ((std::uint64_t{1} << 52) - 1));
+}
+} // namespace
+
+// The record: k, the k smooth dependencies of the version's start, the k of the build, then
+// the hash of the other dependencies (the same for both: a version keeps them).
+std::vector<double> JacobianReuse::origin() const
+{
+  if (!enabled_ || tolerance_ <= 0.0 || built_version_ != version_ || version_ == 0 ||
+      smooth_ == 0 || built_.size() < smooth_ || version_dependencies_.size() != built_.size())
+    return {};
+  std::vector<double> record{static_cast<double>(smooth_)};
+  record.insert(record.end(), version_dependencies_.begin(),
+                version_dependencies_.begin() + static_cast<std::ptrdiff_t>(smooth_));
+  record.insert(record.end(), built_.begin(),
+                built_.begin() + static_cast<std::ptrdiff_t>(smooth_));
+  record.push_back(hash_from(built_, smooth_));
+  return record;
+}
+
+bool JacobianReuse::restore(const NonlinearProblem::Matrix &J, const std::size_t smooth)
+{
+  const std::vector<double> record = std::move(restored_);
+  restored_.clear();
+  std::vector<double> version, built;
+  int here = 0;
+  if (tolerance_ > 0.0 && smooth > 0 && record.size() == 2 * smooth + 2 &&
+      record[0] == static_cast<double>(smooth) && dependencies_.size() >= smooth &&
+      record.back() == hash_from(dependencies_, smooth))
+  {
+    const auto at = [&](const std::size_t i)
+    { return record.begin() + static_cast<std::ptrdiff_t>(i); };
+    const auto rest = dependencies_.begin() + static_cast<std::ptrdiff_t>(smooth);
+    version.assign(at(1), at(1 + smooth));
+    version.insert(version.end(), rest, dependencies_.end());
+    built.assign(at(1 + smooth), at(1 + 2 * smooth));
+    built.insert(built.end(), rest, dependencies_.end());
+    here = serves(version, dependencies_, smooth) ? 1 : 0;
+  }
+  int everywhere = 0;
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, here, Teuchos::outArg(everywhere));
+  if (everywhere == 0)
+    return false;
+  version_dependencies_ = std::move(version);
+  ++version_;
+  // Built where the dependencies already are: from J as it is.
+  build_at_ =
+      built == dependencies_
+          ? std::vector<double>{}
+          : std::vector<double>(built.begin(), built.begin() + static_cast<std::ptrdiff_t>(smooth));
+  built_ = std::move(built);
+  return true;
+}
+
+void JacobianReuse::build(const std::function<void()> &build)
+{
+  const std::vector<double> at = std::move(build_at_);
+  build_at_.clear();
+  if (!at.empty() && jacobian_with_ && jacobian_with_(at))
+  {
+    build();
+    const std::vector<double> now(dependencies_.begin(),
+                                  dependencies_.begin() + static_cast<std::ptrdiff_t>(smooth_));
+    const bool again = jacobian_with_(now);
+    KILN_ASSERT(again, "the Jacobian could not be evaluated again");
+    (void)again;
+    // built_ was set by restore().
+  }
+  else
+  {
+    build();
+    built_ = dependencies_;
+  }
+  built_version_ = version_;
 }
 
 bool JacobianReuse::serves(const std::vector<double> &built, const std::vector<double> &now,
@@ -86,7 +181,7 @@ void ReusingPreconditionerFactory::initializePrec(
     return;
   }
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 7 preconditioner set-up"));
-  factory_->initializePrec(fwdOpSrc, precOp, supportSolveUse);
+  reuse_->build([&] { factory_->initializePrec(fwdOpSrc, precOp, supportSolveUse); });
   built_ = {precOp, op, reuse_->version()};
   ++reuse_->counts().preconditioners_built;
 }

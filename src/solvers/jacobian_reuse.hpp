@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace kiln
@@ -43,6 +44,28 @@ public:
   /// a preconditioner built at one version is used while it lasts.
   std::uint64_t version() const { return version_; }
 
+  /// Builds the preconditioner of the current version by calling `build` with J holding the
+  /// Jacobian it is to be built from: the last evaluated, or after restore_origin() the
+  /// one the uninterrupted run built it from (by the function given to
+  /// set_jacobian_with()). Collective.
+  void build(const std::function<void()> &build);
+  /// J as NonlinearProblem::jacobian_with(smooth, x, J) for the last evaluated J and its x,
+  /// scaled as the solver sees it; false if the problem cannot.
+  using JacobianWith = std::function<bool(const std::vector<double> &smooth)>;
+  void set_jacobian_with(JacobianWith f) { jacobian_with_ = std::move(f); }
+  /// What a restarted run needs to go on with the preconditioner this one keeps, exactly
+  /// (with a tolerance > 0; empty otherwise or if none is built for the current version):
+  /// this rank's record of the smooth dependencies that began the version and those of
+  /// the Jacobian the preconditioner was built from, with a hash of the others.
+  std::vector<double> origin() const;
+  /// Given a record of origin() (this rank's, from a checkpoint of a run on as many ranks):
+  /// at the first evaluated(), if that run's preconditioner serves the new Jacobian as it
+  /// would have there, the version goes on from the record and its preconditioner is built
+  /// from the Jacobian with the recorded coefficients. Otherwise nothing changes.
+  void restore_origin(std::vector<double> record) { restored_ = std::move(record); }
+  /// Whether restore_origin() waits for its first evaluated() (the solver then keeps x).
+  bool restoring() const { return !restored_.empty(); }
+
   bool enabled() const { return enabled_; }
   struct Counts
   {
@@ -59,6 +82,8 @@ private:
   /// with `now` (this rank's part).
   bool serves(const std::vector<double> &built, const std::vector<double> &now,
               std::size_t smooth) const;
+  /// restore_origin() at the first evaluated(): whether it took (on every rank).
+  bool restore(const NonlinearProblem::Matrix &J, std::size_t smooth);
 
   bool enabled_;
   double tolerance_;
@@ -67,6 +92,12 @@ private:
   std::vector<double> dependencies_;                 ///< of its last evaluation
   std::vector<double> pending_;                      ///< of the last can_keep()
   std::vector<double> version_dependencies_;         ///< of the evaluation that began version_
+  std::size_t smooth_ = 0;                           ///< smooth dependencies (leading)
+  std::vector<double> built_;       ///< of the Jacobian the preconditioner was built from
+  std::uint64_t built_version_ = 0; ///< the version it was built at (0: none)
+  std::vector<double> build_at_;    ///< smooth dependencies to build the next one at
+  std::vector<double> restored_;    ///< restore_origin()'s record, until evaluated()
+  JacobianWith jacobian_with_;
   Counts counts_;
 };
 

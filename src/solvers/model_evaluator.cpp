@@ -31,6 +31,25 @@ ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
   const RCP<Thyra::VectorBase<double>> x0 = Thyra::createMember(space_);
   Thyra::assign(x0.ptr(), 0.0);
   nominal_values_.set_x(x0);
+  reuse_->set_jacobian_with([this](const std::vector<double> &smooth)
+                            { return jacobian_with(smooth); });
+}
+
+bool ModelEvaluator::jacobian_with(const std::vector<double> &smooth) const
+{
+  if (x_origin_.is_null() || J_origin_.is_null() ||
+      !problem_->jacobian_with(smooth, *x_origin_, *J_origin_))
+    return false;
+  scale_jacobian(*J_origin_);
+  return true;
+}
+
+void ModelEvaluator::scale_jacobian(NonlinearProblem::Matrix &J) const
+{
+  if (scale_.is_null())
+    return;
+  J.leftScale(*scale_);
+  J.rightScale(*scale_);
 }
 
 RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_x_space() const
@@ -103,17 +122,18 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
   }
   if (!f.is_null() || !J.is_null())
     evaluate_collectively(*problem_, x_problem, f.get(), J.get());
-  if (!J.is_null())
-    reuse_->evaluated(*J, problem_->smooth_dependencies());
-  if (scale_.is_null())
-    return;
-  if (!f.is_null())
-    f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
+  if (!J.is_null() && reuse_->restoring())
+  {
+    x_origin_ = Teuchos::rcp(new NonlinearProblem::Vector(x_problem, Teuchos::Copy));
+    J_origin_ = J;
+  }
   if (!J.is_null())
   {
-    J->leftScale(*scale_);
-    J->rightScale(*scale_);
+    scale_jacobian(*J);
+    reuse_->evaluated(*J, problem_->smooth_dependencies());
   }
+  if (!f.is_null() && !scale_.is_null())
+    f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
 }
 } // namespace internal
 } // namespace kiln

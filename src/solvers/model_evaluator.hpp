@@ -39,6 +39,11 @@ private:
   /// is the same RunError on every rank (evaluate_collectively).
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double> &in_args,
                      const Thyra::ModelEvaluatorBase::OutArgs<double> &out_args) const override;
+  /// J (the last evaluated, at x_origin_) as the problem's jacobian_with(smooth), scaled;
+  /// for JacobianReuse's restart. Collective.
+  bool jacobian_with(const std::vector<double> &smooth) const;
+  /// The scaling of W: diag(c) J diag(c) (nothing without c).
+  void scale_jacobian(NonlinearProblem::Matrix &J) const;
 
   Teuchos::RCP<NonlinearProblem> problem_;
   Teuchos::RCP<const NonlinearProblem::Vector> scale_; ///< c, or null
@@ -47,6 +52,10 @@ private:
   Teuchos::RCP<JacobianReuse> reuse_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_values_;
+  /// While JacobianReuse restores a checkpoint's preconditioner: the x (as the problem sees
+  /// it) and the matrix of the Jacobian evaluated then.
+  mutable Teuchos::RCP<NonlinearProblem::Vector> x_origin_;
+  mutable Teuchos::RCP<NonlinearProblem::Matrix> J_origin_;
 };
 } // namespace internal
 } // namespace kiln

@@ -75,15 +75,16 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "contact decision; doc/solvers.md): the result is the same to the last bit, without "
         "the assembly and the preconditioner set-up. false: build both at every Newton "
         "iteration [-]");
-  p.set("Preconditioner Reuse Tolerance", 0.0,
+  p.set("Preconditioner Reuse Tolerance", 1.0,
         "with Reuse: keep the preconditioner (not the Jacobian, which is evaluated anew) "
         "while the time-derivative coefficient a (about 1/dt) is within a factor 1 + this of "
         "the a it was built for (1: from half to twice it), the constraints and the contact "
         "decision unchanged: the Krylov solver then sees the new Jacobian with the "
         "preconditioner of an earlier one (its finest level reads the new matrix; "
-        "doc/solvers.md): fewer set-ups, but a restarted run then equals an uninterrupted "
-        "one only to the Krylov tolerance. 0: build one for every new Jacobian, restarts "
-        "exact [-], must be >= 0",
+        "doc/solvers.md): fewer set-ups, the answer the same to the Krylov tolerance. A "
+        "checkpoint records what the kept preconditioner was built from, so that a restart "
+        "on as many ranks goes on to the last bit as the uninterrupted run. 0: build one for "
+        "every new Jacobian [-], must be >= 0",
         nonnegative_double_validator());
   p.set("Adaptive Linear Tolerance", true,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "
@@ -253,6 +254,16 @@ NewtonSolver::~NewtonSolver() = default;
 int NewtonSolver::max_iterations() const
 {
   return impl_->max_iterations;
+}
+
+std::vector<double> NewtonSolver::preconditioner_origin() const
+{
+  return impl_->reuse->origin();
+}
+
+void NewtonSolver::restore_preconditioner_origin(std::vector<double> record)
+{
+  impl_->reuse->restore_origin(std::move(record));
 }
 
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace kiln
 {
@@ -53,6 +54,14 @@ public:
   Result solve(NonlinearProblem::Vector &x);
   /// "Maximum Iterations" of the input.
   int max_iterations() const;
+
+  /// With a "Preconditioner Reuse Tolerance": what a checkpoint keeps so that a run restarted
+  /// from it on as many ranks builds its first preconditioner from the Jacobian this run
+  /// built the preconditioner it keeps from, and so goes on exactly as this run would
+  /// (this rank's record; empty if there is nothing to keep).
+  std::vector<double> preconditioner_origin() const;
+  /// A record of preconditioner_origin() from a checkpoint, before the first solve.
+  void restore_preconditioner_origin(std::vector<double> record);
 
 private:
   struct Impl;

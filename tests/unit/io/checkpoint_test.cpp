@@ -86,7 +86,9 @@ TEST(Checkpoint, ReadBackBitForBit)
 {
   Fixture f;
   const kiln::TimeStepper::State s = f.state();
-  kiln::CheckpointInfo info{"1.2.3", "2026-11-23T00:00:00Z", "deck.xml", "<Kiln/>", 3, {}, {}};
+  const double rank = f.comm->getRank();
+  kiln::CheckpointInfo info{"1.2.3", "2026-11-23T00:00:00Z", "deck.xml", "<Kiln/>", 3, {},
+                            {},      {1, 0.5, 0.25, rank}};
   for (std::size_t k = 0; k < f.mesh.gap_pairs.size(); ++k)
   {
     info.active.push_back(k % 2);
@@ -108,6 +110,7 @@ TEST(Checkpoint, ReadBackBitForBit)
   EXPECT_EQ(c.info.input_xml, "<Kiln/>");
   EXPECT_EQ(c.info.active, info.active);
   EXPECT_EQ(c.info.traction, info.traction);
+  EXPECT_EQ(c.info.preconditioner_origin, info.preconditioner_origin);
   EXPECT_EQ(c.fingerprint.difference(f.fingerprint), "");
   const auto a = s.x->getData(), b = c.state.x->getData();
   EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin()));
@@ -136,8 +139,8 @@ TEST(Checkpoint, ForeignDamagedAndOtherRunsAreRefusedOnEveryRank)
 {
   Fixture f;
   const std::string path = f.folder + "/good.h5";
-  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}}, f.fingerprint,
-                         *f.comm);
+  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}, {}},
+                         f.fingerprint, *f.comm);
   if (f.comm->getRank() == 0)
   {
     std::ifstream in(path, std::ios::binary);

@@ -157,6 +157,20 @@ public:
   /// What smooth_dependencies() answers.
   std::size_t smooth = 0;
   void jacobian_kept(const Vector & /*x*/) override { ++jacobians_kept; }
+  /// J at x with shift = smooth[0] (with one smooth dependency).
+  bool jacobian_with(const std::vector<double> &s, const Vector &x, Matrix &J) override
+  {
+    if (smooth != 1 || s.size() != 1)
+      return false;
+    const double own = shift;
+    shift = s[0];
+    evaluate(x, nullptr, &J);
+    shift = own;
+    --jacobian_evaluations;
+    ++jacobians_with;
+    return true;
+  }
+  int jacobians_with = 0;
   /// What jacobian_dependencies() answers.
   std::vector<double> dependencies;
   int jacobian_evaluations = 0;
@@ -670,19 +684,80 @@ TEST_F(JacobianReuseTest, PreconditionerKeptWhileTheCoefficientStaysNear)
   EXPECT_EQ(same.preconditioners_built, 0);
 }
 
-/// The default, 0: a preconditioner for every new Jacobian (restarts stay exact).
-TEST_F(JacobianReuseTest, PreconditionerBuiltForEveryNewJacobianByDefault)
+/// The default, 1, keeps the preconditioner for a coefficient 12% larger; 0 builds one for
+/// every new Jacobian.
+TEST_F(JacobianReuseTest, PreconditionerKeptForANearCoefficientByDefault)
+{
+  for (const bool by_default : {true, false})
+  {
+    problem->smooth = 1;
+    problem->shift = 4.0;
+    problem->dependencies = {4.0};
+    Teuchos::ParameterList p = solver_parameters();
+    if (!by_default)
+      p.set("Preconditioner Reuse Tolerance", 0.0);
+    NewtonSolver solver(p, problem, quiet());
+    solve_once(solver);
+    problem->shift = 4.5;
+    problem->dependencies = {4.5};
+    const NewtonSolver::Result changed = solve_once(solver);
+    EXPECT_EQ(changed.jacobians_evaluated, 1);
+    EXPECT_EQ(changed.preconditioners_built, by_default ? 0 : 1);
+  }
+}
+
+/// A restarted run given the record a checkpoint keeps (preconditioner_origin()) builds its
+/// first preconditioner from the Jacobian the uninterrupted run built the one it keeps from,
+/// so it solves to the same bits; without the record, or with a record whose discrete
+/// dependencies differ, it builds one from its own Jacobian.
+TEST_F(JacobianReuseTest, RestartBuildsThePreconditionerTheRunKept)
 {
   problem->smooth = 1;
-  problem->shift = 4.0;
-  problem->dependencies = {4.0};
-  NewtonSolver solver(solver_parameters(), problem, quiet());
-  solve_once(solver);
-  problem->shift = 4.5;
-  problem->dependencies = {4.5};
-  const NewtonSolver::Result changed = solve_once(solver);
-  EXPECT_EQ(changed.jacobians_evaluated, 1);
-  EXPECT_EQ(changed.preconditioners_built, 1);
+  const auto set = [&](const double shift, const double discrete)
+  {
+    problem->shift = shift;
+    problem->dependencies = {shift, discrete};
+  };
+  set(4.0, 2.0);
+  NewtonSolver run(solver_parameters(), problem, quiet());
+  solve_once(run);
+  const std::vector<double> record = run.preconditioner_origin();
+  ASSERT_FALSE(record.empty());
+  set(6.0, 2.0);
+  NonlinearProblem::Vector x_run(problem->solution_map());
+  const NewtonSolver::Result kept = run.solve(x_run);
+  ASSERT_EQ(kept.preconditioners_built, 0);
+  EXPECT_EQ(problem->jacobians_with, 0);
+
+  // max |x - x_run| of a new solver given `given`, and its counts.
+  const auto restarted = [&](const std::vector<double> &given, NewtonSolver::Result &r)
+  {
+    NewtonSolver solver(solver_parameters(), problem, quiet());
+    solver.restore_preconditioner_origin(given);
+    NonlinearProblem::Vector x(problem->solution_map());
+    r = solver.solve(x);
+    x.update(-1.0, x_run, 1.0);
+    return x.normInf();
+  };
+  NewtonSolver::Result r;
+  EXPECT_EQ(restarted(record, r), 0.0);
+  EXPECT_EQ(r.linear_iterations, kept.linear_iterations);
+  EXPECT_EQ(r.preconditioners_built, 1);
+  EXPECT_EQ(problem->jacobians_with, 2); // at 4, then back at 6
+  // Built at 6: the same solution to the solver's tolerance, not to the bit.
+  EXPECT_GT(restarted({}, r), 0.0);
+  EXPECT_EQ(problem->jacobians_with, 2);
+  // The record of a run whose discrete dependency differed (on one rank).
+  if (comm->getRank() == comm->getSize() - 1)
+    problem->dependencies = {6.0, 3.0};
+  EXPECT_GT(restarted(record, r), 0.0);
+  EXPECT_EQ(problem->jacobians_with, 2);
+  // Nothing kept, nothing recorded.
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Preconditioner Reuse Tolerance", 0.0);
+  NewtonSolver without(p, problem, quiet());
+  solve_once(without);
+  EXPECT_TRUE(without.preconditioner_origin().empty());
 }
 
 TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyChanges)
