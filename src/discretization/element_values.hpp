@@ -26,7 +26,7 @@ public:
   int n_qpoints() const { return n_points; }
   int n_shape() const { return n_hex_nodes; }
   /// N_i at Gauss point q [-].
-  double shape(const int i, const int q) const { return reference_shape()[q][i]; }
+  double shape(const int i, const int q) const { return (*shape_)[q][i]; }
   /// The physical gradient of N_i at Gauss point q [1/m].
   const Point &grad(const int i, const int q) const { return grad_[q][i]; }
   /// det(dx/dxi) times the Gauss weight (1) at point q [m^3].
@@ -42,6 +42,8 @@ private:
   /// grad_xi N_i(xi_q), indexed [q][i].
   static const GradTable &reference_grad();
 
+  /// reference_shape(), looked up once: shape() is inlined in the kernels' loops.
+  const ShapeTable *shape_ = &reference_shape();
   GradTable grad_{};
   std::array<double, n_points> JxW_{};
   std::array<Point, n_points> quadrature_point_{};

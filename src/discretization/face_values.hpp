@@ -23,7 +23,7 @@ public:
   int n_qpoints() const { return n_points; }
   int n_shape() const { return 4; }
   /// N_i at Gauss point q [-].
-  double shape(const int i, const int q) const { return reference_shape()[q][i]; }
+  double shape(const int i, const int q) const { return (*shape_)[q][i]; }
   /// The area element times the Gauss weight at point q [m^2].
   double JxW(const int q) const { return JxW_[q]; }
   /// The unit outward normal at point q [-].
@@ -39,6 +39,8 @@ private:
   /// (dN_i/ds, dN_i/dt) at (s_q, t_q), indexed [q][i].
   static const GradTable &reference_grad();
 
+  /// reference_shape(), looked up once: shape() is inlined in the kernels' loops.
+  const ShapeTable *shape_ = &reference_shape();
   std::array<double, n_points> JxW_{};
   std::array<Point, n_points> normal_{};
   std::array<Point, n_points> quadrature_point_{};
