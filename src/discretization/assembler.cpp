@@ -261,8 +261,12 @@ void Assembler::begin(const bool residual, Matrix *J)
 {
   assembling_residual_ = residual;
   J_ = J;
+  residual_values_ = Teuchos::null;
   if (residual)
+  {
     overlap_residual_->putScalar(0.0);
+    residual_values_ = overlap_residual_->getDataNonConst();
+  }
   if (J != nullptr)
   {
     KILN_ASSERT(J->getCrsGraph().get() == owned_graph_.get() ||
@@ -278,21 +282,19 @@ void Assembler::begin(const bool residual, Matrix *J)
 
 void Assembler::add_row(const LO lid, const LO *columns, const double *values, const LO n)
 {
+  // Not atomic: one thread assembles.
   if (owned_row_[lid] != Teuchos::OrdinalTraits<LO>::invalid())
   {
     owned_columns_.resize(n);
     for (LO j = 0; j < n; ++j)
       owned_columns_[j] = owned_column_[columns[j]];
-    const LO count = J_->sumIntoLocalValues(owned_row_[lid],
-                                            Teuchos::ArrayView<const LO>(owned_columns_.data(), n),
-                                            Teuchos::ArrayView<const double>(values, n));
+    const LO count =
+        J_->sumIntoLocalValues(owned_row_[lid], n, values, owned_columns_.data(), false);
     KILN_ASSERT(count == n, "entries missing from the graph in owned row " << owned_row_[lid]);
     (void)count;
     return;
   }
-  const LO count =
-      ghost_matrix_->sumIntoLocalValues(ghost_row_[lid], Teuchos::ArrayView<const LO>(columns, n),
-                                        Teuchos::ArrayView<const double>(values, n));
+  const LO count = ghost_matrix_->sumIntoLocalValues(ghost_row_[lid], n, values, columns, false);
   KILN_ASSERT(count == n, "entries missing from the graph in ghost row " << ghost_row_[lid]);
   (void)count;
 }
@@ -303,45 +305,44 @@ void Assembler::add(const std::vector<LO> &lids, const LocalSystem &local)
   const int n = local.size();
   if (assembling_residual_)
   {
-    auto f = overlap_residual_->getDataNonConst();
+    double *f = residual_values_.getRawPtr();
     for (int i = 0; i < n; ++i)
       f[lids[i]] += local.residual_values()[i];
   }
-  if (J_ != nullptr)
+  if (J_ == nullptr)
+    return;
+  KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
+  const auto &values = local.jacobian_values();
+  const int F = local.n_fields();
+  KILN_ASSERT(F * F == static_cast<int>(pattern_.size()), "local system with other fields");
+  for (int i = 0; i < n; ++i)
   {
-    KILN_ASSERT(local.has_jacobian(), "a local system without a Jacobian in a Jacobian assembly");
-    const auto &values = local.jacobian_values();
-    const int F = local.n_fields();
-    KILN_ASSERT(F * F == static_cast<int>(pattern_.size()), "local system with other fields");
-    for (int i = 0; i < n; ++i)
+    const double *row = values.data() + static_cast<std::size_t>(i) * n;
+    const char *couples = pattern_.data() + static_cast<std::size_t>(i % F) * F;
+    if (std::all_of(couples, couples + F, [](const char c) { return c != 0; }))
     {
-      const double *row = values.data() + static_cast<std::size_t>(i) * n;
-      const char *couples = pattern_.data() + static_cast<std::size_t>(i % F) * F;
-      if (std::all_of(couples, couples + F, [](const char c) { return c != 0; }))
-      {
-        add_row(lids[i], lids.data(), row, n);
-        continue;
-      }
-      // A row whose block leaves fields out (Couplings): those entries must be zero.
-      row_columns_.clear();
-      row_values_.clear();
-      for (int j = 0; j < n; ++j)
-        if (couples[j % F])
-        {
-          row_columns_.push_back(lids[j]);
-          row_values_.push_back(row[j]);
-        }
-        else if (row[j] != 0.0)
-          throw std::logic_error("Assembler::add: a term couples fields the Jacobian's graph "
-                                 "leaves out (Couplings::temperature_depends_on_displacement)");
-      add_row(lids[i], row_columns_.data(), row_values_.data(),
-              static_cast<LO>(row_columns_.size()));
+      add_row(lids[i], lids.data(), row, n);
+      continue;
     }
+    // A row whose block leaves fields out (Couplings): those entries must be zero.
+    row_columns_.clear();
+    row_values_.clear();
+    for (int j = 0; j < n; ++j)
+      if (couples[j % F])
+      {
+        row_columns_.push_back(lids[j]);
+        row_values_.push_back(row[j]);
+      }
+      else if (row[j] != 0.0)
+        throw std::logic_error("Assembler::add: a term couples fields the Jacobian's graph "
+                               "leaves out (Couplings::temperature_depends_on_displacement)");
+    add_row(lids[i], row_columns_.data(), row_values_.data(), static_cast<LO>(row_columns_.size()));
   }
 }
 
 void Assembler::finish(Vector *f, Matrix *J)
 {
+  residual_values_ = Teuchos::null;
   if (f != nullptr)
   {
     KILN_ASSERT(assembling_residual_, "finish(f) without begin(residual)");

@@ -104,6 +104,9 @@ private:
   std::vector<LO> owned_column_;  ///< per overlap local id: J's local column, or invalid
   std::vector<LO> owned_columns_; ///< add_row(): work
   Teuchos::RCP<Vector> overlap_residual_;
+  /// overlap_residual_'s values while a residual is assembled (between begin() and finish()):
+  /// taken once, not per add().
+  Teuchos::ArrayRCP<double> residual_values_;
   bool assembling_residual_ = false;
   Matrix *J_ = nullptr; ///< the Jacobian being assembled
 };
