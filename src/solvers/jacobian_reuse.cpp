@@ -89,7 +89,7 @@ bool JacobianReuse::restore(const NonlinearProblem::Matrix &J, const std::size_t
   restored_.clear();
   std::vector<double> version, built;
   int here = 0;
-  if (tolerance_ > 0.0 && smooth > 0 && record.size() == 2 * smooth + 2 &&
+  if (enabled_ && tolerance_ > 0.0 && smooth > 0 && record.size() == 2 * smooth + 2 &&
       record[0] == static_cast<double>(smooth) && dependencies_.size() >= smooth &&
       record.back() == hash_from(dependencies_, smooth))
   {

@@ -752,12 +752,20 @@ TEST_F(JacobianReuseTest, RestartBuildsThePreconditionerTheRunKept)
     problem->dependencies = {6.0, 3.0};
   EXPECT_GT(restarted(record, r), 0.0);
   EXPECT_EQ(problem->jacobians_with, 2);
-  // Nothing kept, nothing recorded.
-  Teuchos::ParameterList p = solver_parameters();
-  p.set("Preconditioner Reuse Tolerance", 0.0);
-  NewtonSolver without(p, problem, quiet());
-  solve_once(without);
-  EXPECT_TRUE(without.preconditioner_origin().empty());
+  // Nothing kept, nothing recorded; a record is not used without reuse.
+  for (const char *off : {"Preconditioner Reuse Tolerance", "Reuse"})
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    if (std::string(off) == "Reuse")
+      p.set(off, false);
+    else
+      p.set(off, 0.0);
+    NewtonSolver without(p, problem, quiet());
+    without.restore_preconditioner_origin(record);
+    solve_once(without);
+    EXPECT_TRUE(without.preconditioner_origin().empty()) << off;
+    EXPECT_EQ(problem->jacobians_with, 2) << off;
+  }
 }
 
 TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyChanges)
