@@ -1,6 +1,7 @@
 #include "io/checkpoint.hpp"
 
 #include "base/errors.hpp"
+#include "base/hash.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -142,15 +143,6 @@ std::vector<T> read_array(const hid_t group, const std::string &name, const std:
   return values;
 }
 
-/// 64-bit FNV-1a of the bytes of `data`, continued from `hash`.
-template <typename T> std::uint64_t fnv1a(const std::vector<T> &data, std::uint64_t hash)
-{
-  const auto *bytes = reinterpret_cast<const unsigned char *>(data.data());
-  for (std::size_t i = 0; i < data.size() * sizeof(T); ++i)
-    hash = (hash ^ bytes[i]) * 1099511628211ull;
-  return hash;
-}
-
 /// The values of `x` on rank 0, in global-id order (empty elsewhere).
 std::vector<double> gather(const Tpetra::Vector<> &x)
 {
@@ -216,10 +208,9 @@ RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
   std::vector<int> cells;
   for (const auto &c : mesh.connectivity)
     cells.insert(cells.end(), c.begin(), c.end());
-  std::uint64_t hash = 14695981039346656037ull;
-  hash = internal::fnv1a(coordinates, hash);
-  hash = internal::fnv1a(cells, hash);
-  hash = internal::fnv1a(mesh.block_id, hash);
+  std::uint64_t hash = fnv1a(coordinates.data(), coordinates.size());
+  hash = fnv1a(cells.data(), cells.size(), hash);
+  hash = fnv1a(mesh.block_id.data(), mesh.block_id.size(), hash);
   std::ostringstream hex;
   hex << std::hex << std::setw(16) << std::setfill('0') << hash;
   f.mesh_hash = hex.str();

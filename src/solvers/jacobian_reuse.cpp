@@ -1,12 +1,12 @@
 #include "solvers/jacobian_reuse.hpp"
 
 #include "base/errors.hpp"
+#include "base/hash.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
 #include <algorithm>
-#include <cstring>
 
 namespace kiln
 {
@@ -52,18 +52,11 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
 
 namespace
 {
-/// FNV-1a of the bytes of d[from..], in 52 bits (a double holds it exactly).
+/// FNV-1a of d[from..], in 52 bits (a double holds it exactly).
 double hash_from(const std::vector<double> &d, const std::size_t from)
 {
-  std::uint64_t h = 14695981039346656037ull;
-  for (std::size_t i = from; i < d.size(); ++i)
-  {
-    unsigned char bytes[sizeof(double)];
-    std::memcpy(bytes, &d[i], sizeof(double));
-    for (const unsigned char b : bytes)
-      h = (h ^ b) * 1099511628211ull;
-  }
-  return static_cast<double>(h & ((std::uint64_t{1} << 52) - 1));
+  const std::size_t n = d.size() > from ? d.size() - from : 0;
+  return static_cast<double>(fnv1a(d.data() + from, n) & ((std::uint64_t{1} << 52) - 1));
 }
 } // namespace
 
