@@ -167,15 +167,25 @@ void ReusingPreconditionerFactory::initializePrec(
     Thyra::PreconditionerBase<double> *precOp, const Thyra::ESupportSolveUse supportSolveUse) const
 {
   const Thyra::LinearOpBase<double> *op = fwdOpSrc->getOp().get();
+  const int evaluated = reuse_->counts().jacobians_evaluated;
   if (reuse_->enabled() && precOp == built_.prec && op == built_.op &&
       reuse_->version() == built_.version)
   {
     ++reuse_->counts().preconditioners_kept;
+    const auto *refreshing = dynamic_cast<const RefreshingPreconditionerFactory *>(factory_.get());
+    if (refreshing != nullptr && evaluated != built_.evaluated)
+      refreshing->refresh(*fwdOpSrc);
+    built_.evaluated = evaluated;
     return;
   }
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 7 preconditioner set-up"));
   reuse_->build([&] { factory_->initializePrec(fwdOpSrc, precOp, supportSolveUse); });
-  built_ = {precOp, op, reuse_->version()};
+  // After a restore (JacobianReuse::build) the operator holds other values than those built
+  // from, and a hierarchy's finest level reads the operator's: so do the copies.
+  if (const auto *refreshing =
+          dynamic_cast<const RefreshingPreconditionerFactory *>(factory_.get()))
+    refreshing->refresh(*fwdOpSrc);
+  built_ = {precOp, op, reuse_->version(), evaluated};
   ++reuse_->counts().preconditioners_built;
 }
 

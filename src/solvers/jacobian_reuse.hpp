@@ -101,6 +101,17 @@ private:
   Counts counts_;
 };
 
+/// A preconditioner factory whose preconditioners hold copies of the operator's values
+/// (BlockTriangularPreconditionerFactory): ReusingPreconditionerFactory calls refresh() when
+/// it keeps a preconditioner for a Jacobian evaluated anew, so that the copies read the new
+/// values as MueLu's finest level reads J's own.
+class RefreshingPreconditionerFactory
+{
+public:
+  virtual ~RefreshingPreconditionerFactory() = default;
+  virtual void refresh(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const = 0;
+};
+
 /// A preconditioner factory (MueLu's, Ifpack2's from Stratimikos) that builds a
 /// preconditioner only when the operator or its JacobianReuse version changed since it last
 /// built it; everything else is the wrapped factory's.
@@ -134,6 +145,7 @@ private:
     const Thyra::PreconditionerBase<double> *prec = nullptr;
     const Thyra::LinearOpBase<double> *op = nullptr;
     std::uint64_t version = 0;
+    int evaluated = 0; ///< JacobianReuse's count of Jacobians evaluated then
   };
   mutable Built built_;
 };

@@ -2,6 +2,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "solvers/block_triangular_preconditioner.hpp"
 #include "solvers/jacobian_reuse.hpp"
 #include "solvers/linear_tolerance.hpp"
 #include "solvers/model_evaluator.hpp"
@@ -116,7 +117,13 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "Stratimikos parameters (default: Belos Pseudo Block GMRES, relative tolerance 1e-10, "
       "500 iterations, preconditioned by MueLu smoothed aggregation (distance-Laplacian drop "
       "tolerance 0.02, no aggregate across a gap that separates bodies) with Gauss-Seidel "
-      "smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). "
+      "smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). With temperature and "
+      "displacement (Thermo-Elasticity) the default Preconditioner Type is \"Block "
+      "Triangular\": one MueLu hierarchy for the temperatures, one for the displacements "
+      "(with the six rigid-body modes), applied in turn with the coupling of the force rows to "
+      "T between them; the \"MueLu\" list applies to both, \"Preconditioner Types\"/\"Block "
+      "Triangular\"/\"Temperature\" and \"Displacement\" add to one (doc/solvers.md). "
+      "\"MueLu\" as the Preconditioner Type keeps one hierarchy for the whole system. "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
       "unknown per node), of a "
@@ -149,7 +156,9 @@ struct NewtonSolver::Impl
   /// Kept between solves: it owns the Jacobian and the linear solver.
   RCP<NOX::Thyra::Group> group;
 
-  RCP<Thyra::LinearOpWithSolveFactoryBase<double>> create_linear_solver(const ParameterList &p);
+  /// `preconditioner_given`: the input names the "Preconditioner Type" (else Kiln picks it).
+  RCP<Thyra::LinearOpWithSolveFactoryBase<double>> create_linear_solver(const ParameterList &p,
+                                                                        bool preconditioner_given);
   void check_nonlinear_parameters();
   /// NOX's list for one solve, printing on rank 0 to `out`.
   RCP<ParameterList> nox_parameters() const
@@ -168,9 +177,18 @@ struct NewtonSolver::Impl
 /// created, but not the lists of Belos' solvers; those, NOX's and MueLu's lists are checked
 /// before (solver_parameter_checks.hpp). Sets `scale` too.
 RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
-NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
+NewtonSolver::Impl::create_linear_solver(const ParameterList &p, const bool preconditioner_given)
 {
   auto linear = Teuchos::rcp(new ParameterList(p.sublist(linear_name)));
+  // Temperature and displacement: the block triangular preconditioner unless the input
+  // chooses (doc/solvers.md, "Block Triangular").
+  const int unknowns = internal::unknowns_per_node(*problem, *comm);
+  if (!preconditioner_given && unknowns == 4)
+    linear->set("Preconditioner Type", "Block Triangular");
+  const bool block_triangular =
+      linear->get<std::string>("Preconditioner Type") == "Block Triangular";
+  // MueLu's list as the input and Kiln's defaults give it, for the blocks' hierarchies.
+  const ParameterList muelu = linear->sublist("Preconditioner Types").sublist("MueLu");
   builder = Teuchos::rcp(new Stratimikos::DefaultLinearSolverBuilder);
   Stratimikos::enableMueLu<int, long long, internal::Node>(*builder);
   // Debian's Stratimikos does not register Ifpack2 itself.
@@ -178,10 +196,20 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
       Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
                                   Thyra::Ifpack2PreconditionerFactory<NonlinearProblem::Matrix>>(),
       "Ifpack2");
+  builder->setPreconditioningStrategyFactory(
+      Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
+                                  internal::BlockTriangularPreconditionerFactory>(),
+      "Block Triangular");
   const std::string linear_block = where + "/" + linear_name;
   internal::check_solver_parameters(p, *linear, *builder->getValidParameters(), comm, where);
   scale = p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;
   internal::add_coordinates(*linear, *problem, *comm, p.get<bool>("Near-Null Space"), scale);
+  KILN_CHECK_INPUT(!block_triangular || unknowns == 4, linear_block + "/\"Preconditioner Type\"",
+                   "is \"Block Triangular\", which splits the temperature and the three "
+                   "displacements of each node, but this problem has "
+                       << unknowns
+                       << " unknowns per node (Physics is not Thermo-Elasticity); remove the "
+                          "parameter (Kiln then uses \"MueLu\") or set \"MueLu\"");
   internal::add_smoother_defaults(*linear);
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory;
   internal::as_input_error(*comm, linear_block,
@@ -198,6 +226,13 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p)
       !lows_factory->getPreconditionerFactory().is_null())
   {
     lows_factory->unsetPreconditionerFactory(&preconditioner, &preconditioner_name);
+    if (auto *blocks =
+            dynamic_cast<internal::BlockTriangularPreconditionerFactory *>(preconditioner.get()))
+      blocks->set_hints(problem->node_coordinates(),
+                        p.get<bool>("Near-Null Space")
+                            ? internal::scaled_near_null_space(*problem, scale)
+                            : Teuchos::null,
+                        muelu);
     lows_factory->setPreconditionerFactory(
         Teuchos::rcp(new internal::ReusingPreconditionerFactory(preconditioner, reuse)),
         preconditioner_name);
@@ -244,7 +279,11 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance")));
-  const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory = s.create_linear_solver(p);
+  const bool preconditioner_given =
+      params.isSublist(linear_name) &&
+      given_in_input(params.sublist(linear_name), "Preconditioner Type");
+  const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory =
+      s.create_linear_solver(p, preconditioner_given);
   s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse));
   s.check_nonlinear_parameters();
 }

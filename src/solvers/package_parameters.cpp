@@ -177,13 +177,11 @@ void add_smoother_defaults(ParameterList &stratimikos)
   }
 }
 
-void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem,
-                     const Teuchos::Comm<int> &comm, const bool near_null_space,
-                     const RCP<const NonlinearProblem::Vector> &scale)
+int unknowns_per_node(const NonlinearProblem &problem, const Teuchos::Comm<int> &comm)
 {
   const RCP<const Tpetra::MultiVector<double>> coordinates = problem.node_coordinates();
-  if (coordinates.is_null() || !uses_muelu(stratimikos))
-    return;
+  if (coordinates.is_null())
+    return 0;
   const auto n_rows = static_cast<long long>(problem.solution_map()->getNodeNumElements());
   const auto n_nodes = static_cast<long long>(coordinates->getLocalLength());
   long long local[2] = {n_nodes > 0 && n_rows % n_nodes == 0 ? n_rows / n_nodes : -1, 0};
@@ -193,24 +191,46 @@ void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem
   if (global[0] < 1 || global[0] != -global[1])
     throw InternalError("NonlinearProblem::node_coordinates(): the owned rows are not a fixed "
                         "multiple of the owned nodes on every rank");
+  return static_cast<int>(global[0]);
+}
+
+void add_coordinates(ParameterList &stratimikos, const NonlinearProblem &problem,
+                     const Teuchos::Comm<int> &comm, const bool near_null_space,
+                     const RCP<const NonlinearProblem::Vector> &scale)
+{
+  const RCP<const Tpetra::MultiVector<double>> coordinates = problem.node_coordinates();
+  if (coordinates.is_null() || !uses_muelu(stratimikos))
+    return;
+  const int unknowns = unknowns_per_node(problem, comm);
   ParameterList &muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
   muelu.set("Coordinates", Teuchos::rcp_const_cast<Tpetra::MultiVector<double>>(coordinates));
   if (!muelu.isParameter("number of equations"))
-    muelu.set("number of equations", static_cast<int>(global[0]));
+    muelu.set("number of equations", unknowns);
   // The near-null space, divided by the unknown scale as the solver sees it.
-  const RCP<const Tpetra::MultiVector<double>> modes = problem.near_null_space();
-  if (near_null_space && !modes.is_null() && !muelu.isParameter("Nullspace"))
+  if (near_null_space && !muelu.isParameter("Nullspace"))
   {
-    auto scaled = Teuchos::rcp(new Tpetra::MultiVector<double>(*modes, Teuchos::Copy));
-    if (!scale.is_null())
-    {
-      NonlinearProblem::Vector inverse(scale->getMap());
-      inverse.reciprocal(*scale);
-      for (std::size_t j = 0; j < scaled->getNumVectors(); ++j)
-        scaled->getVectorNonConst(j)->elementWiseMultiply(1.0, inverse, *modes->getVector(j), 0.0);
-    }
-    muelu.set("Nullspace", scaled);
+    const RCP<Tpetra::MultiVector<double>> modes = scaled_near_null_space(problem, scale);
+    if (!modes.is_null())
+      muelu.set("Nullspace", modes);
   }
+}
+
+RCP<Tpetra::MultiVector<double>>
+scaled_near_null_space(const NonlinearProblem &problem,
+                       const RCP<const NonlinearProblem::Vector> &scale)
+{
+  const RCP<const Tpetra::MultiVector<double>> modes = problem.near_null_space();
+  if (modes.is_null())
+    return Teuchos::null;
+  auto scaled = Teuchos::rcp(new Tpetra::MultiVector<double>(*modes, Teuchos::Copy));
+  if (!scale.is_null())
+  {
+    NonlinearProblem::Vector inverse(scale->getMap());
+    inverse.reciprocal(*scale);
+    for (std::size_t j = 0; j < scaled->getNumVectors(); ++j)
+      scaled->getVectorNonConst(j)->elementWiseMultiply(1.0, inverse, *modes->getVector(j), 0.0);
+  }
+  return scaled;
 }
 } // namespace internal
 } // namespace kiln

@@ -48,6 +48,10 @@ bool symmetric_krylov(const Teuchos::ParameterList &stratimikos);
 /// CG, Pseudo Block Stochastic CG, RCG.
 bool conjugate_gradients(const Teuchos::ParameterList &stratimikos);
 
+/// The problem's unknowns per node (the same on every rank), or 0 if it gives no node
+/// coordinates. Collective.
+int unknowns_per_node(const NonlinearProblem &problem, const Teuchos::Comm<int> &comm);
+
 /// Hands the problem's node coordinates (if any) to MueLu, for aggregation
 /// and repartitioning; the number of unknowns per node is the ratio of owned
 /// rows to owned nodes, the same on every rank. With `near_null_space`, also the
@@ -56,5 +60,10 @@ bool conjugate_gradients(const Teuchos::ParameterList &stratimikos);
 void add_coordinates(Teuchos::ParameterList &stratimikos, const NonlinearProblem &problem,
                      const Teuchos::Comm<int> &comm, bool near_null_space,
                      const Teuchos::RCP<const NonlinearProblem::Vector> &scale);
+/// The problem's near-null space divided by the unknown scale c (NOX's unknowns are x / c), or
+/// null if the problem has none.
+Teuchos::RCP<Tpetra::MultiVector<double>>
+scaled_near_null_space(const NonlinearProblem &problem,
+                       const Teuchos::RCP<const NonlinearProblem::Vector> &scale);
 } // namespace internal
 } // namespace kiln

@@ -339,25 +339,21 @@ ParameterList nox_known_parameters()
   return p;
 }
 
-void check_muelu_parameters(const ParameterList &stratimikos,
-                            const RCP<const Teuchos::Comm<int>> &comm, const std::string &where)
+namespace
 {
-  if (!uses_muelu(stratimikos))
-    return;
-  ParameterList muelu;
-  if (stratimikos.isSublist("Preconditioner Types") &&
-      stratimikos.sublist("Preconditioner Types").isSublist("MueLu"))
-    muelu = stratimikos.sublist("Preconditioner Types").sublist("MueLu");
+/// A MueLu list, checked as MueLu reads it; `where` names it.
+void check_muelu_list(ParameterList muelu, const RCP<const Teuchos::Comm<int>> &comm,
+                      const std::string &where)
+{
   // MueLu's reuse of a hierarchy for new values inserts into the Jacobian's static graph in
   // Trilinos 13.2 (both "RP" and "tP" stop the first re-setup); Kiln keeps an unchanged
   // hierarchy itself (Solver/"Reuse").
   if (muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none")
-    throw_input_error(where + "/Preconditioner Types/MueLu",
-                      "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
-                          "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
-                          "Jacobian's static graph); remove it (or set \"none\"): Kiln keeps "
-                          "the preconditioner while the Jacobian is unchanged (Solver/Reuse, "
-                          "doc/solvers.md)");
+    throw_input_error(where, "\"reuse: type\" = \"" + muelu.get<std::string>("reuse: type") +
+                                 "\" fails in Debian's Trilinos 13.2 (MueLu inserts into the "
+                                 "Jacobian's static graph); remove it (or set \"none\"): Kiln "
+                                 "keeps the preconditioner while the Jacobian is unchanged "
+                                 "(Solver/Reuse, doc/solvers.md)");
   // MueLu prints its distance to every valid name on std::cout; the message
   // has the closest one.
   std::ostringstream muelu_chatter;
@@ -365,7 +361,7 @@ void check_muelu_parameters(const ParameterList &stratimikos,
   try
   {
     as_input_error(
-        *comm, where + "/Preconditioner Types/MueLu",
+        *comm, where,
         [&] { MueLu::ParameterListInterpreter<double, int, long long, Node> check(muelu, comm); });
   }
   catch (...)
@@ -374,6 +370,32 @@ void check_muelu_parameters(const ParameterList &stratimikos,
     throw;
   }
   std::cout.rdbuf(cout_buffer);
+}
+} // namespace
+
+void check_muelu_parameters(const ParameterList &stratimikos,
+                            const RCP<const Teuchos::Comm<int>> &comm, const std::string &where)
+{
+  const bool block_triangular =
+      stratimikos.isType<std::string>("Preconditioner Type") &&
+      stratimikos.get<std::string>("Preconditioner Type") == "Block Triangular";
+  if (!uses_muelu(stratimikos) && !block_triangular)
+    return;
+  const std::string types = "Preconditioner Types";
+  ParameterList muelu;
+  if (stratimikos.isSublist(types) && stratimikos.sublist(types).isSublist("MueLu"))
+    muelu = stratimikos.sublist(types).sublist("MueLu");
+  check_muelu_list(muelu, comm, where + "/" + types + "/MueLu");
+  // The blocks' own MueLu lists (BlockTriangularPreconditionerFactory).
+  if (block_triangular && stratimikos.isSublist(types) &&
+      stratimikos.sublist(types).isSublist("Block Triangular"))
+  {
+    const ParameterList &blocks = stratimikos.sublist(types).sublist("Block Triangular");
+    for (const char *block : {"Temperature", "Displacement"})
+      if (blocks.isSublist(block))
+        check_muelu_list(blocks.sublist(block), comm,
+                         where + "/" + types + "/Block Triangular/" + block);
+  }
 }
 
 void check_stratimikos_parameters(const ParameterList &stratimikos, const ParameterList &valid,
@@ -394,6 +416,19 @@ void check_stratimikos_parameters(const ParameterList &stratimikos, const Parame
   if (stratimikos.isSublist(belos) && stratimikos.sublist(belos).isSublist("Belos"))
     check_list(stratimikos.sublist(belos).sublist("Belos"), valid.sublist(belos).sublist("Belos"),
                where + "/" + belos + "/Belos", PackageList{"Belos", {}, {}});
+  // Kiln's block triangular preconditioner: its two sublists are MueLu's
+  // (check_muelu_parameters).
+  const std::string types = "Preconditioner Types";
+  if (stratimikos.isSublist(types) && stratimikos.sublist(types).isSublist("Block Triangular") &&
+      valid.sublist(types).isSublist("Block Triangular"))
+  {
+    ParameterList blocks(valid.sublist(types).sublist("Block Triangular"));
+    leave_unchecked(blocks, "Temperature");
+    leave_unchecked(blocks, "Displacement");
+    check_list(stratimikos.sublist(types).sublist("Block Triangular"), blocks,
+               where + "/" + types + "/Block Triangular",
+               PackageList{"Kiln's Block Triangular preconditioner", {}, {}});
+  }
 }
 
 void check_nox_parameters(const ParameterList &nox, const std::string &where)

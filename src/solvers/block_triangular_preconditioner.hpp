@@ -1,0 +1,70 @@
+#pragma once
+/// Private to src/solvers: the preconditioner "Block Triangular" for the coupled system of
+/// temperature and displacement (doc/solvers.md). Its Jacobian is block lower-triangular,
+///
+///     J = [ J_TT   0   ]   (the heat equation does not read u; the force rows read T
+///         [ J_uT  J_uu ]    through the thermal strain),
+///
+/// so J^{-1} r is z_T = J_TT^{-1} r_T, then z_u = J_uu^{-1} (r_u - J_uT z_T). The
+/// preconditioner applies this with a MueLu hierarchy for each diagonal block (one
+/// unknown per node for T, three with the six rigid-body modes for u) in place of the
+/// inverses: one V-cycle each, or with an "Inner Tolerance" a GMRES solve of each block to
+/// it. Each block's hierarchy works on a quarter or three quarters of the unknowns and a
+/// twelfth or seven tenths of the entries of J. Entries of J_Tu (a gap conductance that reads
+/// the displacement) are left out: the outer Krylov solver then corrects for them.
+#include "solvers/jacobian_reuse.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_PreconditionerFactoryBase.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <memory>
+
+namespace kiln
+{
+namespace internal
+{
+class BlockSplit;
+
+class BlockTriangularPreconditionerFactory final : public Thyra::PreconditionerFactoryBase<double>,
+                                                   public RefreshingPreconditionerFactory
+{
+public:
+  using MultiVector = Tpetra::MultiVector<double>;
+
+  /// For the blocks' hierarchies: the problem's node coordinates and near-null space
+  /// (unknowns as the solver sees them: the constant temperature first, then the six
+  /// rigid-body modes; either may be null), and the MueLu parameters of the Stratimikos list
+  /// (Kiln's defaults and the input's), which both blocks take before their own sublists.
+  void set_hints(Teuchos::RCP<const MultiVector> coordinates,
+                 Teuchos::RCP<const MultiVector> near_null_space,
+                 const Teuchos::ParameterList &muelu);
+
+  bool isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const override;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;
+  void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
+                      Thyra::PreconditionerBase<double> *precOp,
+                      Thyra::ESupportSolveUse supportSolveUse) const override;
+  /// The blocks of a kept preconditioner take the new values of the operator.
+  void refresh(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const override;
+  void uninitializePrec(Thyra::PreconditionerBase<double> *prec,
+                        Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
+                        Thyra::ESupportSolveUse *supportSolveUse) const override;
+
+  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList> &paramList) override;
+  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override;
+  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override;
+  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override;
+  Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
+
+private:
+  Teuchos::RCP<Teuchos::ParameterList> params_;
+  Teuchos::RCP<const MultiVector> coordinates_;
+  Teuchos::RCP<const MultiVector> near_null_space_;
+  Teuchos::ParameterList muelu_;
+  /// The blocks of the operator last built from, kept while its graph is the same.
+  mutable std::shared_ptr<BlockSplit> split_;
+  mutable const void *split_graph_ = nullptr;
+};
+} // namespace internal
+} // namespace kiln
