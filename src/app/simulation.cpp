@@ -498,6 +498,7 @@ void Simulation::print_header() const
           : layout_.temperature                       ? "temperature"
                                                       : "displacement")
       << " at every node)\n";
+  out << "preconditioner: " << newton_->preconditioner() << "\n";
 }
 
 void Simulation::write_mesh(const std::string &path) const

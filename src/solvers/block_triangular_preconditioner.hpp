@@ -24,6 +24,11 @@ namespace kiln
 {
 namespace internal
 {
+/// With temperature and displacement and at least this many unknowns, Block Triangular is
+/// the default Preconditioner Type; below, MueLu on the whole system, whose single
+/// hierarchy costs less there (doc/solvers.md).
+constexpr long long block_triangular_from = 50000;
+
 class BlockSplit;
 
 class BlockTriangularPreconditionerFactory final : public Thyra::PreconditionerFactoryBase<double>,

@@ -118,8 +118,9 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "500 iterations, preconditioned by MueLu smoothed aggregation (distance-Laplacian drop "
       "tolerance 0.02, no aggregate across a gap that separates bodies) with Gauss-Seidel "
       "smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). With temperature and "
-      "displacement (Thermo-Elasticity) the default Preconditioner Type is \"Block "
-      "Triangular\": one MueLu hierarchy for the temperatures, one for the displacements "
+      "displacement (Thermo-Elasticity) and at least 50,000 unknowns the default "
+      "Preconditioner Type is \"Block Triangular\" (the set-up log says which is used): one "
+      "MueLu hierarchy for the temperatures, one for the displacements "
       "(with the six rigid-body modes), applied in turn with the coupling of the force rows to "
       "T between them; the \"MueLu\" list applies to both, \"Preconditioner Types\"/\"Block "
       "Triangular\"/\"Temperature\" and \"Displacement\" add to one (doc/solvers.md). "
@@ -140,7 +141,8 @@ struct NewtonSolver::Impl
   RCP<NonlinearProblem> problem;
   RCP<Teuchos::FancyOStream> out;
   RCP<const Teuchos::Comm<int>> comm;
-  std::string where; ///< the block in messages ("in.xml: Kiln/Solver")
+  std::string where;               ///< the block in messages ("in.xml: Kiln/Solver")
+  std::string preconditioner_type; ///< the Preconditioner Type used
   double absolute_tolerance = 0.0;
   double relative_tolerance = 0.0;
   int max_iterations = 0;
@@ -180,13 +182,15 @@ RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 NewtonSolver::Impl::create_linear_solver(const ParameterList &p, const bool preconditioner_given)
 {
   auto linear = Teuchos::rcp(new ParameterList(p.sublist(linear_name)));
-  // Temperature and displacement: the block triangular preconditioner unless the input
-  // chooses (doc/solvers.md, "Block Triangular").
+  // Temperature and displacement, and enough unknowns for it to pay: the block triangular
+  // preconditioner unless the input chooses (doc/solvers.md, "Block Triangular").
   const int unknowns = internal::unknowns_per_node(*problem, *comm);
-  if (!preconditioner_given && unknowns == 4)
+  if (!preconditioner_given && unknowns == 4 &&
+      static_cast<long long>(problem->solution_map()->getGlobalNumElements()) >=
+          internal::block_triangular_from)
     linear->set("Preconditioner Type", "Block Triangular");
-  const bool block_triangular =
-      linear->get<std::string>("Preconditioner Type") == "Block Triangular";
+  preconditioner_type = linear->get<std::string>("Preconditioner Type");
+  const bool block_triangular = preconditioner_type == "Block Triangular";
   // MueLu's list as the input and Kiln's defaults give it, for the blocks' hierarchies.
   const ParameterList muelu = linear->sublist("Preconditioner Types").sublist("MueLu");
   builder = Teuchos::rcp(new Stratimikos::DefaultLinearSolverBuilder);
@@ -293,6 +297,11 @@ NewtonSolver::~NewtonSolver() = default;
 int NewtonSolver::max_iterations() const
 {
   return impl_->max_iterations;
+}
+
+const std::string &NewtonSolver::preconditioner() const
+{
+  return impl_->preconditioner_type;
 }
 
 std::vector<double> NewtonSolver::preconditioner_origin() const

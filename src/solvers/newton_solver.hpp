@@ -54,6 +54,9 @@ public:
   Result solve(NonlinearProblem::Vector &x);
   /// "Maximum Iterations" of the input.
   int max_iterations() const;
+  /// The linear solver's Preconditioner Type as used ("MueLu", "Block Triangular", ...: the
+  /// input's, or the one Kiln picked), for the log.
+  const std::string &preconditioner() const;
 
   /// With a "Preconditioner Reuse Tolerance": what a checkpoint keeps so that a run restarted
   /// from it on as many ranks builds its first preconditioner from the Jacobian this run

@@ -379,16 +379,17 @@ void check_muelu_parameters(const ParameterList &stratimikos,
   const bool block_triangular =
       stratimikos.isType<std::string>("Preconditioner Type") &&
       stratimikos.get<std::string>("Preconditioner Type") == "Block Triangular";
-  if (!uses_muelu(stratimikos) && !block_triangular)
-    return;
   const std::string types = "Preconditioner Types";
-  ParameterList muelu;
-  if (stratimikos.isSublist(types) && stratimikos.sublist(types).isSublist("MueLu"))
-    muelu = stratimikos.sublist(types).sublist("MueLu");
-  check_muelu_list(muelu, comm, where + "/" + types + "/MueLu");
-  // The blocks' own MueLu lists (BlockTriangularPreconditionerFactory).
-  if (block_triangular && stratimikos.isSublist(types) &&
-      stratimikos.sublist(types).isSublist("Block Triangular"))
+  if (uses_muelu(stratimikos) || block_triangular)
+  {
+    ParameterList muelu;
+    if (stratimikos.isSublist(types) && stratimikos.sublist(types).isSublist("MueLu"))
+      muelu = stratimikos.sublist(types).sublist("MueLu");
+    check_muelu_list(muelu, comm, where + "/" + types + "/MueLu");
+  }
+  // The blocks' own MueLu lists (BlockTriangularPreconditionerFactory), also where Kiln picks
+  // another type (fewer than 50,000 unknowns): a misspelling there is not left for later.
+  if (stratimikos.isSublist(types) && stratimikos.sublist(types).isSublist("Block Triangular"))
   {
     const ParameterList &blocks = stratimikos.sublist(types).sublist("Block Triangular");
     for (const char *block : {"Temperature", "Displacement"})
