@@ -305,6 +305,16 @@ ParameterList block_muelu_list(const ParameterList &common, const ParameterList 
   return muelu;
 }
 
+/// The Tpetra matrix behind a Thyra operator source (null if it is none, or an exception
+/// with `required`).
+RCP<const Matrix> crs_matrix(const Thyra::LinearOpSourceBase<double> &source, bool required)
+{
+  return Teuchos::rcp_dynamic_cast<const Matrix>(
+      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
+          source.getOp()),
+      required);
+}
+
 /// Rows `rows` of the columns [first, first + count) of `modes`, on `map`.
 RCP<MV> restrict_modes(const MV &modes, std::size_t first, std::size_t count,
                        const std::vector<LO> &rows, const RCP<const Map> &map)
@@ -336,10 +346,7 @@ void BlockTriangularPreconditionerFactory::set_hints(RCP<const MultiVector> coor
 bool BlockTriangularPreconditionerFactory::isCompatible(
     const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const
 {
-  const auto op =
-      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
-          fwdOpSrc.getOp());
-  return !Teuchos::rcp_dynamic_cast<const Matrix>(op).is_null();
+  return !crs_matrix(fwdOpSrc, false).is_null();
 }
 
 RCP<Thyra::PreconditionerBase<double>> BlockTriangularPreconditionerFactory::createPrec() const
@@ -354,10 +361,7 @@ void BlockTriangularPreconditionerFactory::initializePrec(
   // The last preconditioner's blocks and hierarchies go before the new ones are built.
   auto &prec = dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*precOp);
   prec.uninitialize();
-  const auto J = Teuchos::rcp_dynamic_cast<const Matrix>(
-      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
-          fwdOpSrc->getOp()),
-      true);
+  const RCP<const Matrix> J = crs_matrix(*fwdOpSrc, true);
   if (split_ == nullptr || split_graph_ != J->getCrsGraph().get())
   {
     split_ = std::make_shared<BlockSplit>(*J);
@@ -370,8 +374,10 @@ void BlockTriangularPreconditionerFactory::initializePrec(
   ParameterList u_list = block_muelu_list(muelu_, p.sublist("Displacement"), 3);
   if (!coordinates_.is_null())
   {
-    t_list.sublist("user data").set("Coordinates", rcp(new MV(*coordinates_, Teuchos::Copy)));
-    u_list.sublist("user data").set("Coordinates", rcp(new MV(*coordinates_, Teuchos::Copy)));
+    // MueLu reads them without changing them; it takes a non-const pointer.
+    const RCP<MV> coordinates = Teuchos::rcp_const_cast<MV>(coordinates_);
+    t_list.sublist("user data").set("Coordinates", coordinates);
+    u_list.sublist("user data").set("Coordinates", coordinates);
   }
   if (!near_null_space_.is_null() && near_null_space_->getNumVectors() == n_fields + 3)
   {
@@ -393,10 +399,7 @@ void BlockTriangularPreconditionerFactory::initializePrec(
 void BlockTriangularPreconditionerFactory::refresh(
     const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const
 {
-  const auto J = Teuchos::rcp_dynamic_cast<const Matrix>(
-      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
-          fwdOpSrc.getOp()),
-      true);
+  const RCP<const Matrix> J = crs_matrix(fwdOpSrc, true);
   if (split_ != nullptr && split_graph_ == J->getCrsGraph().get())
     split_->update(*J);
 }
