@@ -127,7 +127,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "\"MueLu\" as the Preconditioner Type keeps one hierarchy for the whole system. "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
-      "unknown per node), of a "
+      "unknown per node) and \"relaxation: use l1\" true (l1 Gauss-Seidel across ranks), of a "
       "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and an eigenvalue estimate by 30 "
       "power iterations (by 10 of CG's under a CG solver), and to "
       "\"coarse: params\" of a RELAXATION coarse level 10 symmetric Gauss-Seidel sweeps, and "

@@ -60,6 +60,34 @@ TEST(SmootherDefaults, TheInputsChoiceIsKept)
       .set("relaxation: type", "Jacobi");
   EXPECT_EQ(relaxation(p), "Jacobi");
 }
+
+TEST(SmootherDefaults, L1GaussSeidelUnlessTheInputSaysOtherwise)
+{
+  const auto l1 = [](ParameterList p)
+  {
+    kiln::internal::add_smoother_defaults(p);
+    const ParameterList &params =
+        p.sublist("Preconditioner Types").sublist("MueLu").sublist("smoother: params");
+    return params.isType<bool>("relaxation: use l1") && params.get<bool>("relaxation: use l1");
+  };
+  EXPECT_TRUE(l1(kiln::internal::linear_solver_defaults()));
+  EXPECT_TRUE(l1(with_krylov("Pseudo Block CG")));
+  ParameterList p = kiln::internal::linear_solver_defaults();
+  p.sublist("Preconditioner Types")
+      .sublist("MueLu")
+      .sublist("smoother: params")
+      .set("relaxation: use l1", false);
+  EXPECT_FALSE(l1(p));
+  // Not a relaxation smoother: nothing added.
+  p = kiln::internal::linear_solver_defaults();
+  p.sublist("Preconditioner Types").sublist("MueLu").set("smoother: type", "CHEBYSHEV");
+  kiln::internal::add_smoother_defaults(p);
+  EXPECT_FALSE(p.sublist("Preconditioner Types")
+                   .sublist("MueLu")
+                   .sublist("smoother: params")
+                   .isParameter("relaxation: use l1"));
+}
+
 /// The Chebyshev smoother's eigenvalue analysis Kiln adds: (type, iterations).
 std::pair<std::string, int> chebyshev_eigen_analysis(ParameterList p)
 {
