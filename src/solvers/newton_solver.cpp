@@ -9,6 +9,7 @@
 #include "solvers/package_errors.hpp"
 #include "solvers/package_parameters.hpp"
 #include "solvers/solver_parameter_checks.hpp"
+#include "solvers/starting_guess.hpp"
 
 #include <NOX_SolverStats.hpp>
 #include <NOX_Solver_Factory.H>
@@ -153,6 +154,8 @@ struct NewtonSolver::Impl
   RCP<Stratimikos::DefaultLinearSolverBuilder> builder;
   RCP<internal::ModelEvaluator> model;
   RCP<internal::JacobianReuse> reuse;
+  /// The start of the first Krylov solve of a solve (solve(x, first_step)).
+  RCP<internal::StartingGuess> starting_guess = Teuchos::rcp(new internal::StartingGuess);
   /// The unknowns' scale c (NOX sees x / c), or null.
   RCP<const NonlinearProblem::Vector> scale;
   /// Kept between solves: it owns the Jacobian and the linear solver.
@@ -287,7 +290,8 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
       params.isSublist(linear_name) &&
       given_in_input(params.sublist(linear_name), "Preconditioner Type");
   const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory =
-      s.create_linear_solver(p, preconditioner_given);
+      Teuchos::rcp(new internal::StartingGuessSolveFactory(
+          s.create_linear_solver(p, preconditioner_given), s.starting_guess));
   s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse));
   s.check_nonlinear_parameters();
 }
@@ -314,7 +318,8 @@ void NewtonSolver::restore_preconditioner_origin(std::vector<double> record)
   impl_->reuse->restore_origin(std::move(record));
 }
 
-NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
+NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
+                                         const NonlinearProblem::Vector *first_step)
 {
   namespace ST = NOX::StatusTest;
   using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
@@ -360,8 +365,26 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x)
     adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
+  if (first_step != nullptr)
+  {
+    // NOX solves J X = F for X = -dx, in x / c.
+    auto guess = Teuchos::rcp(new NonlinearProblem::Vector(first_step->getMap()));
+    if (scale.is_null())
+      guess->update(-1.0, *first_step, 0.0);
+    else
+    {
+      NonlinearProblem::Vector inverse(scale->getMap());
+      inverse.reciprocal(*scale);
+      guess->elementWiseMultiply(-1.0, inverse, *first_step, 0.0);
+    }
+    s.starting_guess->set(Thyra::createConstVector(
+        Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(guess), space));
+  }
+  const int used_before = s.starting_guess->used;
   const RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(s.group, tests, nox);
   const ST::StatusType status = solver->solve();
+  s.starting_guess->clear();
+  result.started_from_guess = s.starting_guess->used > used_before;
 
   const auto &solution = dynamic_cast<const NOX::Thyra::Group &>(solver->getSolutionGroup());
   const auto &x_nox = dynamic_cast<const NOX::Thyra::Vector &>(solution.getX());

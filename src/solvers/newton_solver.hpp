@@ -47,11 +47,15 @@ public:
     /// The ||F|| that counts as converged: max("Absolute Tolerance", "Relative Tolerance"
     /// * initial_residual_norm).
     double tolerance = 0.0;
+    /// Whether the first Krylov solve started from the `first_step` given.
+    bool started_from_guess = false;
   };
 
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on
-  /// return (converged or not). Collective.
-  Result solve(NonlinearProblem::Vector &x);
+  /// return (converged or not). With `first_step`, a guess of the first Newton step, the
+  /// first Krylov solve starts from it instead of zero if that leaves the smaller residual
+  /// (the same answer to the Krylov tolerance). Collective.
+  Result solve(NonlinearProblem::Vector &x, const NonlinearProblem::Vector *first_step = nullptr);
   /// "Maximum Iterations" of the input.
   int max_iterations() const;
   /// The linear solver's Preconditioner Type as used ("MueLu", "Block Triangular", ...: the

@@ -153,6 +153,7 @@ private:
   double relative_tolerance_;
   double absolute_tolerance_;
   int maximum_steps_;
+  bool extrapolated_start_; ///< "Extrapolated Krylov Start"
   std::string where_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
 };
