@@ -380,11 +380,9 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     s.starting_guess->set(Thyra::createConstVector(
         Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(guess), space));
   }
-  const int used_before = s.starting_guess->used;
   const RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(s.group, tests, nox);
   const ST::StatusType status = solver->solve();
   s.starting_guess->clear();
-  result.started_from_guess = s.starting_guess->used > used_before;
 
   const auto &solution = dynamic_cast<const NOX::Thyra::Group &>(solver->getSolutionGroup());
   const auto &x_nox = dynamic_cast<const NOX::Thyra::Vector &>(solution.getX());

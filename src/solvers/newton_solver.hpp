@@ -47,8 +47,6 @@ public:
     /// The ||F|| that counts as converged: max("Absolute Tolerance", "Relative Tolerance"
     /// * initial_residual_norm).
     double tolerance = 0.0;
-    /// Whether the first Krylov solve started from the `first_step` given.
-    bool started_from_guess = false;
   };
 
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on

@@ -7,6 +7,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -78,6 +79,18 @@ bool near_tolerance(const NewtonSolver::Result &r)
 {
   return r.final_residual_norm <= 100.0 * r.tolerance ||
          r.final_residual_norm <= 1e-8 * r.initial_residual_norm;
+}
+
+/// The weights of x_n, x_{n-1}, x_{n-2} in the accepted states extrapolated to t_n + h (the
+/// last two steps k = t_n - t_{n-1}, k2 = t_{n-1} - t_{n-2}): quadratic through the three
+/// states, or linear through the first two (the last weight 0).
+std::array<double, 3> extrapolation_weights(const double h, const double k, const double k2,
+                                            const bool quadratic)
+{
+  if (!quadratic)
+    return {1.0 + h / k, -h / k, 0.0};
+  return {(h + k) * (h + k + k2) / (k * (k + k2)), -h * (h + k + k2) / (k * k2),
+          h * (h + k) / ((k + k2) * k2)};
 }
 } // namespace internal
 
@@ -332,17 +345,11 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   std::unique_ptr<Vector> first_step;
   if (extrapolated_start_ && n_past >= 1)
   {
+    const auto w = internal::extrapolation_weights(h, k, k2, n_past >= 2);
     first_step = std::make_unique<Vector>(map);
+    first_step->update(w[0] - 1.0, *state.x, w[1], *state.x_1, 0.0);
     if (n_past >= 2)
-    {
-      const double l0 = (h + k) * (h + k + k2) / (k * (k + k2));
-      const double l1 = -h * (h + k + k2) / (k * k2);
-      const double l2 = h * (h + k) / ((k + k2) * k2);
-      first_step->update(l0 - 1.0, *state.x, l1, *state.x_1, 0.0);
-      first_step->update(l2, *state.x_2, 1.0);
-    }
-    else
-      first_step->update(h / k, *state.x, -h / k, *state.x_1, 0.0);
+      first_step->update(w[2], *state.x_2, 1.0);
   }
   r = newton.solve(x, first_step.get());
 
@@ -368,21 +375,20 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   error = -1.0;
   if (error_control_ && (bdf2 ? n_past >= 2 : n_past >= 1))
   {
+    // A multiple of the step's distance from the predictor, the extrapolated states.
     Vector lte(map);
+    const auto w = internal::extrapolation_weights(h, k, k2, bdf2);
     if (bdf2)
     {
-      const double l0 = (h + k) * (h + k + k2) / (k * (k + k2));
-      const double l1 = -h * (h + k + k2) / (k * k2);
-      const double l2 = h * (h + k) / ((k + k2) * k2);
       const double ratio = h * (h + k) / (3 * h * h + 4 * h * k + 2 * h * k2 + k * k + k * k2);
-      lte.update(ratio, x, -ratio * l0, *state.x, 0.0);
-      lte.update(-ratio * l1, *state.x_1, -ratio * l2, *state.x_2, 1.0);
+      lte.update(ratio, x, -ratio * w[0], *state.x, 0.0);
+      lte.update(-ratio * w[1], *state.x_1, -ratio * w[2], *state.x_2, 1.0);
     }
     else
     {
       const double ratio = h / (2 * h + k);
-      lte.update(ratio, x, -ratio * (1.0 + h / k), *state.x, 0.0);
-      lte.update(ratio * h / k, *state.x_1, 1.0);
+      lte.update(ratio, x, -ratio * w[0], *state.x, 0.0);
+      lte.update(-ratio * w[1], *state.x_1, 1.0);
     }
     error = internal::weighted_rms(lte, x, *state.x, absolute_tolerance_, relative_tolerance_,
                                    problem.time_error_mask().get());
