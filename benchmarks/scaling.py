@@ -152,10 +152,11 @@ def run(kiln, case, n, np, args, work, copies=1):
     return results[len(results) // 2]
 
 
-def markdown(rows, command):
+def markdown(rows, command, repeat):
+    runs = "one run per case" if repeat == 1 else f"medians of {repeat} runs per case"
     lines = ["# Scaling study", "",
              f"Made by `{command}` on {datetime.date.today()} ({platform.node()}, "
-             f"{os.cpu_count()} cores); medians of repeated runs. Times are the whole "
+             f"{os.cpu_count()} cores); {runs}. Times are the whole "
              "process; the split is the slowest rank's Teuchos timers. See "
              "`benchmarks/scaling.py` for what each column means.", "",
              "## Runs", ""]
@@ -274,7 +275,7 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
     command = "benchmarks/scaling.py " + " ".join(sys.argv[1:])
-    (out / "README.md").write_text(markdown(rows, command.strip()))
+    (out / "README.md").write_text(markdown(rows, command.strip(), args.repeat))
     plots(rows, out)
     print((out / "README.md").read_text())
 
