@@ -156,10 +156,24 @@ struct NewtonSolver::Impl
   RCP<internal::JacobianReuse> reuse;
   /// The start of the first Krylov solve of a solve (solve(x, first_step)).
   RCP<internal::StartingGuess> starting_guess = Teuchos::rcp(new internal::StartingGuess);
-  /// The unknowns' scale c (NOX sees x / c), or null.
-  RCP<const NonlinearProblem::Vector> scale;
+  /// The unknowns' scale c (NOX sees x / c) and 1 / c, or null.
+  RCP<const NonlinearProblem::Vector> scale, inverse_scale;
   /// Kept between solves: it owns the Jacobian and the linear solver.
   RCP<NOX::Thyra::Group> group;
+
+  /// factor v / c as a vector of NOX's space (`space`).
+  RCP<const Thyra::VectorBase<double>>
+  to_solver(const NonlinearProblem::Vector &v, double factor,
+            const RCP<const Thyra::VectorSpaceBase<double>> &space) const
+  {
+    auto v_hat = Teuchos::rcp(new NonlinearProblem::Vector(v.getMap()));
+    if (inverse_scale.is_null())
+      v_hat->update(factor, v, 0.0);
+    else
+      v_hat->elementWiseMultiply(factor, *inverse_scale, v, 0.0);
+    return Thyra::createConstVector(
+        Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(v_hat), space);
+  }
 
   /// `preconditioner_given`: the input names the "Preconditioner Type" (else Kiln picks it).
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> create_linear_solver(const ParameterList &p,
@@ -210,6 +224,12 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p, const bool prec
   const std::string linear_block = where + "/" + linear_name;
   internal::check_solver_parameters(p, *linear, *builder->getValidParameters(), comm, where);
   scale = p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;
+  if (!scale.is_null())
+  {
+    auto inverse = Teuchos::rcp(new NonlinearProblem::Vector(scale->getMap()));
+    inverse->reciprocal(*scale);
+    inverse_scale = inverse;
+  }
   internal::add_coordinates(*linear, *problem, *comm, p.get<bool>("Near-Null Space"), scale);
   KILN_CHECK_INPUT(!block_triangular || unknowns == 4, linear_block + "/\"Preconditioner Type\"",
                    "is \"Block Triangular\", which splits the temperature and the three "
@@ -329,17 +349,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
   // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
   const RCP<const NonlinearProblem::Vector> scale = s.scale;
-  auto x_hat = Teuchos::rcp(new NonlinearProblem::Vector(x, Teuchos::Copy));
-  if (!scale.is_null())
-  {
-    NonlinearProblem::Vector inverse(scale->getMap());
-    inverse.reciprocal(*scale);
-    x_hat->elementWiseMultiply(1.0, inverse, x, 0.0);
-  }
-  s.group->setX(NOX::Thyra::Vector(
-      Thyra::createConstVector(Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(x_hat),
-                               space)
-          ->clone_v()));
+  s.group->setX(NOX::Thyra::Vector(s.to_solver(x, 1.0, space)->clone_v()));
   s.group->computeF();
   Result result;
   result.initial_residual_norm = s.group->getNormF();
@@ -365,21 +375,8 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
-  if (first_step != nullptr)
-  {
-    // NOX solves J X = F for X = -dx, in x / c.
-    auto guess = Teuchos::rcp(new NonlinearProblem::Vector(first_step->getMap()));
-    if (scale.is_null())
-      guess->update(-1.0, *first_step, 0.0);
-    else
-    {
-      NonlinearProblem::Vector inverse(scale->getMap());
-      inverse.reciprocal(*scale);
-      guess->elementWiseMultiply(-1.0, inverse, *first_step, 0.0);
-    }
-    s.starting_guess->set(Thyra::createConstVector(
-        Teuchos::rcp_implicit_cast<const NonlinearProblem::Vector>(guess), space));
-  }
+  if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
+    s.starting_guess->set(s.to_solver(*first_step, -1.0, space));
   const RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(s.group, tests, nox);
   const ST::StatusType status = solver->solve();
   s.starting_guess->clear();
