@@ -128,8 +128,16 @@ public:
     uu = block(u_rows, false, u_map, uc_map, u_map);
   }
 
-  /// Copies J's values into the blocks (J's graph must be the one they were made from).
-  void update(const Matrix &J) const
+  /// Which diagonal blocks' values an update() changed.
+  struct Changes
+  {
+    bool tt = false;
+    bool uu = false;
+  };
+
+  /// Copies J's values into the blocks (J's graph must be the one they were made from), and
+  /// says which diagonal blocks' values changed (to the bit; a NaN counts as a change).
+  Changes update(const Matrix &J) const
   {
     const auto local = J.getLocalMatrixHost();
     const auto &ptr = local.graph.row_map;
@@ -139,16 +147,23 @@ public:
     const auto ut_values = ut->getLocalValuesView();
     const auto uu_values = uu->getLocalValuesView();
     std::size_t n_tt = 0, n_ut = 0, n_uu = 0;
+    Changes changes;
+    const auto copy = [](double &to, const double from, bool &changed)
+    {
+      changed = changed || !(to == from);
+      to = from;
+    };
     for (const LO l : t_rows)
       for (auto k = ptr(l); k < ptr(l + 1); ++k)
         if (col_is_t_[ind(k)])
-          tt_values(n_tt++) = values(k);
+          copy(tt_values(n_tt++), values(k), changes.tt);
     for (const LO l : u_rows)
       for (auto k = ptr(l); k < ptr(l + 1); ++k)
         if (col_is_t_[ind(k)])
           ut_values(n_ut++) = values(k);
         else
-          uu_values(n_uu++) = values(k);
+          copy(uu_values(n_uu++), values(k), changes.uu);
+    return changes;
   }
 
   RCP<Matrix> tt, ut, uu;
@@ -341,6 +356,7 @@ void BlockTriangularPreconditionerFactory::set_hints(RCP<const MultiVector> coor
   // What Kiln gives a hierarchy of the whole system; each block gets its own.
   for (const char *name : {"Coordinates", "Nullspace", "number of equations"})
     muelu_.remove(name, false);
+  t_stale_ = u_stale_ = true;
 }
 
 bool BlockTriangularPreconditionerFactory::isCompatible(
@@ -358,37 +374,31 @@ void BlockTriangularPreconditionerFactory::initializePrec(
     const RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
     Thyra::PreconditionerBase<double> *precOp, Thyra::ESupportSolveUse) const
 {
-  // The last preconditioner's blocks and hierarchies go before the new ones are built.
   auto &prec = dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*precOp);
   prec.uninitialize();
   const RCP<const Matrix> J = crs_matrix(*fwdOpSrc, true);
   if (split_ == nullptr || split_graph_ != J->getCrsGraph().get())
   {
+    // The last blocks and hierarchies go before the new ones are made.
+    t_op_ = u_op_ = Teuchos::null;
+    split_ = nullptr;
     split_ = std::make_shared<BlockSplit>(*J);
     split_graph_ = J->getCrsGraph().get();
+    t_stale_ = u_stale_ = true;
   }
-  const std::shared_ptr<const BlockSplit> split = split_;
-  split->update(*J);
-  const ParameterList &p = *getParameterList();
-  ParameterList t_list = block_muelu_list(muelu_, p.sublist("Temperature"), 1);
-  ParameterList u_list = block_muelu_list(muelu_, p.sublist("Displacement"), 3);
-  if (!coordinates_.is_null())
+  note_changes(*J);
+  for (const bool temperature : {true, false})
   {
-    // MueLu reads them without changing them; it takes a non-const pointer.
-    const RCP<MV> coordinates = Teuchos::rcp_const_cast<MV>(coordinates_);
-    t_list.sublist("user data").set("Coordinates", coordinates);
-    u_list.sublist("user data").set("Coordinates", coordinates);
+    RCP<Op> &op = temperature ? t_op_ : u_op_;
+    bool &stale = temperature ? t_stale_ : u_stale_;
+    if (!stale)
+      continue;
+    op = Teuchos::null; // the old hierarchy goes before the new one is built
+    op = build_block(temperature);
+    stale = false;
+    ++(temperature ? builds_.temperature : builds_.displacement);
   }
-  if (!near_null_space_.is_null() && near_null_space_->getNumVectors() == n_fields + 3)
-  {
-    t_list.sublist("user data")
-        .set("Nullspace", restrict_modes(*near_null_space_, 0, 1, split->t_rows, split->t_map));
-    u_list.sublist("user data")
-        .set("Nullspace", restrict_modes(*near_null_space_, 1, 6, split->u_rows, split->u_map));
-  }
-  auto op = rcp(new BlockTriangularOperator(J->getRowMap(), split,
-                                            block_preconditioner(split->tt, t_list),
-                                            block_preconditioner(split->uu, u_list)));
+  auto op = rcp(new BlockTriangularOperator(J->getRowMap(), split_, t_op_, u_op_));
   const RCP<const Thyra::LinearOpBase<double>> thyra_op =
       Thyra::tpetraLinearOp<double, LO, GO, Node>(
           Thyra::tpetraVectorSpace<double>(J->getRangeMap()),
@@ -396,12 +406,41 @@ void BlockTriangularPreconditionerFactory::initializePrec(
   prec.initializeUnspecified(thyra_op);
 }
 
+RCP<Tpetra::Operator<double>>
+BlockTriangularPreconditionerFactory::build_block(const bool temperature) const
+{
+  const BlockSplit &split = *split_;
+  const ParameterList &p = *getParameterList();
+  ParameterList list = temperature ? block_muelu_list(muelu_, p.sublist("Temperature"), 1)
+                                   : block_muelu_list(muelu_, p.sublist("Displacement"), 3);
+  if (!coordinates_.is_null())
+    // MueLu reads them without changing them; it takes a non-const pointer.
+    list.sublist("user data").set("Coordinates", Teuchos::rcp_const_cast<MV>(coordinates_));
+  if (!near_null_space_.is_null() && near_null_space_->getNumVectors() == n_fields + 3)
+    list.sublist("user data")
+        .set("Nullspace", temperature
+                              ? restrict_modes(*near_null_space_, 0, 1, split.t_rows, split.t_map)
+                              : restrict_modes(*near_null_space_, 1, 6, split.u_rows, split.u_map));
+  return block_preconditioner(temperature ? split.tt : split.uu, list);
+}
+
+void BlockTriangularPreconditionerFactory::note_changes(const Matrix &J) const
+{
+  const BlockSplit::Changes changes = split_->update(J);
+  // A hierarchy's set-up is collective: a block changed on one rank is rebuilt on all.
+  const int local[2] = {changes.tt ? 1 : 0, changes.uu ? 1 : 0};
+  int global[2] = {0, 0};
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MAX, 2, local, global);
+  t_stale_ = t_stale_ || global[0] != 0;
+  u_stale_ = u_stale_ || global[1] != 0;
+}
+
 void BlockTriangularPreconditionerFactory::refresh(
     const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const
 {
   const RCP<const Matrix> J = crs_matrix(fwdOpSrc, true);
   if (split_ != nullptr && split_graph_ == J->getCrsGraph().get())
-    split_->update(*J);
+    note_changes(*J);
 }
 
 void BlockTriangularPreconditionerFactory::uninitializePrec(
@@ -420,12 +459,14 @@ void BlockTriangularPreconditionerFactory::setParameterList(const RCP<ParameterL
 {
   paramList->validateParametersAndSetDefaults(*getValidParameters(), 0);
   params_ = paramList;
+  t_stale_ = u_stale_ = true;
 }
 
 RCP<ParameterList> BlockTriangularPreconditionerFactory::getNonconstParameterList()
 {
   if (params_.is_null())
     params_ = rcp(new ParameterList(*getValidParameters()));
+  t_stale_ = u_stale_ = true; // the caller may change the list
   return params_;
 }
 
@@ -433,6 +474,7 @@ RCP<ParameterList> BlockTriangularPreconditionerFactory::unsetParameterList()
 {
   RCP<ParameterList> old = params_;
   params_ = Teuchos::null;
+  t_stale_ = u_stale_ = true;
   return old;
 }
 

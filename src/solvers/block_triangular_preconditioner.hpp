@@ -16,7 +16,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_PreconditionerFactoryBase.hpp>
+#include <Tpetra_CrsMatrix_fwd.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
 
 #include <memory>
 
@@ -62,7 +64,23 @@ public:
   Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override;
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
 
+  /// How many hierarchies (or diagonal inverses) of each block initializePrec() has built.
+  /// A block whose values have not changed since its hierarchy was built keeps it.
+  struct Builds
+  {
+    int temperature = 0;
+    int displacement = 0;
+  };
+  Builds builds() const { return builds_; }
+
 private:
+  /// The preconditioner of the temperature (`temperature` true) or the displacement block,
+  /// built anew.
+  Teuchos::RCP<Tpetra::Operator<double>> build_block(bool temperature) const;
+  /// Copies J's values into the blocks and marks a block whose values changed (on any rank)
+  /// for a new hierarchy. Collective.
+  void note_changes(const Tpetra::CrsMatrix<double> &J) const;
+
   Teuchos::RCP<Teuchos::ParameterList> params_;
   Teuchos::RCP<const MultiVector> coordinates_;
   Teuchos::RCP<const MultiVector> near_null_space_;
@@ -70,6 +88,13 @@ private:
   /// The blocks of the operator last built from, kept while its graph is the same.
   mutable std::shared_ptr<BlockSplit> split_;
   mutable const void *split_graph_ = nullptr;
+  /// Each block's hierarchy, and whether the block's values have changed since it was built
+  /// (then the next initializePrec() builds it anew). The displacement block does not depend
+  /// on the time step and the temperature block not on the contact set, so a new
+  /// preconditioner usually rebuilds only one of them.
+  mutable Teuchos::RCP<Tpetra::Operator<double>> t_op_, u_op_;
+  mutable bool t_stale_ = true, u_stale_ = true;
+  mutable Builds builds_;
 };
 } // namespace internal
 } // namespace kiln
