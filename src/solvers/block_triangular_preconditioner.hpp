@@ -8,10 +8,12 @@
 /// so J^{-1} r is z_T = J_TT^{-1} r_T, then z_u = J_uu^{-1} (r_u - J_uT z_T). The
 /// preconditioner applies this with a MueLu hierarchy for each diagonal block (one
 /// unknown per node for T, three with the six rigid-body modes for u) in place of the
-/// inverses: one V-cycle each, or with an "Inner Tolerance" a GMRES solve of each block to
-/// it. Each block's hierarchy works on a quarter or three quarters of the unknowns and a
-/// twelfth or seven tenths of the entries of J. Entries of J_Tu (a gap conductance that reads
-/// the displacement) are left out: the outer Krylov solver then corrects for them.
+/// inverses, one V-cycle each. Each block's hierarchy works on a quarter or three quarters of the
+/// unknowns and a twelfth or seven tenths of the entries of J. Entries of J_Tu (a gap conductance
+/// that reads the displacement) are left out: the outer Krylov solver then corrects for them. A new
+/// preconditioner builds anew only the hierarchy of a block whose values changed since it was
+/// built: the displacement block does not depend on the time step, the temperature block not on the
+/// contact set.
 #include "solvers/jacobian_reuse.hpp"
 
 #include <Teuchos_ParameterList.hpp>
