@@ -81,7 +81,8 @@ int ranks_on_this_node(const Teuchos::Comm<int> &comm)
 }
 
 /// The vectors the linear solver of the "Solver" block keeps: a GMRES basis of "Num Blocks"
-/// + 1 vectors (Belos' default 300), a few for the other Krylov methods.
+/// + 1 vectors (Belos' default 300), and "Num Blocks" more for flexible GMRES; a few for the
+/// other Krylov methods.
 int krylov_vectors(const Teuchos::ParameterList &solver)
 {
   const Teuchos::ParameterList &linear = solver.sublist("Linear Solver");
@@ -95,14 +96,18 @@ int krylov_vectors(const Teuchos::ParameterList &solver)
           : Teuchos::ParameterList();
   const std::string type = belos.isType<std::string>("Solver Type")
                                ? belos.get<std::string>("Solver Type")
-                               : std::string("Pseudo Block GMRES");
+                               : std::string("Block GMRES");
   if (type.find("GMRES") == std::string::npos && type != "GCRODR")
     return 8;
-  int blocks = 300;
-  if (belos.isSublist("Solver Types") && belos.sublist("Solver Types").isSublist(type) &&
-      belos.sublist("Solver Types").sublist(type).isType<int>("Num Blocks"))
-    blocks = belos.sublist("Solver Types").sublist(type).get<int>("Num Blocks");
-  return blocks + 1;
+  const Teuchos::ParameterList options =
+      belos.isSublist("Solver Types") && belos.sublist("Solver Types").isSublist(type)
+          ? belos.sublist("Solver Types").sublist(type)
+          : Teuchos::ParameterList();
+  const int blocks = options.isType<int>("Num Blocks") ? options.get<int>("Num Blocks") : 300;
+  // Flexible GMRES keeps the preconditioned vectors too.
+  const bool flexible =
+      options.isType<bool>("Flexible Gmres") && options.get<bool>("Flexible Gmres");
+  return (flexible ? 2 : 1) * blocks + 1;
 }
 } // namespace internal
 

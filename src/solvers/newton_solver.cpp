@@ -115,7 +115,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       internal::nonlinear_solver_defaults());
   set_pass_through_sublist(
       p, linear_name, "Stratimikos (Belos, MueLu, Ifpack2)",
-      "Stratimikos parameters (default: Belos Pseudo Block GMRES, relative tolerance 1e-10, "
+      "Stratimikos parameters (default: Belos Block GMRES, flexible, relative tolerance 1e-10, "
       "500 iterations, preconditioned by MueLu smoothed aggregation (distance-Laplacian drop "
       "tolerance 0.02, no aggregate across a gap that separates bodies) with Gauss-Seidel "
       "smoothing and a Gauss-Seidel coarse level; see doc/solvers.md). With temperature and "
@@ -132,7 +132,9 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "CHEBYSHEV smoother degree 2, ratio eigenvalue 7 and an eigenvalue estimate by 30 "
       "power iterations (by 10 of CG's under a CG solver), and to "
       "\"coarse: params\" of a RELAXATION coarse level 10 symmetric Gauss-Seidel sweeps, and "
-      "with the sa or unsmoothed algorithm \"transpose: use implicit\" true",
+      "with the sa or unsmoothed algorithm \"transpose: use implicit\" true. Only the sublists "
+      "of the chosen types are read: one filled for another (\"Solver Types\"/\"Pseudo Block "
+      "GMRES\" under the default \"Solver Type\") is an input error",
       internal::linear_solver_defaults());
   return p;
 }

@@ -21,7 +21,7 @@ public:
   /// "Nonlinear Solver" (NOX, default: Line Search Based Newton with a full
   /// step, convergence when ||F|| <= "Absolute Tolerance" or
   /// ||F|| <= "Relative Tolerance" * ||F(x0)|| , at most "Maximum Iterations")
-  /// and "Linear Solver" (Stratimikos; default: Belos Pseudo Block GMRES with
+  /// and "Linear Solver" (Stratimikos; default: Belos flexible Block GMRES with
   /// MueLu, with a coarse solver that works on more than one rank in
   /// Debian's Trilinos 13.2), each with documented defaults.
   static Teuchos::ParameterList valid_parameters();

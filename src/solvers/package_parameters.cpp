@@ -74,11 +74,19 @@ ParameterList linear_solver_defaults()
   ParameterList p;
   p.set("Linear Solver Type", "Belos");
   ParameterList &belos = p.sublist("Linear Solver Types").sublist("Belos");
-  belos.set("Solver Type", "Pseudo Block GMRES");
-  ParameterList &gmres = belos.sublist("Solver Types").sublist("Pseudo Block GMRES");
+  // Flexible GMRES keeps the preconditioned basis vectors, so the solution needs no further
+  // application of the preconditioner, and it stops on its implicit residual without the
+  // product with J that confirms it: one application and one product fewer per solve than
+  // Pseudo Block GMRES, with the same iterations (a fixed preconditioner makes it right-
+  // preconditioned GMRES; 32^3 contact box to 60 s, np 2: Belos 10.3 -> 9.6 s, changelog
+  // 0022). Its basis is twice as large per vector: 100 restart vectors keep the memory of
+  // Pseudo Block GMRES' 200, and no solve of the test problems takes more than 60.
+  belos.set("Solver Type", "Block GMRES");
+  ParameterList &gmres = belos.sublist("Solver Types").sublist("Block GMRES");
   gmres.set("Convergence Tolerance", 1e-10);
   gmres.set("Maximum Iterations", 500);
-  gmres.set("Num Blocks", 200);
+  gmres.set("Num Blocks", 100);
+  gmres.set("Flexible Gmres", true);
   p.set("Preconditioner Type", "MueLu");
   p.sublist("Preconditioner Types").sublist("MueLu").setParameters(muelu_defaults());
   return p;

@@ -23,7 +23,7 @@ Teuchos::ParameterList nonlinear_solver_defaults();
 /// chosen smoother types are added by add_smoother_defaults().
 Teuchos::ParameterList muelu_defaults();
 
-/// Kiln's defaults for Stratimikos: Belos Pseudo Block GMRES preconditioned
+/// Kiln's defaults for Stratimikos: Belos (flexible) Block GMRES preconditioned
 /// by MueLu.
 Teuchos::ParameterList linear_solver_defaults();
 

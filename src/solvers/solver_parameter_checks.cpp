@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -371,6 +372,41 @@ void check_muelu_list(ParameterList muelu, const RCP<const Teuchos::Comm<int>> &
   }
   std::cout.rdbuf(cout_buffer);
 }
+
+/// The value of the string `type` of `list` ("Solver Type"), and whether the input gave it.
+std::pair<std::string, bool> chosen_type(const ParameterList &list, const std::string &type)
+{
+  if (!list.isType<std::string>(type))
+    return {"", false};
+  return {list.get<std::string>(type), given_in_input(list, type)};
+}
+
+/// Packages read only the sublist of `types` ("Solver Types") named by the choice `type`
+/// ("Solver Type"); a sublist the input fills for another name would be ignored without a
+/// word. `read`: the names read with that choice (the choice itself; "MueLu" and "Block
+/// Triangular" where either may be).
+void check_only_chosen_sublists(const ParameterList &list, const std::string &type,
+                                const std::string &types, const std::vector<std::string> &read,
+                                const std::string &where, const std::string &package)
+{
+  if (!list.isSublist(types))
+    return;
+  const auto [choice, given] = chosen_type(list, type);
+  const ParameterList &sublists = list.sublist(types);
+  for (auto it = sublists.begin(); it != sublists.end(); ++it)
+  {
+    const std::string &name = sublists.name(it);
+    if (!sublists.entry(it).isList() || !given_in_input(sublists, name) ||
+        std::find(read.begin(), read.end(), name) != read.end())
+      continue;
+    std::ostringstream m;
+    m << where << "/" << types << "/" << name << ": parameters for \"" << name << "\", but the \""
+      << type << "\" beside \"" << types << "\" is \"" << choice << "\""
+      << (given ? "" : " (Kiln's default)") << ", so " << package << " would ignore them; set \""
+      << type << "\" to \"" << name << "\" or move them to " << types << "/\"" << choice << "\"";
+    throw InputError(m.str());
+  }
+}
 } // namespace
 
 void check_muelu_parameters(const ParameterList &stratimikos,
@@ -417,6 +453,25 @@ void check_stratimikos_parameters(const ParameterList &stratimikos, const Parame
   if (stratimikos.isSublist(belos) && stratimikos.sublist(belos).isSublist("Belos"))
     check_list(stratimikos.sublist(belos).sublist("Belos"), valid.sublist(belos).sublist("Belos"),
                where + "/" + belos + "/Belos", PackageList{"Belos", {}, {}});
+  // Only the chosen solver's and preconditioner's sublists are read.
+  check_only_chosen_sublists(stratimikos, "Linear Solver Type", belos,
+                             {chosen_type(stratimikos, "Linear Solver Type").first}, where,
+                             "Stratimikos");
+  if (stratimikos.isSublist(belos) && stratimikos.sublist(belos).isSublist("Belos"))
+  {
+    const ParameterList &solver = stratimikos.sublist(belos).sublist("Belos");
+    check_only_chosen_sublists(solver, "Solver Type", "Solver Types",
+                               {chosen_type(solver, "Solver Type").first},
+                               where + "/" + belos + "/Belos", "Belos");
+  }
+  // Block Triangular reads the MueLu list too; unless the input names the type, Kiln picks
+  // MueLu or Block Triangular by the problem (create_linear_solver), so either list is read.
+  const auto [preconditioner, given] = chosen_type(stratimikos, "Preconditioner Type");
+  std::vector<std::string> read{preconditioner};
+  if (preconditioner == "Block Triangular" || (preconditioner == "MueLu" && !given))
+    read = {"MueLu", "Block Triangular"};
+  check_only_chosen_sublists(stratimikos, "Preconditioner Type", "Preconditioner Types", read,
+                             where, "Stratimikos");
   // Kiln's block triangular preconditioner: its two sublists are MueLu's
   // (check_muelu_parameters).
   const std::string types = "Preconditioner Types";

@@ -194,7 +194,7 @@ Teuchos::ParameterList uniform_temperature_deck(const std::string &mesh_xml,
       <ParameterList name="Linear Solver Types">
         <ParameterList name="Belos">
           <ParameterList name="Solver Types">
-            <ParameterList name="Pseudo Block GMRES">
+            <ParameterList name="Block GMRES">
               <Parameter name="Convergence Tolerance" type="double" value="1e-13"/>
             </ParameterList>
           </ParameterList>

@@ -45,7 +45,7 @@ void set_solver_tolerances(Teuchos::ParameterList &input, const double absolute,
       .sublist("Linear Solver Types")
       .sublist("Belos")
       .sublist("Solver Types")
-      .sublist("Pseudo Block GMRES")
+      .sublist("Block GMRES")
       .set("Convergence Tolerance", gmres);
 }
 

@@ -33,7 +33,7 @@ std::unique_ptr<kiln::Simulation>
 make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<int>> &comm);
 
 /// Sets Solver/"Absolute Tolerance" and "Relative Tolerance" (Newton) and the "Convergence
-/// Tolerance" of its Pseudo Block GMRES of an input.
+/// Tolerance" of its Block GMRES (the default Belos solver) of an input.
 void set_solver_tolerances(Teuchos::ParameterList &input, double absolute, double relative,
                            double gmres);
 

@@ -19,7 +19,7 @@ nps=(1 2 3)
 top=$PWD/out-$name-$mode
 rm -rf "$top"
 mkdir -p "$top"
-tight='<ParameterList name="Solver"><Parameter name="Relative Tolerance" type="double" value="1e-12"/><ParameterList name="Linear Solver"><ParameterList name="Linear Solver Types"><ParameterList name="Belos"><ParameterList name="Solver Types"><ParameterList name="Pseudo Block GMRES"><Parameter name="Convergence Tolerance" type="double" value="1e-13"/></ParameterList></ParameterList></ParameterList></ParameterList></ParameterList></ParameterList>'
+tight='<ParameterList name="Solver"><Parameter name="Relative Tolerance" type="double" value="1e-12"/><ParameterList name="Linear Solver"><ParameterList name="Linear Solver Types"><ParameterList name="Belos"><ParameterList name="Solver Types"><ParameterList name="Block GMRES"><Parameter name="Convergence Tolerance" type="double" value="1e-13"/></ParameterList></ParameterList></ParameterList></ParameterList></ParameterList></ParameterList>'
 grep -q '<ParameterList name="Solver">' "$input" && { echo "compare_np.sh: $input has a Solver block"; exit 1; }
 sed "s#<ParameterList name=\"Time Stepping\">#$tight&#" "$input" > "$top/$name.xml"
 if [ "$mode" = by-block ]; then

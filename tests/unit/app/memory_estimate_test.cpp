@@ -50,15 +50,19 @@ TEST(MemoryEstimate, TheKrylovBasisIsTheChosenSolvers)
 {
   const kiln::MeshFactory::Counts counts{1000, 1331, "box"};
   const kiln::DofLayout heat{true, false, false};
-  Teuchos::ParameterList solver = input(4).sublist("Solver"); // Kiln's GMRES of 200 blocks
+  // Kiln's flexible GMRES of 100 blocks keeps 101 vectors and the 100 preconditioned ones.
+  Teuchos::ParameterList solver = input(4).sublist("Solver");
   EXPECT_THAT(MemoryEstimate::of(counts, heat, solver, 1).summary(),
               HasSubstr("with a Krylov basis of 201 vectors"));
   Teuchos::ParameterList &belos =
       solver.sublist("Linear Solver").sublist("Linear Solver Types").sublist("Belos");
+  belos.sublist("Solver Types").sublist("Block GMRES").set("Flexible Gmres", false);
+  EXPECT_THAT(MemoryEstimate::of(counts, heat, solver, 1).summary(),
+              HasSubstr("with a Krylov basis of 101 vectors"));
   belos.set("Solver Type", "Pseudo Block CG");
   EXPECT_THAT(MemoryEstimate::of(counts, heat, solver, 1).summary(),
               HasSubstr("with a Krylov basis of 8 vectors"));
-  belos.set("Solver Type", "Block GMRES"); // not set in the input: Belos' default 300
+  belos.set("Solver Type", "Pseudo Block GMRES"); // not set in the input: Belos' default 300
   EXPECT_THAT(MemoryEstimate::of(counts, heat, solver, 1).summary(),
               HasSubstr("with a Krylov basis of 301 vectors"));
 }

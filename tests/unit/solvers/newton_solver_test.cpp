@@ -231,7 +231,7 @@ private:
 
 Teuchos::ParameterList solver_parameters()
 {
-  Teuchos::ParameterList p = NewtonSolver::valid_parameters();
+  Teuchos::ParameterList p; // as an input gives it: NewtonSolver adds the defaults
   p.set("Absolute Tolerance", 1e-10);
   p.set("Relative Tolerance", 1e-12);
   return p;
@@ -358,7 +358,7 @@ TEST_F(NewtonSolverTest, BelosOptionsFromTheInputTakeEffect)
                                       .sublist("Linear Solver Types")
                                       .sublist("Belos")
                                       .sublist("Solver Types")
-                                      .sublist("Pseudo Block GMRES");
+                                      .sublist("Block GMRES");
   gmres.set("Maximum Iterations", 1);
   gmres.set("Convergence Tolerance", 1e-14);
   p.set("Maximum Iterations", 6);
@@ -505,11 +505,11 @@ TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
         .sublist("Linear Solver Types")
         .sublist("Belos")
         .sublist("Solver Types")
-        .sublist("Pseudo Block GMRES")
+        .sublist("Block GMRES")
         .set("Convergence Tolerence", 1e-9);
     const std::string message = input_error(comm, p);
     EXPECT_THAT(message, StartsWith("Solver/Linear Solver/Linear Solver Types/Belos/Solver "
-                                    "Types/Pseudo Block GMRES/\"Convergence Tolerence\": unknown "
+                                    "Types/Block GMRES/\"Convergence Tolerence\": unknown "
                                     "parameter of Belos. Did you mean \"Convergence "
                                     "Tolerance\"? Valid names here: \"Convergence Tolerance\""));
     EXPECT_THAT(message, HasSubstr("correct it or remove it"));
@@ -533,6 +533,61 @@ TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
     EXPECT_THAT(input_error(comm, p),
                 StartsWith("Solver/Linear Solver/Linear Solver Types/\"Bellos\": unknown "
                            "sublist of Stratimikos. Did you mean \"Belos\"?"));
+  }
+  {
+    // Belos reads only the chosen solver's sublist: one filled for another is an error.
+    Teuchos::ParameterList p; // as read from an input: Kiln's defaults are added
+    Teuchos::ParameterList &belos =
+        p.sublist("Linear Solver").sublist("Linear Solver Types").sublist("Belos");
+    belos.sublist("Solver Types").sublist("Pseudo Block GMRES").set("Num Blocks", 50);
+    EXPECT_EQ(input_error(comm, p),
+              "Solver/Linear Solver/Linear Solver Types/Belos/Solver Types/Pseudo Block GMRES: "
+              "parameters for \"Pseudo Block GMRES\", but the \"Solver Type\" beside \"Solver "
+              "Types\" is \"Block GMRES\" (Kiln's default), so Belos would ignore them; set "
+              "\"Solver Type\" to \"Pseudo Block GMRES\" or move them to Solver Types/\"Block "
+              "GMRES\"");
+    belos.set("Solver Type", "Pseudo Block GMRES");
+    EXPECT_EQ(input_error(comm, p), "no InputError");
+    belos.set("Solver Type", "Block CG");
+    EXPECT_THAT(input_error(comm, p), HasSubstr("is \"Block CG\", so Belos would ignore them"));
+    // Kiln's defaults for the solver it would have used do not count as the input's.
+    belos.sublist("Solver Types").remove("Pseudo Block GMRES");
+    EXPECT_EQ(input_error(comm, p), "no InputError");
+  }
+  {
+    // Stratimikos reads only the chosen solver's and preconditioner's sublists.
+    Teuchos::ParameterList p;
+    Teuchos::ParameterList &linear = p.sublist("Linear Solver");
+    linear.sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", "KLU2");
+    EXPECT_THAT(input_error(comm, p),
+                StartsWith("Solver/Linear Solver/Linear Solver Types/Amesos2: parameters for "
+                           "\"Amesos2\", but the \"Linear Solver Type\" beside \"Linear Solver "
+                           "Types\" is \"Belos\" (Kiln's default), so Stratimikos would ignore "
+                           "them"));
+    linear.set("Linear Solver Type", "Amesos2");
+    EXPECT_EQ(input_error(comm, p), "no InputError");
+  }
+  {
+    Teuchos::ParameterList p;
+    Teuchos::ParameterList &linear = p.sublist("Linear Solver");
+    Teuchos::ParameterList &types = linear.sublist("Preconditioner Types");
+    types.sublist("Ifpack2").set("Prec Type", "ILUT");
+    EXPECT_THAT(input_error(comm, p),
+                StartsWith("Solver/Linear Solver/Preconditioner Types/Ifpack2: parameters for "
+                           "\"Ifpack2\", but the \"Preconditioner Type\" beside \"Preconditioner "
+                           "Types\" is \"MueLu\" (Kiln's default)"));
+    types.remove("Ifpack2");
+    // Kiln picks MueLu or Block Triangular by the problem: either list may be read.
+    types.sublist("Block Triangular").sublist("Displacement").set("smoother: type", "CHEBYSHEV");
+    types.sublist("MueLu").set("coarse: max size", 100);
+    EXPECT_EQ(input_error(comm, p), "no InputError");
+    linear.set("Preconditioner Type", "MueLu"); // named: Block Triangular's list is not read
+    EXPECT_THAT(input_error(comm, p),
+                StartsWith("Solver/Linear Solver/Preconditioner Types/Block Triangular: "
+                           "parameters for \"Block Triangular\", but the \"Preconditioner "
+                           "Type\" beside \"Preconditioner Types\" is \"MueLu\", so"));
+    linear.set("Preconditioner Type", "Ifpack2");
+    EXPECT_THAT(input_error(comm, p), StartsWith("Solver/Linear Solver/Preconditioner Types/"));
   }
   {
     // The block's name in messages is the caller's.
