@@ -111,7 +111,8 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       p, nonlinear_name, "NOX",
       "NOX parameters (default: Line Search Based, Full Step, Newton with a constant forcing "
       "term; Printing/\"Output Information\" quiet). Convergence is set by the three parameters "
-      "above, not by NOX status tests",
+      "above, not by NOX status tests. Only the sublist of the chosen \"Line Search\" and "
+      "\"Direction\" \"Method\" is read: one filled for another is an input error",
       internal::nonlinear_solver_defaults());
   set_pass_through_sublist(
       p, linear_name, "Stratimikos (Belos, MueLu, Ifpack2)",

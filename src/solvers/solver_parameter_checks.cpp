@@ -384,15 +384,19 @@ std::pair<std::string, bool> chosen_type(const ParameterList &list, const std::s
 /// Packages read only the sublist of `types` ("Solver Types") named by the choice `type`
 /// ("Solver Type"); a sublist the input fills for another name would be ignored without a
 /// word. `read`: the names read with that choice (the choice itself; "MueLu" and "Block
-/// Triangular" where either may be).
+/// Triangular" where either may be). An empty `types`: the sublists are `list`'s own, beside
+/// the choice (NOX's "Line Search"/"Method" and "Backtrack").
 void check_only_chosen_sublists(const ParameterList &list, const std::string &type,
                                 const std::string &types, const std::vector<std::string> &read,
                                 const std::string &where, const std::string &package)
 {
-  if (!list.isSublist(types))
-    return;
   const auto [choice, given] = chosen_type(list, type);
-  const ParameterList &sublists = list.sublist(types);
+  if ((!types.empty() && !list.isSublist(types)) || choice.empty())
+    return;
+  const ParameterList &sublists = types.empty() ? list : list.sublist(types);
+  const std::string at = types.empty() ? where : where + "/" + types;
+  const std::string beside = types.empty() ? "beside them" : "beside \"" + types + "\"";
+  const std::string to = types.empty() ? "\"" + choice + "\"" : types + "/\"" + choice + "\"";
   for (auto it = sublists.begin(); it != sublists.end(); ++it)
   {
     const std::string &name = sublists.name(it);
@@ -400,10 +404,10 @@ void check_only_chosen_sublists(const ParameterList &list, const std::string &ty
         std::find(read.begin(), read.end(), name) != read.end())
       continue;
     std::ostringstream m;
-    m << where << "/" << types << "/" << name << ": parameters for \"" << name << "\", but the \""
-      << type << "\" beside \"" << types << "\" is \"" << choice << "\""
-      << (given ? "" : " (Kiln's default)") << ", so " << package << " would ignore them; set \""
-      << type << "\" to \"" << name << "\" or move them to " << types << "/\"" << choice << "\"";
+    m << at << "/" << name << ": parameters for \"" << name << "\", but the \"" << type << "\" "
+      << beside << " is \"" << choice << "\"" << (given ? "" : " (Kiln's default)") << ", so "
+      << package << " would ignore them; set \"" << type << "\" to \"" << name
+      << "\" or move them to " << to;
     throw InputError(m.str());
   }
 }
@@ -492,13 +496,33 @@ void check_nox_parameters(const ParameterList &nox, const std::string &where)
   ParameterList valid = nox_known_parameters();
   add_nox_validated_lists(valid);
   // The tensor method reads its own direction and line search names ("Tensor", "Curvilinear").
-  if (nox.isType<std::string>("Nonlinear Solver") &&
-      nox.get<std::string>("Nonlinear Solver") == "Tensor Based")
+  const bool tensor = nox.isType<std::string>("Nonlinear Solver") &&
+                      nox.get<std::string>("Nonlinear Solver") == "Tensor Based";
+  if (tensor)
   {
     leave_unchecked(valid, "Direction");
     leave_unchecked(valid, "Line Search");
   }
   check_list(nox, valid, where, nox_package());
+  if (tensor)
+    return;
+  // The line search and the direction read the sublist of their "Method" (NOX's "NonlinearCG"
+  // direction reads "Nonlinear CG"); the NonlinearCG line search reads none.
+  if (nox.isSublist("Line Search"))
+  {
+    const ParameterList &line_search = nox.sublist("Line Search");
+    check_only_chosen_sublists(line_search, "Method", "",
+                               {chosen_type(line_search, "Method").first}, where + "/Line Search",
+                               "NOX");
+  }
+  if (nox.isSublist("Direction"))
+  {
+    const ParameterList &direction = nox.sublist("Direction");
+    const std::string method = chosen_type(direction, "Method").first;
+    check_only_chosen_sublists(direction, "Method", "",
+                               {method == "NonlinearCG" ? std::string("Nonlinear CG") : method},
+                               where + "/Direction", "NOX");
+  }
 }
 
 void check_solver_parameters(const ParameterList &solver, const ParameterList &stratimikos,

@@ -3,7 +3,9 @@
 /// packages read them, so that a misspelled name or a wrong type is one input error at
 /// kiln --check and at the start of a run. Belos (through Stratimikos) and NOX read the names
 /// they know and ignore the others: a misspelled "Convergence Tolerence" or line search
-/// "Methd" would otherwise change nothing, without a word.
+/// "Methd" would otherwise change nothing, without a word. They also read only the sublist of
+/// the chosen type ("Solver Type", "Preconditioner Type", a line search's "Method"): one the
+/// input fills for another type is refused as well (Kiln's defaults do not count).
 ///
 /// Where the valid names come from:
 /// - Belos: the valid list Stratimikos builds from every Belos solver manager's

@@ -555,6 +555,15 @@ TEST_F(NewtonSolverTest, InvalidOptionsAreInputErrors)
     EXPECT_EQ(input_error(comm, p), "no InputError");
   }
   {
+    // So does NOX, for its line search: Kiln's default method is named as such.
+    Teuchos::ParameterList p;
+    p.sublist("Nonlinear Solver").sublist("Line Search").sublist("Polynomial").set("Max Iters", 5);
+    EXPECT_THAT(input_error(comm, p),
+                StartsWith("Solver/Nonlinear Solver/Line Search/Polynomial: parameters for "
+                           "\"Polynomial\", but the \"Method\" beside them is \"Full Step\" "
+                           "(Kiln's default), so NOX would ignore them"));
+  }
+  {
     // Stratimikos reads only the chosen solver's and preconditioner's sublists.
     Teuchos::ParameterList p;
     Teuchos::ParameterList &linear = p.sublist("Linear Solver");

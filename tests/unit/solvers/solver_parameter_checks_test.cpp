@@ -42,9 +42,15 @@ TEST(NoxParameters, EveryKnownMethodPasses)
   for (const char *method : {"Full Step", "Backtrack", "Polynomial", "More'-Thuente"})
   {
     ParameterList nox = kiln_nox_list();
-    nox.sublist("Line Search").set("Method", std::string(method));
-    nox.sublist("Line Search").sublist("Backtrack").set("Max Iters", 10);
-    nox.sublist("Line Search").sublist("Polynomial").set("Interpolation Type", "Quadratic");
+    ParameterList &line_search = nox.sublist("Line Search");
+    line_search.set("Method", std::string(method));
+    ParameterList &own = line_search.sublist(method);
+    if (std::string(method) == "Polynomial")
+      own.set("Interpolation Type", "Quadratic");
+    else if (std::string(method) == "Full Step")
+      own.set("Full Step", 0.5);
+    else
+      own.set("Max Iters", 10);
     EXPECT_EQ(message_for(nox), "") << method;
   }
   ParameterList nox = kiln_nox_list();
@@ -53,6 +59,38 @@ TEST(NoxParameters, EveryKnownMethodPasses)
   nox.sublist("Direction").sublist("Newton").set("Forcing Term Method", "Type 2");
   nox.sublist("Direction").sublist("Newton").set("Forcing Term Alpha", 1.5);
   nox.sublist("Cauchy Direction").set("Method", "Steepest Descent");
+  EXPECT_EQ(message_for(nox), "");
+}
+
+TEST(NoxParameters, ASublistOfAnotherMethodIsRefused)
+{
+  // NOX reads only the sublist of the chosen line search and direction.
+  ParameterList nox = kiln_nox_list();
+  nox.sublist("Line Search").sublist("Backtrack").set("Max Iters", 10);
+  EXPECT_EQ(message_for(nox),
+            "in.xml: NOX/Line Search/Backtrack: parameters for \"Backtrack\", but the \"Method\" "
+            "beside them is \"Full Step\", so NOX would ignore them; set \"Method\" to "
+            "\"Backtrack\" or move them to \"Full Step\"");
+  nox.sublist("Line Search").set("Method", "Backtrack");
+  EXPECT_EQ(message_for(nox), "");
+
+  nox = kiln_nox_list(); // Method Newton
+  nox.sublist("Direction").sublist("Broyden").set("Memory", 5);
+  EXPECT_THAT(message_for(nox), StartsWith("in.xml: NOX/Direction/Broyden: parameters for "
+                                           "\"Broyden\", but the \"Method\" beside them is "
+                                           "\"Newton\""));
+  nox = kiln_nox_list();
+  nox.sublist("Direction").set("Method", "NonlinearCG"); // reads "Nonlinear CG"
+  nox.sublist("Direction").remove("Newton");
+  nox.sublist("Direction").sublist("Nonlinear CG").set("Restart Frequency", 5);
+  EXPECT_EQ(message_for(nox), "");
+  nox.sublist("Direction").sublist("Steepest Descent").set("Scaling Type", "None");
+  EXPECT_THAT(message_for(nox), StartsWith("in.xml: NOX/Direction/Steepest Descent: "));
+
+  // The tensor method reads names of its own.
+  nox = kiln_nox_list();
+  nox.set("Nonlinear Solver", "Tensor Based");
+  nox.sublist("Line Search").sublist("Backtrack").set("Max Iters", 10);
   EXPECT_EQ(message_for(nox), "");
 }
 
