@@ -215,6 +215,12 @@ void check_memory(const Teuchos::ParameterList &params, const DofLayout &layout,
             << ", but this machine gives a rank about " << memory_text(available) << " (" << how
             << "): use fewer cells (a coarser mesh), or more ranks on more nodes (the unknowns "
                "are shared among the ranks, the mesh is not)";
+  // A GMRES basis is counted whole, though only solves that long fill it (Belos touches its
+  // vectors as it goes): a shorter one is a way out too.
+  if (!fits && estimate.krylov_vectors() > 8)
+    message << ", or a shorter Krylov basis (\"Num Blocks\" of the Belos solver in "
+            << "Kiln/Solver/Linear Solver: the estimate counts all " << estimate.krylov_vectors()
+            << " vectors of its basis, which only solves of that many iterations fill)";
   check_collectively(comm, fits, "", message.str());
   if (comm.getRank() == 0)
     out << "memory: " << estimate.summary() << " estimated; a rank has about "

@@ -32,6 +32,7 @@ public:
   /// two above.
   double bytes_per_rank() const;
   long long unknowns() const { return unknowns_; }
+  int krylov_vectors() const { return krylov_vectors_; }
   /// "1.23 GB per rank (0.20 GB the mesh, held whole on every rank; 1.0 GB for 1/2 of the
   /// 148104 unknowns)".
   std::string summary() const;

@@ -94,7 +94,23 @@ TEST(CheckMemory, ABoxThatCannotFitIsRefusedNamingCells)
                                            "1200}: the run needs about "));
   EXPECT_THAT(message, HasSubstr("but this machine gives a rank about "));
   EXPECT_THAT(message, HasSubstr("use fewer cells (a coarser mesh), or more ranks on more nodes"));
+  EXPECT_THAT(message, HasSubstr(", or a shorter Krylov basis (\"Num Blocks\" of the Belos solver "
+                                 "in Kiln/Solver/Linear Solver: the estimate counts all 201 "
+                                 "vectors of its basis"));
   EXPECT_EQ(out.str(), "");
+  // CG keeps a few vectors: no basis to shorten.
+  Teuchos::ParameterList cg = input(1200);
+  cg.sublist("Solver")
+      .sublist("Linear Solver")
+      .sublist("Linear Solver Types")
+      .sublist("Belos")
+      .set("Solver Type", "Pseudo Block CG");
+  EXPECT_THAT(
+      kiln_test::input_error_message(
+          [&] {
+            kiln::check_memory(cg, kiln::DofLayout{true, false, false}, "in.xml", "", *comm, out);
+          }),
+      testing::Not(HasSubstr("Krylov basis (")));
 }
 
 TEST(CheckMemory, ABoxThatFitsIsPrinted)
