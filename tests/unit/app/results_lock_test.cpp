@@ -43,6 +43,7 @@ TEST(ResultsLock, SecondLockRefusedNamingTheHolder)
   }
   comm->barrier();
   EXPECT_FALSE(std::filesystem::exists(path)) << "released, the lock file is removed";
+  comm->barrier(); // every rank has looked before rank 0 creates it again
   {
     const kiln::ResultsLock again(path, *comm);
     EXPECT_EQ(again.path(), path);
