@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace kiln
@@ -274,6 +275,8 @@ void Assembler::begin(const bool residual, Matrix *J)
                 "the Jacobian must be built on owned_graph()");
     J->resumeFill();
     J->setAllToScalar(0.0);
+    KILN_ASSERT(J->getCrsGraph()->isSorted(), "the Jacobian's rows must have sorted columns");
+    local_J_ = J->getLocalMatrixHost();
     if (ghost_matrix_->isFillComplete())
       ghost_matrix_->resumeFill();
     ghost_matrix_->setAllToScalar(0.0);
@@ -283,15 +286,30 @@ void Assembler::begin(const bool residual, Matrix *J)
 void Assembler::add_row(const LO lid, const LO *columns, const double *values, const LO n)
 {
   // Not atomic: one thread assembles.
-  if (owned_row_[lid] != Teuchos::OrdinalTraits<LO>::invalid())
+  if (const LO row = owned_row_[lid]; row != Teuchos::OrdinalTraits<LO>::invalid())
   {
-    owned_columns_.resize(n);
+    // What sumIntoLocalValues does, on the local rows held since begin(): each column is
+    // looked for after the last one found (a cell's columns come in runs), else by bisection
+    // of the row's sorted columns. The sums are the same, in the same order.
+    const LO *const row_columns = local_J_.graph.entries.data();
+    double *const row_values = local_J_.values.data();
+    const std::size_t first = local_J_.graph.row_map(row), end = local_J_.graph.row_map(row + 1);
+    std::size_t next = first;
     for (LO j = 0; j < n; ++j)
-      owned_columns_[j] = owned_column_[columns[j]];
-    const LO count =
-        J_->sumIntoLocalValues(owned_row_[lid], n, values, owned_columns_.data(), false);
-    KILN_ASSERT(count == n, "entries missing from the graph in owned row " << owned_row_[lid]);
-    (void)count;
+    {
+      const LO column = owned_column_[columns[j]];
+      std::size_t k = next;
+      if (k >= end || row_columns[k] != column)
+      {
+        k = static_cast<std::size_t>(
+            std::lower_bound(row_columns + first, row_columns + end, column) - row_columns);
+        if (k == end || row_columns[k] != column)
+          throw std::logic_error("Assembler::add: an entry missing from the graph in owned row " +
+                                 std::to_string(row));
+      }
+      row_values[k] += values[j];
+      next = k + 1;
+    }
     return;
   }
   const LO count = ghost_matrix_->sumIntoLocalValues(ghost_row_[lid], n, values, columns, false);
@@ -352,6 +370,7 @@ void Assembler::finish(Vector *f, Matrix *J)
   if (J != nullptr)
   {
     KILN_ASSERT(J == J_, "finish(J) without begin(residual, J)");
+    local_J_ = Matrix::local_matrix_host_type();
     ghost_matrix_->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());
     J->doExport(*ghost_matrix_, *ghost_exporter_, Tpetra::ADD);
     J->fillComplete(dofs_.owned_dof_map(), dofs_.owned_dof_map());

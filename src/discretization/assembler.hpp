@@ -99,15 +99,18 @@ private:
   Teuchos::RCP<Graph> owned_graph_;
   Teuchos::RCP<Matrix> ghost_matrix_;
   Teuchos::RCP<const Tpetra::Export<>> ghost_exporter_;
-  std::vector<LO> owned_row_;     ///< per overlap local id: J's row, or invalid
-  std::vector<LO> ghost_row_;     ///< per overlap local id: the ghost matrix's row, or invalid
-  std::vector<LO> owned_column_;  ///< per overlap local id: J's local column, or invalid
-  std::vector<LO> owned_columns_; ///< add_row(): work
+  std::vector<LO> owned_row_;    ///< per overlap local id: J's row, or invalid
+  std::vector<LO> ghost_row_;    ///< per overlap local id: the ghost matrix's row, or invalid
+  std::vector<LO> owned_column_; ///< per overlap local id: J's local column, or invalid
   Teuchos::RCP<Vector> overlap_residual_;
   /// overlap_residual_'s values while a residual is assembled (between begin() and finish()):
   /// taken once, not per add().
   Teuchos::ArrayRCP<double> residual_values_;
   bool assembling_residual_ = false;
   Matrix *J_ = nullptr; ///< the Jacobian being assembled
+  /// J_'s local rows while it is assembled (begin() to finish()): its owned rows are summed
+  /// into directly, without a Tpetra call per row (sumIntoLocalValues' views and checks
+  /// took as long as the element kernels).
+  Matrix::local_matrix_host_type local_J_;
 };
 } // namespace kiln
