@@ -17,7 +17,7 @@
 ///   Direction" line searches and the "Pseudo-Transient" solver, which NOX builds only
 ///   from objects an input cannot give (an "Update Limit Vector") or checks itself; the
 ///   other sublists have none, and their known names are written out in
-///   nox_known_parameters().
+///   nox_known_parameters() (nox_parameter_names.hpp).
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
@@ -54,9 +54,5 @@ void check_stratimikos_parameters(const Teuchos::ParameterList &stratimikos,
 /// The NOX list's names, types and main choices ("Nonlinear Solver", the line search and
 /// direction "Method", "Forcing Term Method", the solve measures). `where` names the list.
 void check_nox_parameters(const Teuchos::ParameterList &nox, const std::string &where);
-
-/// The names NOX 13.2 reads in the sublists that have no validator in NOX, with the types and
-/// defaults NOX reads them with; an empty sublist is not checked.
-Teuchos::ParameterList nox_known_parameters();
 } // namespace internal
 } // namespace kiln
