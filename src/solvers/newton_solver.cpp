@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
 #include "solvers/block_triangular_preconditioner.hpp"
+#include "solvers/direct_preconditioner.hpp"
 #include "solvers/jacobian_reuse.hpp"
 #include "solvers/linear_tolerance.hpp"
 #include "solvers/model_evaluator.hpp"
@@ -126,7 +127,10 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
       "(with the six rigid-body modes), applied in turn with the coupling of the force rows to "
       "T between them; the \"MueLu\" list applies to both, \"Preconditioner Types\"/\"Block "
       "Triangular\"/\"Temperature\" and \"Displacement\" add to one (doc/solvers.md). "
-      "\"MueLu\" as the Preconditioner Type keeps one hierarchy for the whole system. "
+      "\"MueLu\" as the Preconditioner Type keeps one hierarchy for the whole system. With "
+      "at most 2,000 unknowns the default is \"Direct\" (unless the input gives a \"MueLu\" "
+      "or \"Block Triangular\" list): J gathered onto rank 0 and factored there by Amesos2's "
+      "KLU2, so that each Krylov solve takes one or two iterations (doc/solvers.md). "
       "Unless the input sets them, Kiln adds to \"smoother: params\" of a RELAXATION smoother "
       "1 forward Gauss-Seidel sweep (symmetric Gauss-Seidel under CG or MINRES or for one "
       "unknown per node) and \"relaxation: use l1\" true (l1 Gauss-Seidel across ranks), of a "
@@ -204,11 +208,22 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p, const bool prec
   auto linear = Teuchos::rcp(new ParameterList(p.sublist(linear_name)));
   // Temperature and displacement, and enough unknowns for it to pay: the block triangular
   // preconditioner unless the input chooses (doc/solvers.md, "Block Triangular").
+  // Few enough unknowns: J's LU factors on rank 0, unless the input tunes a multigrid
+  // (doc/solvers.md, "Small problems: Direct").
   const int unknowns = internal::unknowns_per_node(*problem, *comm);
-  if (!preconditioner_given && unknowns == 4 &&
-      static_cast<long long>(problem->solution_map()->getGlobalNumElements()) >=
-          internal::block_triangular_from)
-    linear->set("Preconditioner Type", "Block Triangular");
+  const auto global_unknowns =
+      static_cast<long long>(problem->solution_map()->getGlobalNumElements());
+  const bool multigrid_given =
+      given_in_input(p.sublist(linear_name), "Preconditioner Types") &&
+      (given_in_input(p.sublist(linear_name).sublist("Preconditioner Types"), "MueLu") ||
+       given_in_input(p.sublist(linear_name).sublist("Preconditioner Types"), "Block Triangular"));
+  // Kiln's pick stays a default: an unread sublist is reported against it as such.
+  const auto pick = [&](const std::string &type)
+  { linear->getEntryPtr("Preconditioner Type")->setValue(type, true); };
+  if (!preconditioner_given && unknowns == 4 && global_unknowns >= internal::block_triangular_from)
+    pick("Block Triangular");
+  else if (!preconditioner_given && !multigrid_given && global_unknowns <= internal::direct_up_to)
+    pick("Direct");
   preconditioner_type = linear->get<std::string>("Preconditioner Type");
   const bool block_triangular = preconditioner_type == "Block Triangular";
   // MueLu's list as the input and Kiln's defaults give it, for the blocks' hierarchies.
@@ -224,6 +239,10 @@ NewtonSolver::Impl::create_linear_solver(const ParameterList &p, const bool prec
       Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
                                   internal::BlockTriangularPreconditionerFactory>(),
       "Block Triangular");
+  builder->setPreconditioningStrategyFactory(
+      Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
+                                  internal::DirectPreconditionerFactory>(),
+      "Direct");
   const std::string linear_block = where + "/" + linear_name;
   internal::check_solver_parameters(p, *linear, *builder->getValidParameters(), comm, where);
   scale = p.get<bool>("Scale Unknowns") ? problem->unknown_scale() : Teuchos::null;

@@ -321,10 +321,13 @@ void check_stratimikos_parameters(const ParameterList &stratimikos, const Parame
                                where + "/" + belos + "/Belos", "Belos");
   }
   // Block Triangular reads the MueLu list too; unless the input names the type, Kiln picks
-  // MueLu or Block Triangular by the problem (create_linear_solver), so either list is read.
+  // MueLu, Block Triangular or Direct by the problem (create_linear_solver), so any of their
+  // lists is read.
   const auto [preconditioner, given] = chosen_type(stratimikos, "Preconditioner Type");
   std::vector<std::string> read{preconditioner};
-  if (preconditioner == "Block Triangular" || (preconditioner == "MueLu" && !given))
+  if (!given)
+    read = {"MueLu", "Block Triangular", "Direct"};
+  else if (preconditioner == "Block Triangular")
     read = {"MueLu", "Block Triangular"};
   check_only_chosen_sublists(stratimikos, "Preconditioner Type", "Preconditioner Types", read,
                              where, "Stratimikos");
