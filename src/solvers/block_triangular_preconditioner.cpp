@@ -5,9 +5,6 @@
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
-#include <Thyra_DefaultPreconditioner.hpp>
-#include <Thyra_TpetraLinearOp.hpp>
-#include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 
 #include <memory>
@@ -320,16 +317,6 @@ ParameterList block_muelu_list(const ParameterList &common, const ParameterList 
   return muelu;
 }
 
-/// The Tpetra matrix behind a Thyra operator source (null if it is none, or an exception
-/// with `required`).
-RCP<const Matrix> crs_matrix(const Thyra::LinearOpSourceBase<double> &source, bool required)
-{
-  return Teuchos::rcp_dynamic_cast<const Matrix>(
-      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
-          source.getOp()),
-      required);
-}
-
 /// Rows `rows` of the columns [first, first + count) of `modes`, on `map`.
 RCP<MV> restrict_modes(const MV &modes, std::size_t first, std::size_t count,
                        const std::vector<LO> &rows, const RCP<const Map> &map)
@@ -359,23 +346,11 @@ void BlockTriangularPreconditionerFactory::set_hints(RCP<const MultiVector> coor
   t_stale_ = u_stale_ = true;
 }
 
-bool BlockTriangularPreconditionerFactory::isCompatible(
-    const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const
-{
-  return !crs_matrix(fwdOpSrc, false).is_null();
-}
-
-RCP<Thyra::PreconditionerBase<double>> BlockTriangularPreconditionerFactory::createPrec() const
-{
-  return rcp(new Thyra::DefaultPreconditioner<double>);
-}
-
 void BlockTriangularPreconditionerFactory::initializePrec(
     const RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
     Thyra::PreconditionerBase<double> *precOp, Thyra::ESupportSolveUse) const
 {
-  auto &prec = dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*precOp);
-  prec.uninitialize();
+  uninitializePrec(precOp, nullptr, nullptr);
   const RCP<const Matrix> J = crs_matrix(*fwdOpSrc, true);
   if (split_ == nullptr || split_graph_ != J->getCrsGraph().get())
   {
@@ -398,12 +373,7 @@ void BlockTriangularPreconditionerFactory::initializePrec(
     stale = false;
     ++(temperature ? builds_.temperature : builds_.displacement);
   }
-  auto op = rcp(new BlockTriangularOperator(J->getRowMap(), split_, t_op_, u_op_));
-  const RCP<const Thyra::LinearOpBase<double>> thyra_op =
-      Thyra::tpetraLinearOp<double, LO, GO, Node>(
-          Thyra::tpetraVectorSpace<double>(J->getRangeMap()),
-          Thyra::tpetraVectorSpace<double>(J->getDomainMap()), Teuchos::rcp_implicit_cast<Op>(op));
-  prec.initializeUnspecified(thyra_op);
+  set_operator(*precOp, *J, rcp(new BlockTriangularOperator(J->getRowMap(), split_, t_op_, u_op_)));
 }
 
 RCP<Tpetra::Operator<double>>
@@ -441,48 +411,6 @@ void BlockTriangularPreconditionerFactory::refresh(
   const RCP<const Matrix> J = crs_matrix(fwdOpSrc, true);
   if (split_ != nullptr && split_graph_ == J->getCrsGraph().get())
     note_changes(*J);
-}
-
-void BlockTriangularPreconditionerFactory::uninitializePrec(
-    Thyra::PreconditionerBase<double> *prec, RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
-    Thyra::ESupportSolveUse *supportSolveUse) const
-{
-  if (fwdOpSrc != nullptr)
-    *fwdOpSrc = Teuchos::null;
-  if (supportSolveUse != nullptr)
-    *supportSolveUse = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
-  if (prec != nullptr)
-    dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*prec).uninitialize();
-}
-
-void BlockTriangularPreconditionerFactory::setParameterList(const RCP<ParameterList> &paramList)
-{
-  paramList->validateParametersAndSetDefaults(*getValidParameters(), 0);
-  params_ = paramList;
-  t_stale_ = u_stale_ = true;
-}
-
-RCP<ParameterList> BlockTriangularPreconditionerFactory::getNonconstParameterList()
-{
-  if (params_.is_null())
-    params_ = rcp(new ParameterList(*getValidParameters()));
-  t_stale_ = u_stale_ = true; // the caller may change the list
-  return params_;
-}
-
-RCP<ParameterList> BlockTriangularPreconditionerFactory::unsetParameterList()
-{
-  RCP<ParameterList> old = params_;
-  params_ = Teuchos::null;
-  t_stale_ = u_stale_ = true;
-  return old;
-}
-
-RCP<const ParameterList> BlockTriangularPreconditionerFactory::getParameterList() const
-{
-  if (params_.is_null())
-    return getValidParameters();
-  return params_;
 }
 
 RCP<const ParameterList> BlockTriangularPreconditionerFactory::getValidParameters() const

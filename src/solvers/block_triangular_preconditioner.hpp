@@ -14,6 +14,7 @@
 /// preconditioner builds anew only the hierarchy of a block whose values changed since it was
 /// built: the displacement block does not depend on the time step, the temperature block not on the
 /// contact set.
+#include "solvers/crs_preconditioner_factory.hpp"
 #include "solvers/jacobian_reuse.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -35,7 +36,7 @@ constexpr long long block_triangular_from = 50000;
 
 class BlockSplit;
 
-class BlockTriangularPreconditionerFactory final : public Thyra::PreconditionerFactoryBase<double>,
+class BlockTriangularPreconditionerFactory final : public CrsPreconditionerFactory,
                                                    public RefreshingPreconditionerFactory
 {
 public:
@@ -49,21 +50,11 @@ public:
                  Teuchos::RCP<const MultiVector> near_null_space,
                  const Teuchos::ParameterList &muelu);
 
-  bool isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const override;
-  Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;
   void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
                       Thyra::PreconditionerBase<double> *precOp,
                       Thyra::ESupportSolveUse supportSolveUse) const override;
   /// The blocks of a kept preconditioner take the new values of the operator.
   void refresh(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const override;
-  void uninitializePrec(Thyra::PreconditionerBase<double> *prec,
-                        Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
-                        Thyra::ESupportSolveUse *supportSolveUse) const override;
-
-  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList> &paramList) override;
-  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override;
-  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override;
-  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override;
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
 
   /// How many hierarchies (or diagonal inverses) of each block initializePrec() has built.
@@ -76,6 +67,8 @@ public:
   Builds builds() const { return builds_; }
 
 private:
+  /// New parameters: both blocks are built anew.
+  void parameters_changed() override { t_stale_ = u_stale_ = true; }
   /// The preconditioner of the temperature (`temperature` true) or the displacement block,
   /// built anew.
   Teuchos::RCP<Tpetra::Operator<double>> build_block(bool temperature) const;
@@ -83,7 +76,6 @@ private:
   /// for a new hierarchy. Collective.
   void note_changes(const Tpetra::CrsMatrix<double> &J) const;
 
-  Teuchos::RCP<Teuchos::ParameterList> params_;
   Teuchos::RCP<const MultiVector> coordinates_;
   Teuchos::RCP<const MultiVector> near_null_space_;
   Teuchos::ParameterList muelu_;

@@ -4,9 +4,6 @@
 
 #include <Amesos2.hpp>
 #include <Teuchos_CommHelpers.hpp>
-#include <Thyra_DefaultPreconditioner.hpp>
-#include <Thyra_TpetraLinearOp.hpp>
-#include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_ComputeGatherMap.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
@@ -33,16 +30,6 @@ using LO = Map::local_ordinal_type;
 using GO = Map::global_ordinal_type;
 using Node = Map::node_type;
 using Solver = Amesos2::Solver<Matrix, MV>;
-
-/// The Tpetra matrix behind a Thyra operator source (null if it is none, or an exception
-/// with `required`).
-RCP<const Matrix> crs_matrix(const Thyra::LinearOpSourceBase<double> &source, bool required)
-{
-  return Teuchos::rcp_dynamic_cast<const Matrix>(
-      Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>::getConstTpetraOperator(
-          source.getOp()),
-      required);
-}
 
 /// Over a one-rank communicator, the ids of `map`'s rows on this rank renumbered by
 /// `number` (KLU2 takes only ids 0, 1, ..., n - 1 in order).
@@ -118,23 +105,11 @@ void DirectOperator::apply(const MV &X, MV &Y, const Teuchos::ETransp mode, cons
 DirectPreconditionerFactory::DirectPreconditionerFactory() = default;
 DirectPreconditionerFactory::~DirectPreconditionerFactory() = default;
 
-bool DirectPreconditionerFactory::isCompatible(
-    const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const
-{
-  return !crs_matrix(fwdOpSrc, false).is_null();
-}
-
-RCP<Thyra::PreconditionerBase<double>> DirectPreconditionerFactory::createPrec() const
-{
-  return rcp(new Thyra::DefaultPreconditioner<double>);
-}
-
 void DirectPreconditionerFactory::initializePrec(
     const RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
     Thyra::PreconditionerBase<double> *precOp, Thyra::ESupportSolveUse) const
 {
-  auto &prec = dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*precOp);
-  prec.uninitialize();
+  uninitializePrec(precOp, nullptr, nullptr);
   const RCP<const Matrix> J = crs_matrix(*fwdOpSrc, true);
   const auto comm = J->getComm();
   // New factors: the operators made before keep theirs.
@@ -203,51 +178,7 @@ void DirectPreconditionerFactory::initializePrec(
           "Solver/\"Preconditioner Type\" to \"MueLu\"");
   ++factorizations_;
   factors_ = f;
-  auto op = rcp(new DirectOperator(J->getRowMap(), f));
-  const RCP<const Thyra::LinearOpBase<double>> thyra_op =
-      Thyra::tpetraLinearOp<double, LO, GO, Node>(
-          Thyra::tpetraVectorSpace<double>(J->getRangeMap()),
-          Thyra::tpetraVectorSpace<double>(J->getDomainMap()), Teuchos::rcp_implicit_cast<Op>(op));
-  prec.initializeUnspecified(thyra_op);
-}
-
-void DirectPreconditionerFactory::uninitializePrec(
-    Thyra::PreconditionerBase<double> *prec, RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
-    Thyra::ESupportSolveUse *supportSolveUse) const
-{
-  if (fwdOpSrc != nullptr)
-    *fwdOpSrc = Teuchos::null;
-  if (supportSolveUse != nullptr)
-    *supportSolveUse = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
-  if (prec != nullptr)
-    dynamic_cast<Thyra::DefaultPreconditioner<double> &>(*prec).uninitialize();
-}
-
-void DirectPreconditionerFactory::setParameterList(const RCP<ParameterList> &paramList)
-{
-  paramList->validateParametersAndSetDefaults(*getValidParameters(), 0);
-  params_ = paramList;
-}
-
-RCP<ParameterList> DirectPreconditionerFactory::getNonconstParameterList()
-{
-  if (params_.is_null())
-    params_ = rcp(new ParameterList(*getValidParameters()));
-  return params_;
-}
-
-RCP<ParameterList> DirectPreconditionerFactory::unsetParameterList()
-{
-  RCP<ParameterList> old = params_;
-  params_ = Teuchos::null;
-  return old;
-}
-
-RCP<const ParameterList> DirectPreconditionerFactory::getParameterList() const
-{
-  if (params_.is_null())
-    return getValidParameters();
-  return params_;
+  set_operator(*precOp, *J, rcp(new DirectOperator(J->getRowMap(), f)));
 }
 
 RCP<const ParameterList> DirectPreconditionerFactory::getValidParameters() const
