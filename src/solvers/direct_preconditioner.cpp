@@ -47,11 +47,11 @@ RCP<const Map> serial_map(const Map &map, const std::function<GO(GO)> &number,
 /// the gathered matrix over a one-rank communicator.
 struct DirectPreconditionerFactory::Factors
 {
-  const void *graph = nullptr;        ///< J's graph the gather was made for
+  RCP<const Map> rows;                ///< J's row map, which the gather was made for
   RCP<const Map> gathered;            ///< J's rows, all on rank 0
   RCP<const Import> gather;           ///< J's row map -> gathered
   RCP<const Teuchos::Comm<int>> self; ///< rank 0 alone (the other ranks: their own)
-  RCP<const Map> serial_rows;         ///< rank 0: the gathered rows over `self`
+  RCP<const Map> serial_rows;         ///< rank 0: 0, ..., n - 1 over `self`
   RCP<Solver> solver;                 ///< rank 0: KLU2 with the factors of J
   bool root = false;                  ///< this rank holds the factors
 };
@@ -112,11 +112,11 @@ void DirectPreconditionerFactory::initializePrec(
   uninitializePrec(precOp, nullptr, nullptr);
   const RCP<const Matrix> J = crs_matrix(*fwdOpSrc, true);
   const auto comm = J->getComm();
-  // New factors: the operators made before keep theirs.
+  // New factors: the operators made before keep theirs. The gather depends on J's rows only.
   auto f = std::make_shared<Factors>();
-  if (factors_ != nullptr && factors_->graph == J->getCrsGraph().get())
+  if (factors_ != nullptr && factors_->rows.get() == J->getRowMap().get())
   {
-    f->graph = factors_->graph;
+    f->rows = factors_->rows;
     f->gathered = factors_->gathered;
     f->gather = factors_->gather;
     f->self = factors_->self;
@@ -124,7 +124,7 @@ void DirectPreconditionerFactory::initializePrec(
   }
   else
   {
-    f->graph = J->getCrsGraph().get();
+    f->rows = J->getRowMap();
     f->gathered = Tpetra::Details::computeGatherMap<Map>(J->getRowMap(), Teuchos::null);
     f->gather = rcp(new Import(J->getRowMap(), f->gathered));
     f->self = comm->split(comm->getRank() == 0 ? 0 : 1, 0);
@@ -141,7 +141,8 @@ void DirectPreconditionerFactory::initializePrec(
   {
     try
     {
-      // The gathered matrix over rank 0 alone, with the same local rows and columns.
+      // The gathered matrix over rank 0 alone: its local rows and columns, the columns
+      // numbered by their rows.
       const auto local = gathered->getLocalMatrixHost();
       const std::size_t rows = local.numRows();
       const std::size_t entries = local.nnz();

@@ -25,7 +25,7 @@ public:
   ~DirectPreconditionerFactory() override;
 
   /// Gathers J onto rank 0 and factors it there; the gather's maps are made anew only for a
-  /// new graph of J. Collective.
+  /// new row map of J. Collective.
   void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
                       Thyra::PreconditionerBase<double> *precOp,
                       Thyra::ESupportSolveUse supportSolveUse) const override;
