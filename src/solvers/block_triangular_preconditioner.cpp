@@ -368,7 +368,9 @@ void BlockTriangularPreconditionerFactory::initializePrec(
     bool &stale = temperature ? t_stale_ : u_stale_;
     if (!stale)
       continue;
-    op = Teuchos::null; // the old hierarchy goes before the new one is built
+    // The old hierarchy goes before the new one is built (the linear solver's hold on the
+    // last operator is released by ReusingPreconditionerFactory).
+    op = Teuchos::null;
     op = build_block(temperature);
     stale = false;
     ++(temperature ? builds_.temperature : builds_.displacement);

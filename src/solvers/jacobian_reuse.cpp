@@ -5,14 +5,64 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <Thyra_DefaultPreconditioner.hpp>
+#include <Thyra_LinearOpBase.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace kiln
 {
 namespace internal
 {
 using Teuchos::RCP;
+
+namespace
+{
+/// The preconditioner operator handed to the linear solver: it forwards to the operator the
+/// wrapped factory built until release(). The linear solver holds the operator it was given
+/// until it is given the next one, which is built after the last one; so without this the
+/// two hierarchies (or factorizations) would live side by side while the new one is built.
+class ReleasableOp final : public Thyra::LinearOpBase<double>
+{
+public:
+  explicit ReleasableOp(RCP<const Thyra::LinearOpBase<double>> op)
+      : op_(op.assert_not_null()), range_(op_->range()), domain_(op_->domain())
+  {
+  }
+  void release() { op_ = Teuchos::null; }
+  RCP<const Thyra::VectorSpaceBase<double>> range() const override { return range_; }
+  RCP<const Thyra::VectorSpaceBase<double>> domain() const override { return domain_; }
+
+protected:
+  bool opSupportedImpl(Thyra::EOpTransp M_trans) const override
+  {
+    return !op_.is_null() && Thyra::opSupported(*op_, M_trans);
+  }
+  void applyImpl(const Thyra::EOpTransp M_trans, const Thyra::MultiVectorBase<double> &X,
+                 const Teuchos::Ptr<Thyra::MultiVectorBase<double>> &Y, const double alpha,
+                 const double beta) const override
+  {
+    if (op_.is_null())
+      throw std::logic_error("kiln: a preconditioner was applied after the next one "
+                             "replaced it (ReusingPreconditionerFactory)");
+    Thyra::apply(*op_, M_trans, X, Y, alpha, beta);
+  }
+
+private:
+  RCP<const Thyra::LinearOpBase<double>> op_;
+  RCP<const Thyra::VectorSpaceBase<double>> range_, domain_;
+};
+
+Thyra::DefaultPreconditioner<double> &default_preconditioner(Thyra::PreconditionerBase<double> &p)
+{
+  auto *d = dynamic_cast<Thyra::DefaultPreconditioner<double> *>(&p);
+  if (d == nullptr)
+    throw std::logic_error("kiln: ReusingPreconditionerFactory needs a factory whose "
+                           "preconditioners are Thyra::DefaultPreconditioner");
+  return *d;
+}
+} // namespace
 
 bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                              const NonlinearProblem::Matrix &J)
@@ -179,7 +229,16 @@ void ReusingPreconditionerFactory::initializePrec(
     return;
   }
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 7 preconditioner set-up"));
+  // The last preconditioner goes before the new one is built (ReleasableOp).
+  Thyra::DefaultPreconditioner<double> &prec = default_preconditioner(*precOp);
+  built_ = {};
+  if (!Teuchos::rcp_dynamic_cast<const ReleasableOp>(prec.getUnspecifiedPrecOp()).is_null())
+    Teuchos::rcp_dynamic_cast<ReleasableOp>(prec.getNonconstUnspecifiedPrecOp(), true)->release();
+  prec.uninitialize();
   reuse_->build([&] { factory_->initializePrec(fwdOpSrc, precOp, supportSolveUse); });
+  const RCP<Thyra::LinearOpBase<double>> built =
+      Teuchos::rcp(new ReleasableOp(prec.getUnspecifiedPrecOp()));
+  prec.initializeUnspecified(built);
   // After a restore (JacobianReuse::build) the operator holds other values than those built
   // from, and a hierarchy's finest level reads the operator's: so do the copies.
   if (const auto *refreshing =
