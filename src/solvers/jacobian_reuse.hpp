@@ -114,7 +114,10 @@ public:
 
 /// A preconditioner factory (MueLu's, Ifpack2's from Stratimikos) that builds a
 /// preconditioner only when the operator or its JacobianReuse version changed since it last
-/// built it; everything else is the wrapped factory's.
+/// built it; everything else is the wrapped factory's. The operator it puts in a
+/// preconditioner (a Thyra::DefaultPreconditioner) is a handle that it empties before it
+/// builds that preconditioner anew: the linear solver holds the last operator until it is
+/// given the new one, so the two would otherwise live side by side during the build.
 class ReusingPreconditionerFactory final : public Thyra::PreconditionerFactoryBase<double>
 {
 public:
