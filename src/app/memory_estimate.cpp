@@ -18,24 +18,25 @@ namespace kiln
 namespace internal
 {
 // Calibrated on the development machine (2 cores, 24 GB; Debian 12, Trilinos 13.2, Open MPI
-// 4.1): the peak resident memory (VmHWM, largest rank) of a run of the contact box of
-// inputs/contact-box-close.xml (Thermo-Elasticity with contact, F = 4 unknowns per node) at
-// 16^3, 24^3, 32^3, 40^3 cells and of its heat conduction alone (F = 1) at 24^3, 32^3, 48^3,
-// 64^3 cells, each on 1 and 2 ranks, one backward Euler step after the output at t = 0.
-// Fitted by least squares to
+// 4.1) by benchmarks/memory_fit.py (2026-11-27, after changelog 0025): the peak resident
+// memory (VmHWM, largest rank) of a run of the contact box of inputs/contact-box-close.xml
+// (Thermo-Elasticity with contact, F = 4 unknowns per node) at 16^3, 24^3, 32^3, 40^3 cells
+// and of its heat conduction alone (F = 1) at 24^3, 32^3, 48^3, 64^3 cells, each on 1 and 2
+// ranks, to the first backward Euler step (output times {0, 1}). Fitted by least squares to
 //   base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V),
-// V the Krylov vectors the solves touched (their linear iterations + 2; the pages of the
-// others are never touched): every run within 4.3% (most within 1.5%). The terms are what
-// every rank holds whole (the mesh, its partition, the numbering: 535 bytes per cell for
-// F = 1, 4485 for F = 4) and its share of the unknowns (matrices, graphs, multigrid,
-// vectors: 920 bytes per unknown for F = 1, 4646 for F = 4); F = 3 (elasticity) lies on the
-// line between, not measured. The estimate counts the whole Krylov basis (V = "Num Blocks"
-// + 1 for GMRES), as a long solve touches it. Measured at 1 and 2 ranks only: the largest
-// rank's extra (ghost layer, imbalance) is in the per-cell term, which overestimates it on
-// many ranks. A direct solver's fill-in is not counted.
-constexpr double base_bytes = 94e6;                         ///< the program, Trilinos, MPI
-constexpr double mesh_bytes_per_cell[2] = {-782.0, 1317.0}; ///< m0, m1 [bytes]
-constexpr double bytes_per_unknown[2] = {-322.0, 1242.0};   ///< k0, k1 [bytes]
+// V the Krylov vectors the longest solve touched (flexible GMRES: two per iteration, plus
+// 2; the pages of the others are never touched): every run within 4% but the smallest (16^3
+// on one rank, 8%). The terms are what every rank holds whatever the number of ranks (the
+// mesh held whole, its partition and numbering, and what a second rank adds that grows with
+// the mesh: 479 bytes per cell for F = 1, 3182 for F = 4) and its share of the unknowns
+// (matrices, graphs, multigrid, vectors: 554 bytes per unknown for F = 1, 2779 for F = 4);
+// F = 3 (elasticity) lies on the line between, not measured. The estimate counts the whole
+// Krylov basis (V = "Num Blocks" + 1 for GMRES), as a long solve touches it. Measured at 1
+// and 2 ranks only: the largest rank's extra (ghost layer, imbalance) is in the per-cell
+// term, which overestimates it on many ranks. A direct solver's fill-in is not counted.
+constexpr double base_bytes = 94e6;                        ///< the program, Trilinos, MPI
+constexpr double mesh_bytes_per_cell[2] = {-423.0, 901.0}; ///< m0, m1 [bytes]
+constexpr double bytes_per_unknown[2] = {-188.0, 742.0};   ///< k0, k1 [bytes]
 
 /// One value of /proc/self/status ("VmHWM:  1234 kB") [bytes], or -1.
 double proc_status_bytes(const std::string &key)

@@ -35,13 +35,13 @@ TEST(MemoryEstimate, TheMeshIsOnEveryRankTheUnknownsAreShared)
   EXPECT_EQ(one.unknowns(), 4 * 1331);
   EXPECT_DOUBLE_EQ(two.mesh_bytes(), one.mesh_bytes());
   EXPECT_DOUBLE_EQ(two.unknown_bytes(), 0.5 * one.unknown_bytes());
-  // The calibrated figures: 4485 bytes per cell and 4646 per unknown for 4 unknowns per node,
-  // 535 and 920 for one; a Krylov vector is 8 bytes per unknown.
-  EXPECT_NEAR(one.mesh_bytes(), 1000 * 4485.0, 1000 * 1.0);
-  EXPECT_NEAR(one.unknown_bytes(), 4 * 1331 * 4646.0, 4 * 1331 * 1.0);
+  // The calibrated figures: 3182 bytes per cell and 2779 per unknown for 4 unknowns per node,
+  // 479 and 554 for one; a Krylov vector is 8 bytes per unknown.
+  EXPECT_NEAR(one.mesh_bytes(), 1000 * 3182.0, 1000 * 1.0);
+  EXPECT_NEAR(one.unknown_bytes(), 4 * 1331 * 2779.0, 4 * 1331 * 1.0);
   const MemoryEstimate heat(1000, 1331, 1, 0, 1), krylov(1000, 1331, 1, 101, 1);
-  EXPECT_NEAR(heat.mesh_bytes(), 1000 * 535.0, 1000 * 1.0);
-  EXPECT_NEAR(heat.unknown_bytes(), 1331 * 920.0, 1331 * 1.0);
+  EXPECT_NEAR(heat.mesh_bytes(), 1000 * 479.0, 1000 * 1.0);
+  EXPECT_NEAR(heat.unknown_bytes(), 1331 * 554.0, 1331 * 1.0);
   EXPECT_DOUBLE_EQ(krylov.unknown_bytes() - heat.unknown_bytes(), 1331 * 8.0 * 101);
   EXPECT_GT(heat.bytes_per_rank(), 90e6); // the program, Trilinos and MPI
 }
@@ -75,7 +75,7 @@ TEST(MemoryEstimate, Text)
   EXPECT_EQ(kiln::memory_text(4.28e3), "4.28 kB");
   EXPECT_EQ(MemoryEstimate(64, 150, 4, 201, 2).summary(),
             "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
-                " per rank (287 kB for the mesh of 64 cells, held whole on every rank; " +
+                " per rank (204 kB for the mesh of 64 cells, held whole on every rank; " +
                 kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
                 " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
 }

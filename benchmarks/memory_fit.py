@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+"""The calibration of Kiln's memory estimate (src/app/memory_estimate.cpp): runs the contact
+box (inputs/contact-box-close.xml, Thermo-Elasticity with contact, F = 4 unknowns per node) at
+16^3 to 40^3 cells and its heat conduction alone (F = 1) at 24^3 to 64^3 cells, each on 1 and
+2 ranks, to the first backward Euler step (output times {0, 1}), and fits the peak resident
+memory of the largest rank (VmHWM, GNU time's %M) to
+
+    peak = base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V)
+
+by least squares, V the Krylov vectors the longest solve touched (flexible GMRES: 2 per
+iteration, plus 2). It prints every run, the fitted constants and each run's error; copy the
+constants into memory_estimate.cpp (and doc/user-guide.md, *Memory*) if they moved.
+
+    benchmarks/memory_fit.py                 # the whole calibration, about 3 minutes
+    benchmarks/memory_fit.py --kiln build/src/app/kiln
+"""
+import argparse
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy
+
+HERE = pathlib.Path(__file__).resolve().parent.parent
+MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+           "OMPI_MCA_rmaps_base_oversubscribe": "1"}
+CASES = [(4, n) for n in (16, 24, 32, 40)] + [(1, n) for n in (24, 32, 48, 64)]
+
+
+def deck(fields, n, base):
+    """The contact box sized n to t = 1 s; heat conduction alone if fields == 1."""
+    text = (HERE / "inputs/contact-box-close.xml").read_text()
+    text = text.replace('value="{4, 4, 4}"', f'value="{{{n}, {n}, {n}}}"')
+    text = re.sub(r'<Parameter name="Times" type="Array\(double\)" value="\{[^}]*\}"/>',
+                  '<Parameter name="Times" type="Array(double)" value="{0, 1}"/>'
+                  f'<Parameter name="File Base" type="string" value="{base}"/>', text)
+    if fields == 1:
+        text = text.replace('value="Thermo-Elasticity"', 'value="Heat Conduction"')
+        text = re.sub(r'<ParameterList name="Mechanics">.*?\n  </ParameterList>\n', '', text,
+                      flags=re.S)
+        for key in ("Lame Lambda", "Shear Modulus", "Thermal Expansion",
+                    "Reference Temperature"):
+            text = re.sub(rf'\s*<Parameter name="{key}"[^>]*/>', '', text)
+    return text
+
+
+def run(kiln, fields, n, ranks, work):
+    path = pathlib.Path(work) / f"f{fields}_n{n}.xml"
+    path.write_text(deck(fields, n, str(pathlib.Path(work) / f"f{fields}_n{n}_np{ranks}")))
+    command = ["mpirun", "--bind-to", "none", "-np", str(ranks), "/usr/bin/time", "-f",
+               "KILN_PEAK_KB %M", kiln, str(path)]
+    done = subprocess.run(command, capture_output=True, text=True,
+                          env={**os.environ, **MPI_ENV})
+    log = done.stdout + done.stderr
+    if done.returncode != 0:
+        sys.exit(f"memory_fit.py: FAILED: {' '.join(command)}\n{log[-2000:]}")
+    peak = max(int(k) for k in re.findall(r"KILN_PEAK_KB (\d+)", log)) * 1024.0
+    cells = int(re.search(r"mesh: (\d+) cells", log).group(1))
+    unknowns = int(re.search(r"unknowns: (\d+)", log).group(1))
+    longest = max(int(k) for k in re.findall(r"\((\d+) linear\)", log))
+    return {"fields": fields, "n": n, "ranks": ranks, "cells": cells, "unknowns": unknowns,
+            "vectors": 2 * longest + 2, "peak": peak}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--kiln", default=str(HERE / "build/src/app/kiln"))
+    args = parser.parse_args()
+    runs = []
+    with tempfile.TemporaryDirectory() as work:
+        for fields, n in CASES:
+            for ranks in (1, 2):
+                r = run(args.kiln, fields, n, ranks, work)
+                runs.append(r)
+                print(f"F={fields} N={n} np={ranks}: {r['unknowns']} unknowns, longest solve "
+                      f"touching {r['vectors']} vectors, peak {r['peak'] / 1e6:.1f} MB",
+                      flush=True)
+    # peak - 8 V u = base + c m0 + c F m1 + u k0 + u F k1, u the unknowns per rank
+    rows, rhs = [], []
+    for r in runs:
+        c, f, u = r["cells"], r["fields"], r["unknowns"] / r["ranks"]
+        rows.append([1.0, c, c * f, u, u * f])
+        rhs.append(r["peak"] - 8.0 * r["vectors"] * u)
+    x, *_ = numpy.linalg.lstsq(numpy.array(rows), numpy.array(rhs), rcond=None)
+    base, m0, m1, k0, k1 = x
+    print(f"\nbase_bytes = {base / 1e6:.0f}e6")
+    print(f"mesh_bytes_per_cell = {{{m0:.0f}, {m1:.0f}}}  (F = 1: {m0 + m1:.0f}, F = 4: "
+          f"{m0 + 4 * m1:.0f} bytes per cell)")
+    print(f"bytes_per_unknown = {{{k0:.0f}, {k1:.0f}}}  (F = 1: {k0 + k1:.0f}, F = 4: "
+          f"{k0 + 4 * k1:.0f} bytes per unknown)")
+    worst = 0.0
+    for r, row, b in zip(runs, rows, rhs):
+        fit = float(numpy.dot(row, x)) + (r["peak"] - b)
+        error = fit / r["peak"] - 1.0
+        worst = max(worst, abs(error))
+        print(f"  F={r['fields']} N={r['n']} np={r['ranks']}: measured "
+              f"{r['peak'] / 1e6:.1f} MB, fit {fit / 1e6:.1f} MB ({100 * error:+.1f}%)")
+    print(f"largest error {100 * worst:.1f}%")
+
+
+if __name__ == "__main__":
+    main()
