@@ -2,7 +2,7 @@
 """The calibration of Kiln's memory estimate (src/app/memory_estimate.cpp): runs the contact
 box (inputs/contact-box-close.xml, Thermo-Elasticity with contact, F = 4 unknowns per node) at
 16^3 to 40^3 cells and its heat conduction alone (F = 1) at 24^3 to 64^3 cells, each on 1 and
-2 ranks, to the first backward Euler step (output times {0, 1}), and fits the peak resident
+2 ranks, to the first backward Euler step (output at t = 1 s), and fits the peak resident
 memory of the largest rank (VmHWM, GNU time's %M) to
 
     peak = base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V)
@@ -24,6 +24,9 @@ import tempfile
 
 import numpy
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from scaling import deck_box  # noqa: E402  (the contact box sized n, one home)
+
 HERE = pathlib.Path(__file__).resolve().parent.parent
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
            "OMPI_MCA_rmaps_base_oversubscribe": "1"}
@@ -31,12 +34,8 @@ CASES = [(4, n) for n in (16, 24, 32, 40)] + [(1, n) for n in (24, 32, 48, 64)]
 
 
 def deck(fields, n, base):
-    """The contact box sized n to t = 1 s; heat conduction alone if fields == 1."""
-    text = (HERE / "inputs/contact-box-close.xml").read_text()
-    text = text.replace('value="{4, 4, 4}"', f'value="{{{n}, {n}, {n}}}"')
-    text = re.sub(r'<Parameter name="Times" type="Array\(double\)" value="\{[^}]*\}"/>',
-                  '<Parameter name="Times" type="Array(double)" value="{0, 1}"/>'
-                  f'<Parameter name="File Base" type="string" value="{base}"/>', text)
+    """The contact box sized n to t = 1 s (scaling.py's); heat conduction alone if fields == 1."""
+    text = deck_box(n, 1.0, base)
     if fields == 1:
         text = text.replace('value="Thermo-Elasticity"', 'value="Heat Conduction"')
         text = re.sub(r'<ParameterList name="Mechanics">.*?\n  </ParameterList>\n', '', text,

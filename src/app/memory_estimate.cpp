@@ -25,7 +25,7 @@ namespace internal
 // ranks, to the first backward Euler step (output times {0, 1}). Fitted by least squares to
 //   base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V),
 // V the Krylov vectors the longest solve touched (flexible GMRES: two per iteration, plus
-// 2; the pages of the others are never touched): every run within 4% but the smallest (16^3
+// 2; the pages of the others are never touched): every run within 4.5% but the smallest (16^3
 // on one rank, 8%). The terms are what every rank holds whatever the number of ranks (the
 // mesh held whole, its partition and numbering, and what a second rank adds that grows with
 // the mesh: 479 bytes per cell for F = 1, 3182 for F = 4) and its share of the unknowns
