@@ -15,7 +15,7 @@ cd "$work" || exit 1
 log=$work/log.txt
 "$kiln" "$input" >"$log" 2>&1 &
 pid=$!
-for _ in $(seq 1 1200); do # up to 120 s
+for _ in $(seq 1 2400); do # up to 120 s
   if grep -q '^mesh: ' "$log"; then
     size=$(stat -c %s "$log")
     if kill -0 "$pid" 2>/dev/null && [ "$size" -lt 4096 ]; then
@@ -30,7 +30,7 @@ for _ in $(seq 1 1200); do # up to 120 s
   if ! kill -0 "$pid" 2>/dev/null; then
     break
   fi
-  sleep 0.1
+  sleep 0.05
 done
 wait "$pid" 2>/dev/null
 cat "$log"
