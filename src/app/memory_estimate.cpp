@@ -19,24 +19,42 @@ namespace internal
 {
 // Calibrated on the development machine (2 cores, 24 GB; Debian 12, Trilinos 13.2, Open MPI
 // 4.1) by benchmarks/memory_fit.py (2026-11-27, after changelog 0025): the peak resident
-// memory (VmHWM, largest rank) of a run of the contact box of inputs/contact-box-close.xml
-// (Thermo-Elasticity with contact, F = 4 unknowns per node) at 16^3, 24^3, 32^3, 40^3 cells
-// and of its heat conduction alone (F = 1) at 24^3, 32^3, 48^3, 64^3 cells, each on 1 and 2
-// ranks, to the first backward Euler step (output times {0, 1}). Fitted by least squares to
-//   base + cells (m0 + m1 F) + unknowns / ranks (k0 + k1 F + 8 V),
-// V the Krylov vectors the longest solve touched (flexible GMRES: two per iteration, plus
-// 2; the pages of the others are never touched): every run within 4.5% but the smallest (16^3
-// on one rank, 8%). The terms are what every rank holds whatever the number of ranks (the
-// mesh held whole, its partition and numbering, and what a second rank adds that grows with
-// the mesh: 479 bytes per cell for F = 1, 3182 for F = 4) and its share of the unknowns
-// (matrices, graphs, multigrid, vectors: 554 bytes per unknown for F = 1, 2779 for F = 4);
-// F = 3 (elasticity) lies on the line between, not measured. The estimate counts the whole
+// memory (VmHWM, largest rank), on 1 and 2 ranks, of the contact box of
+// inputs/contact-box-close.xml (Thermo-Elasticity with contact, F = 4 unknowns per node) at
+// 16^3, 24^3, 32^3, 40^3 cells and of its heat conduction alone (F = 1) at 24^3, 32^3, 48^3,
+// 64^3 cells, to the first backward Euler step, and of the elastic cube of
+// inputs/elastic-cube.xml (F = 3, CG) at 20^3, 30^3, 40^3 cells. Fitted by least squares to
+//   base + cells m_F + unknowns / ranks (k_F + 8 V),
+// one (m_F, k_F) per F, V the Krylov vectors the longest solve touched (flexible GMRES: two
+// per iteration, plus 2, the pages of the others are never touched; CG: 8): every run within
+// 4.5% but the smallest (16^3 on one rank, 8%). m_F is what every rank holds whatever the
+// number of ranks (the mesh held whole, its partition and numbering, and what a second rank
+// adds that grows with the mesh), k_F its share of the unknowns (matrices, graphs, multigrid,
+// vectors). Another F would take the line through F = 1 and 4. The estimate counts the whole
 // Krylov basis (V = "Num Blocks" + 1 for GMRES), as a long solve touches it. Measured at 1
 // and 2 ranks only: the largest rank's extra (ghost layer, imbalance) is in the per-cell
 // term, which overestimates it on many ranks. A direct solver's fill-in is not counted.
-constexpr double base_bytes = 94e6;                        ///< the program, Trilinos, MPI
-constexpr double mesh_bytes_per_cell[2] = {-423.0, 901.0}; ///< m0, m1 [bytes]
-constexpr double bytes_per_unknown[2] = {-188.0, 742.0};   ///< k0, k1 [bytes]
+constexpr double base_bytes = 94e6; ///< the program, Trilinos, MPI
+
+/// The fitted bytes per cell (m_F) and per unknown (k_F) for F unknowns per node.
+struct PerField
+{
+  int fields;
+  double per_cell, per_unknown;
+};
+constexpr PerField fitted[] = {{1, 480.0, 551.0}, {3, 3100.0, 2052.0}, {4, 3140.0, 2787.0}};
+
+PerField per_field(const int fields)
+{
+  for (const PerField &f : fitted)
+    if (f.fields == fields)
+      return f;
+  // The line through F = 1 and F = 4 (no physics of Kiln has another F today).
+  const PerField &one = fitted[0], &four = fitted[2];
+  const double s = (fields - 1.0) / 3.0;
+  return {fields, one.per_cell + s * (four.per_cell - one.per_cell),
+          one.per_unknown + s * (four.per_unknown - one.per_unknown)};
+}
 
 /// One value of /proc/self/status ("VmHWM:  1234 kB") [bytes], or -1.
 double proc_status_bytes(const std::string &key)
@@ -128,15 +146,12 @@ MemoryEstimate MemoryEstimate::of(const MeshFactory::Counts &counts, const DofLa
 
 double MemoryEstimate::mesh_bytes() const
 {
-  using internal::mesh_bytes_per_cell;
-  return static_cast<double>(cells_) * (mesh_bytes_per_cell[0] + mesh_bytes_per_cell[1] * fields_);
+  return static_cast<double>(cells_) * internal::per_field(fields_).per_cell;
 }
 
 double MemoryEstimate::unknown_bytes() const
 {
-  using internal::bytes_per_unknown;
-  const double per_unknown =
-      bytes_per_unknown[0] + bytes_per_unknown[1] * fields_ + 8.0 * krylov_vectors_;
+  const double per_unknown = internal::per_field(fields_).per_unknown + 8.0 * krylov_vectors_;
   return per_unknown * static_cast<double>(unknowns_) / ranks_;
 }
 
