@@ -78,11 +78,13 @@ TEST(MemoryEstimate, Text)
   EXPECT_EQ(kiln::memory_text(1.234e9), "1.23 GB");
   EXPECT_EQ(kiln::memory_text(3.07e12), "3.07 TB");
   EXPECT_EQ(kiln::memory_text(4.28e3), "4.28 kB");
-  EXPECT_EQ(MemoryEstimate(64, 150, 4, 201, 2).summary(),
-            "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
-                " per rank (201 kB for the mesh of 64 cells, held whole on every rank; " +
-                kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
-                " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
+  EXPECT_EQ(
+      MemoryEstimate(64, 150, 4, 201, 2).summary(),
+      "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
+          " per rank (201 kB on every rank for the 64 cells (the whole mesh, its numbering, the "
+          "ghost layer); " +
+          kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
+          " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
 }
 
 TEST(CheckMemory, ABoxThatCannotFitIsRefusedNamingCells)
