@@ -244,6 +244,10 @@ Assembler::Assembler(const Mesh &mesh, const DofManager &dofs, Couplings couplin
     ghost_row_[i] = ghost_graph_->getRowMap()->getLocalElement(gid);
     owned_column_[i] = owned_graph_->getColMap()->getLocalElement(gid);
   }
+  overlap_lid_.assign(static_cast<std::size_t>(mesh.n_nodes()) * dofs.n_node_fields(), invalid);
+  for (std::size_t i = 0; i < n_overlap; ++i)
+    overlap_lid_[static_cast<std::size_t>(overlap->getGlobalElement(static_cast<LO>(i)))] =
+        static_cast<LO>(i);
   ghost_matrix_ = Teuchos::rcp(new Matrix(ghost_graph_));
   overlap_residual_ = Teuchos::rcp(new Vector(overlap));
 }
@@ -381,7 +385,9 @@ void Assembler::finish(Vector *f, Matrix *J)
 
 LO Assembler::lid(const GO gid) const
 {
-  const LO i = dofs_.overlap_dof_map()->getLocalElement(gid);
+  const LO i = gid >= 0 && static_cast<std::size_t>(gid) < overlap_lid_.size()
+                   ? overlap_lid_[static_cast<std::size_t>(gid)]
+                   : Teuchos::OrdinalTraits<LO>::invalid();
   KILN_ASSERT(i != Teuchos::OrdinalTraits<LO>::invalid(), "unknown " << gid << " not in overlap");
   return i;
 }
