@@ -1,9 +1,9 @@
 #pragma once
 /// Ownership and Tpetra maps for the unknowns of the monolithic system.
 ///
-/// Cells are owned as the partitioner says; a node is owned by the lowest rank
-/// among its cells. With F unknowns per node (DofLayout: 1 for heat conduction
-/// alone, 3 for displacement alone, 4 for both), unknowns by global id:
+/// Cells are owned as the partitioner says; nodes as node_owners() says (the rank
+/// of its cells, or one of two ranks that share it). With F unknowns per node (DofLayout: 1 for
+/// heat conduction alone, 3 for displacement alone, 4 for both), unknowns by global id:
 ///   F n + s          node n, slot s of the node's fields in the order temperature,
 ///                    displacement x, y, z (the fields the layout has: DofLayout::slot)
 /// Owned maps hold this rank's unknowns; overlap maps add those of every node

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <map>
 
 namespace kiln
 {
@@ -104,10 +105,29 @@ std::vector<int> partition_cells_by_block(const Mesh &mesh, const Teuchos::Comm<
 
 std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank)
 {
-  std::vector<int> owner(mesh.n_nodes(), INT_MAX);
+  std::vector<int> low(mesh.n_nodes(), INT_MAX), high(mesh.n_nodes(), -1);
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (const int n : mesh.connectivity[c])
-      owner[n] = std::min(owner[n], cell_rank[c]);
+    {
+      low[n] = std::min(low[n], cell_rank[c]);
+      high[n] = std::max(high[n], cell_rank[c]);
+    }
+  // The nodes that ranks r < s share (their cells' lowest and highest ranks), in id order:
+  // the first half to r, the rest to s.
+  std::map<std::pair<int, int>, std::pair<long long, long long>> shared; // (count, given to r)
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    if (low[n] < high[n])
+      ++shared[{low[n], high[n]}].first;
+  std::vector<int> owner(low);
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    if (low[n] < high[n])
+    {
+      auto &[count, given] = shared[{low[n], high[n]}];
+      if (2 * given < count)
+        ++given;
+      else
+        owner[n] = high[n];
+    }
   return owner;
 }
 } // namespace kiln

@@ -46,11 +46,15 @@ protected:
         mesh(split_box()), cell_rank(kiln::partition_cells(mesh, *comm, "test")),
         dofs(mesh, cell_rank, comm)
   {
-    // Independently of the code: the ranks whose cells touch each node, and the owner (lowest).
+    // Independently of the code: the ranks whose cells touch each node. The owners are
+    // node_owners' (tested in metis_partitioner_test.cpp), each one of those ranks.
     node_ranks.resize(mesh.n_nodes());
     for (int c = 0; c < mesh.n_cells(); ++c)
       for (const int n : mesh.connectivity[c])
         node_ranks[n].insert(cell_rank[c]);
+    node_owner = kiln::node_owners(mesh, cell_rank);
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+      EXPECT_EQ(node_ranks[n].count(node_owner[n]), 1u) << "node " << n;
     // The twins, from the pairs.
     twins.assign(mesh.n_nodes(), -1);
     for (const auto &pair : mesh.gap_pairs)
@@ -71,10 +75,11 @@ protected:
   std::vector<int> cell_rank;
   kiln::DofManager dofs;
   std::vector<std::set<int>> node_ranks;
+  std::vector<int> node_owner;
   std::vector<int> twins;
   std::vector<std::set<int>> overlap_ranks;
 
-  int owner(const int node) const { return *node_ranks[node].begin(); }
+  int owner(const int node) const { return node_owner[node]; }
   bool touched_here(const int node) const { return overlap_ranks[node].count(rank) > 0; }
   std::vector<GO> node_dofs(const int node) const
   {
@@ -132,14 +137,11 @@ protected:
     return layout.contact ? with_twins(base) : base;
   }
 
-  /// The owner of each node under `partition`: the lowest rank among its cells.
+  /// The owner of each node under `partition` (node_owners, tested in
+  /// metis_partitioner_test.cpp).
   std::vector<int> owners(const std::vector<int> &partition) const
   {
-    std::vector<int> result(mesh.n_nodes(), np);
-    for (int c = 0; c < mesh.n_cells(); ++c)
-      for (const int n : mesh.connectivity[c])
-        result[n] = std::min(result[n], partition[c]);
-    return result;
+    return kiln::node_owners(mesh, partition);
   }
 
   /// The number of nodes, summed over ranks, that the twin closure adds to the overlap

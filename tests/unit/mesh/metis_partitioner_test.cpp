@@ -1,7 +1,6 @@
 // Tests src/mesh/metis_partitioner.cpp: the cell partition is valid, identical on every rank and
-// on every call, node owners are the lowest rank around each node, and a mesh with fewer cells
-// than ranks is an InputError on every rank.
-// KILN_TEST_NP: 1 2 3
+// on every call, node owners split the nodes two ranks share (the first half to the lower), and a
+// mesh with fewer cells than ranks is an InputError on every rank. KILN_TEST_NP: 1 2 3
 #include "mesh/metis_partitioner.hpp"
 
 #include "base/errors.hpp"
@@ -17,6 +16,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -73,18 +73,30 @@ void expect_valid_partition(const Mesh &mesh)
   // Deterministic: a second call gives the same partition.
   EXPECT_EQ(kiln::partition_cells(mesh, *comm, "test"), cell_rank);
 
-  // Node owners: the minimum rank over the cells around each node.
+  // Node owners: a node inside one rank's cells is that rank's; the nodes whose cells' lowest
+  // and highest ranks are r < s are split in id order, the first half (rounded up) to r.
   const std::vector<int> owner = kiln::node_owners(mesh, cell_rank);
   ASSERT_EQ(owner.size(), static_cast<std::size_t>(mesh.n_nodes()));
+  std::map<std::pair<int, int>, std::vector<int>> shared; // (r, s) -> the nodes, increasing
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {
-    int lowest = INT_MAX;
+    int lowest = INT_MAX, highest = -1;
     for (int c = 0; c < mesh.n_cells(); ++c)
       if (std::find(mesh.connectivity[c].begin(), mesh.connectivity[c].end(), n) !=
           mesh.connectivity[c].end())
+      {
         lowest = std::min(lowest, cell_rank[c]);
-    EXPECT_EQ(owner[n], lowest) << "node " << n;
+        highest = std::max(highest, cell_rank[c]);
+      }
+    if (lowest == highest)
+      EXPECT_EQ(owner[n], lowest) << "node " << n;
+    else
+      shared[{lowest, highest}].push_back(n);
   }
+  for (const auto &[ranks, nodes] : shared)
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      EXPECT_EQ(owner[nodes[i]], 2 * i < nodes.size() ? ranks.first : ranks.second)
+          << "node " << nodes[i] << ", shared by ranks " << ranks.first << " and " << ranks.second;
 }
 
 TEST(MetisPartitioner, SplitContactBox)
@@ -123,10 +135,22 @@ TEST(MetisPartitioner, NodeOwnersOfAHandMadePartition)
   // generator's x-fastest numbering of the 3 x 2 x 2 nodes).
   const Mesh mesh = box(2, 1, 1);
   const std::vector<int> owner = kiln::node_owners(mesh, {2, 1});
-  const std::vector<int> expected = {2, 1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1};
+  // The four shared nodes: the first two to the lower rank, the other two to the higher.
+  const std::vector<int> expected = {2, 1, 1, 2, 1, 1, 2, 2, 1, 2, 2, 1};
   EXPECT_EQ(owner, expected);
   EXPECT_EQ(kiln::node_owners(mesh, {0, 1}),
-            (std::vector<int>{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}));
+            (std::vector<int>{0, 0, 1, 0, 0, 1, 0, 1, 1, 0, 1, 1}));
+  // 2 x 2 x 2 box, each of its two element blocks (the halves i = 0 and 1 of the cells) on a
+  // rank: the nine nodes 1 + 3 m between them, five to rank 0 (the odd one up), four to 1.
+  const Mesh cube = box(2, 2, 2);
+  std::vector<int> halves(cube.n_cells());
+  for (int c = 0; c < cube.n_cells(); ++c)
+    halves[c] = cube.block_id[c] == cube.block_id[0] ? 0 : 1;
+  ASSERT_EQ(std::count(halves.begin(), halves.end(), 0), 4);
+  std::vector<int> split(27);
+  for (int n = 0; n < 27; ++n)
+    split[n] = n % 3 == 0 ? 0 : n % 3 == 2 ? 1 : n <= 13 ? 0 : 1;
+  EXPECT_EQ(kiln::node_owners(cube, halves), split);
 }
 
 TEST(MetisPartitioner, FewerCellsThanRanksIsRejectedOnEveryRank)
