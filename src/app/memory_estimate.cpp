@@ -180,9 +180,8 @@ std::string MemoryEstimate::summary() const
   std::ostringstream s;
   s << "about " << memory_text(bytes_per_rank()) << " per rank (" << memory_text(mesh_bytes())
     << " on every rank for the " << cells_
-    << " cells (the whole mesh, its numbering, the ghost "
-       "layer); "
-    << memory_text(unknown_bytes()) << " for ";
+    << " cells (the whole mesh, its numbering, the ghost layer); " << memory_text(unknown_bytes())
+    << " for ";
   if (ranks_ > 1)
     s << "1/" << ranks_ << " of ";
   s << "the " << unknowns_ << " unknowns";
