@@ -1,6 +1,7 @@
 // Tests src/mesh/exodus_reader.cpp and exodus_writer.cpp: reading the contact-box Cubit meshes, a
 // write/read round trip, the names, node sets and metres record of a written mesh, and the
-// InputError messages for bad files. KILN_TEST_NP: 1
+// InputError messages for bad files.
+// KILN_TEST_NP: 1
 #include "mesh/exodus_io.hpp"
 
 #include "base/errors.hpp"

@@ -1,6 +1,7 @@
 // Tests src/mesh/metis_partitioner.cpp: the cell partition is valid, identical on every rank and
 // on every call, node owners split the nodes two ranks share (the first half to the lower), and a
-// mesh with fewer cells than ranks is an InputError on every rank. KILN_TEST_NP: 1 2 3
+// mesh with fewer cells than ranks is an InputError on every rank.
+// KILN_TEST_NP: 1 2 3
 #include "mesh/metis_partitioner.hpp"
 
 #include "base/errors.hpp"
