@@ -34,6 +34,14 @@ namespace internal
 /// hierarchy costs less there (doc/solvers.md).
 constexpr long long block_triangular_from = 50000;
 
+/// A block's MueLu list: Kiln's defaults for `equations` unknowns per node (1: temperature,
+/// 3: displacement), then `common` (the MueLu list of both blocks), then `own` (the block's
+/// sublist); the smoother's defaults last. The displacement block is smoothed by Chebyshev
+/// unless `common` or `own` gives a "smoother: type" or "smoother: params" in the input
+/// (an entry not marked as a default).
+Teuchos::ParameterList block_muelu_list(const Teuchos::ParameterList &common,
+                                        const Teuchos::ParameterList &own, int equations);
+
 class BlockSplit;
 
 class BlockTriangularPreconditionerFactory final : public CrsPreconditionerFactory,

@@ -246,3 +246,51 @@ TEST(BlockTriangularPreconditioner, KeepsTheHierarchyOfABlockWhoseValuesAreUncha
   builds(3, 5);
 }
 } // namespace
+
+namespace
+{
+using kiln::internal::block_muelu_list;
+
+std::string smoother(const ParameterList &muelu)
+{
+  return muelu.get<std::string>("smoother: type");
+}
+
+TEST(BlockTriangularPreconditioner,
+     DisplacementBlockIsSmoothedByChebyshevUnlessTheInputSaysOtherwise)
+{
+  const ParameterList none;
+  // Kiln's defaults: Chebyshev with Kiln's defaults for it for the displacements, Gauss-Seidel
+  // for the temperatures.
+  const ParameterList u = block_muelu_list(none, none, 3);
+  EXPECT_EQ(smoother(u), "CHEBYSHEV");
+  EXPECT_EQ(u.sublist("smoother: params").get<int>("chebyshev: degree"), 2);
+  EXPECT_EQ(u.get<int>("number of equations"), 3);
+  const ParameterList t = block_muelu_list(none, none, 1);
+  EXPECT_EQ(smoother(t), "RELAXATION");
+  EXPECT_EQ(t.sublist("smoother: params").get<std::string>("relaxation: type"),
+            "Symmetric Gauss-Seidel");
+
+  // The common list as Kiln's defaults fill it (entries marked as defaults): still Chebyshev.
+  ParameterList defaults;
+  defaults.get("smoother: type", std::string("RELAXATION"));
+  ASSERT_TRUE(defaults.getEntry("smoother: type").isDefault());
+  EXPECT_EQ(smoother(block_muelu_list(defaults, none, 3)), "CHEBYSHEV");
+
+  // A smoother the input names, for both blocks or the displacement block alone, is kept.
+  ParameterList given;
+  given.set("smoother: type", "RELAXATION");
+  const ParameterList from_common = block_muelu_list(given, none, 3);
+  EXPECT_EQ(smoother(from_common), "RELAXATION");
+  EXPECT_EQ(from_common.sublist("smoother: params").get<std::string>("relaxation: type"),
+            "Gauss-Seidel");
+  EXPECT_EQ(smoother(block_muelu_list(none, given, 3)), "RELAXATION");
+  // So are the default smoother's parameters the input sets.
+  ParameterList sweeps;
+  sweeps.sublist("smoother: params").set("relaxation: sweeps", 2);
+  const ParameterList tuned = block_muelu_list(none, sweeps, 3);
+  EXPECT_EQ(smoother(tuned), "RELAXATION");
+  EXPECT_EQ(tuned.sublist("smoother: params").get<int>("relaxation: sweeps"), 2);
+  EXPECT_EQ(smoother(block_muelu_list(sweeps, none, 3)), "RELAXATION");
+}
+} // namespace
