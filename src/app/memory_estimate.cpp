@@ -28,12 +28,14 @@ namespace internal
 // one (m_F, k_F) per F, V the Krylov vectors the longest solve touched (flexible GMRES: two
 // per iteration, plus 2, the pages of the others are never touched; CG: 8): every run within
 // 4.5% but the smallest (16^3 on one rank, 8%). m_F is what every rank holds whatever the
-// number of ranks (the mesh held whole, its partition and numbering, and what a second rank
-// adds that grows with the mesh), k_F its share of the unknowns (matrices, graphs, multigrid,
-// vectors). Another F would take the line through F = 1 and 4. The estimate counts the whole
-// Krylov basis (V = "Num Blocks" + 1 for GMRES), as a long solve touches it. Measured at 1
-// and 2 ranks only: the largest rank's extra (ghost layer, imbalance) is in the per-cell
-// term, which overestimates it on many ranks. A direct solver's fill-in is not counted.
+// number of ranks: mostly what a second rank adds that grows with the mesh (ghost rows,
+// Tpetra's maps and imports: on 2 ranks a rank's heap peaks 12% above half of one rank's,
+// heaptrack, doc/scaling/targets.md), the mesh held whole being a few MB; k_F its share of
+// the unknowns (matrices, graphs, multigrid, vectors). Another F would take the line through F = 1
+// and 4. The estimate counts the whole Krylov basis (V = "Num Blocks" + 1 for GMRES), as a long
+// solve touches it. Measured at 1 and 2 ranks only: the largest rank's extra (ghost layer,
+// imbalance) is in the per-cell term, which overestimates it on many ranks. A direct solver's
+// fill-in is not counted.
 constexpr double base_bytes = 94e6; ///< the program, Trilinos, MPI
 
 /// The fitted bytes per cell (m_F) and per unknown (k_F) for F unknowns per node.
@@ -180,8 +182,8 @@ std::string MemoryEstimate::summary() const
   std::ostringstream s;
   s << "about " << memory_text(bytes_per_rank()) << " per rank (" << memory_text(mesh_bytes())
     << " on every rank for the " << cells_
-    << " cells (the whole mesh, its numbering, the ghost layer); " << memory_text(unknown_bytes())
-    << " for ";
+    << " cells (what more ranks do not divide: ghost rows, maps, the mesh); "
+    << memory_text(unknown_bytes()) << " for ";
   if (ranks_ > 1)
     s << "1/" << ranks_ << " of ";
   s << "the " << unknowns_ << " unknowns";

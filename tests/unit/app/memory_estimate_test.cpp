@@ -81,8 +81,8 @@ TEST(MemoryEstimate, Text)
   EXPECT_EQ(
       MemoryEstimate(64, 150, 4, 201, 2).summary(),
       "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
-          " per rank (201 kB on every rank for the 64 cells (the whole mesh, its numbering, the "
-          "ghost layer); " +
+          " per rank (201 kB on every rank for the 64 cells (what more ranks do not divide: ghost "
+          "rows, maps, the mesh); " +
           kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
           " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
 }
