@@ -4,6 +4,7 @@ and on the elastic cube, on 1 and 2 ranks, and two copies of a one-rank run at o
 
     benchmarks/scaling.py                      # the whole study (long: N = 64 is 1.1 M unknowns)
     benchmarks/scaling.py --box 16 32 --cube 20 40 --end-time 60
+    benchmarks/scaling.py --box 64 --cube --repeat 3   # np 1, np 2, two copies, in turn, 3 rounds
 
 For every run it records, from Kiln's log and its Teuchos timer table (the slowest rank):
 the unknowns, the wall time of the whole process and per step, split into assembly
@@ -130,30 +131,46 @@ def record(case, n, np, work, tag, wall, copies=1):
     return row
 
 
-def run(kiln, case, n, np, args, work, copies=1):
-    """Runs a case (repeat times, keeping the median wall time); `copies` one-rank runs at once."""
-    results = []
+def run_once(kiln, case, n, np, args, work, repeat, copies):
+    """One run of a case on `np` ranks, or `copies` one-rank runs at once: its row."""
+    procs, tags = [], []
+    start = time.perf_counter()
+    for copy in range(copies):
+        tag = f"{case}{n}-np{np}-c{copy}-r{repeat}"
+        deck = work / f"{tag}.xml"
+        base = work / f"{tag}-out"
+        deck.write_text(deck_box(n, args.end_time, base) if case == "box" else deck_cube(n, base))
+        procs.append(launch(kiln, deck, np, work, tag, alone=copies == 1))
+        tags.append(tag)
+    for p in procs:
+        p.wait()
+    wall = time.perf_counter() - start
+    print(f"  {case} N={n} np={np} copies={copies} round {repeat + 1}: {wall:.2f} s", flush=True)
+    return record(case, n, np, work, tags[0], wall, copies)
+
+
+def run(kiln, case, n, args, work):
+    """Every variant of a mesh (each rank count alone, then two one-rank copies at once) in
+    turn, --repeat rounds of them, so that the machine's drift falls on all variants alike
+    (the strong scaling and the efficiency compare them); of each variant the run of median
+    wall time."""
+    variants = [(np, 1) for np in args.np]
+    if not args.no_copies and 1 in args.np:
+        variants.append((1, 2))
+    runs = {variant: [] for variant in variants}
     for repeat in range(args.repeat):
-        procs, tags = [], []
-        start = time.perf_counter()
-        for copy in range(copies):
-            tag = f"{case}{n}-np{np}-c{copy}-r{repeat}"
-            deck = work / f"{tag}.xml"
-            base = work / f"{tag}-out"
-            deck.write_text(deck_box(n, args.end_time, base) if case == "box" else deck_cube(n, base))
-            procs.append(launch(kiln, deck, np, work, tag, alone=copies == 1))
-            tags.append(tag)
-        for p in procs:
-            p.wait()
-        wall = time.perf_counter() - start
-        results.append(record(case, n, np, work, tags[0], wall, copies))
-        print(f"  {case} N={n} np={np} copies={copies}: {wall:.2f} s", flush=True)
-    results.sort(key=lambda r: r["wall_s"])
-    return results[len(results) // 2]
+        for np, copies in variants:
+            runs[(np, copies)].append(run_once(kiln, case, n, np, args, work, repeat, copies))
+    rows = []
+    for variant in variants:
+        ordered = sorted(runs[variant], key=lambda r: r["wall_s"])
+        rows.append(ordered[len(ordered) // 2])
+    return rows
 
 
 def markdown(rows, command, repeat):
-    runs = "one run per case" if repeat == 1 else f"medians of {repeat} runs per case"
+    runs = ("one run per case" if repeat == 1 else
+            f"medians of {repeat} runs per case, the variants of a mesh run in turn")
     lines = ["# Scaling study", "",
              f"Made by `{command}` on {datetime.date.today()} ({platform.node()}, "
              f"{os.cpu_count()} cores); {runs}. Times are the whole "
@@ -253,7 +270,8 @@ def main():
     parser.add_argument("--np", type=int, nargs="*", default=[1, 2])
     parser.add_argument("--end-time", type=float, default=60.0,
                         help="end of the contact box runs [s]; the gap closes at 50-55 s")
-    parser.add_argument("--repeat", type=int, default=1, help="runs per case (median kept)")
+    parser.add_argument("--repeat", type=int, default=1,
+                        help="rounds of every variant of a mesh, run in turn (median kept)")
     parser.add_argument("--no-copies", action="store_true",
                         help="skip the two one-rank copies run at once")
     parser.add_argument("--kiln", default=str(HERE / "build/src/app/kiln"))
@@ -266,10 +284,7 @@ def main():
         work = pathlib.Path(tmp)
         for case, sizes in (("box", args.box), ("cube", args.cube)):
             for n in sizes:
-                for np in args.np:
-                    rows.append(run(args.kiln, case, n, np, args, work))
-                if not args.no_copies and 1 in args.np:
-                    rows.append(run(args.kiln, case, n, 1, args, work, copies=2))
+                rows.extend(run(args.kiln, case, n, args, work))
     with open(out / "runs.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()

@@ -16,8 +16,10 @@ packages=(
   clang-format
   # tools/kiln-diff and the gold-file regression tests:
   python3-h5py python3-numpy
-  # the verification report (doc/verification/report.py):
+  # the verification report (doc/verification/report.py) and benchmarks/scaling.py's plots:
   python3-matplotlib
+  # GNU time, for the peak memory per rank in benchmarks/scaling.py (and its smoke test):
+  time
 )
 
 missing=()
