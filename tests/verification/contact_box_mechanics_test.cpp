@@ -329,7 +329,10 @@ open_box_displacements(const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const std::string path = inputs + "contact-box-open.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  set_solver_tolerances(input, 1e-12, 1e-12, 1e-13);
+  // |F| of this deck's first steps levels off at 1.3-1.4e-12 (rounding, on 1 and 2 ranks):
+  // an absolute tolerance of 1e-12 is below it; 3e-12 changes u by far less than the 1e-9
+  // compared.
+  set_solver_tolerances(input, 3e-12, 1e-12, 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
   kiln::CoupledProblem &problem = sim.problem();

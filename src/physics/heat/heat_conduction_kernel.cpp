@@ -6,8 +6,9 @@
 
 namespace kiln
 {
-HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel conductivity)
-    : rho_c_(rho_c), conductivity_(std::move(conductivity))
+HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel conductivity,
+                                           const Capacity capacity)
+    : rho_c_(rho_c), capacity_(capacity), conductivity_(std::move(conductivity))
 {
 }
 
@@ -16,6 +17,7 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
                                     LocalSystem &local) const
 {
   constexpr int T_field = static_cast<int>(Field::T);
+  const bool lumped = capacity_ == Capacity::lumped;
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     double T = 0.0;
@@ -35,14 +37,20 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
     {
       const double phi_i = fe.shape(i, q);
       const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
-      local.residual(T_field, i) += (rho_c_ * T_dot * phi_i + k * grad_T_dot_grad_phi_i) * JxW;
+      // The capacity term: at the point (consistent) or at the node (lumped by rows' sums).
+      const double T_dot_capacity = lumped ? T_dot_nodes[i] : T_dot;
+      local.residual(T_field, i) +=
+          (rho_c_ * T_dot_capacity * phi_i + k * grad_T_dot_grad_phi_i) * JxW;
       if (!local.has_jacobian())
         continue;
       for (int j = 0; j < fe.n_shape(); ++j)
+      {
+        const double capacity_j = lumped ? (i == j ? phi_i : 0.0) : fe.shape(j, q) * phi_i;
         local.jacobian(T_field, i, T_field, j) +=
-            (rho_c_ * dTdot_dT * fe.shape(j, q) * phi_i + k * dot(fe.grad(j, q), fe.grad(i, q)) +
+            (rho_c_ * dTdot_dT * capacity_j + k * dot(fe.grad(j, q), fe.grad(i, q)) +
              dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
             JxW;
+      }
     }
   }
 }
