@@ -13,6 +13,8 @@ packages=(
   openmpi-bin libopenmpi-dev
   libexodusii-dev libnetcdf-dev
   libgtest-dev
+  # formulas in x, y, z, t (src/base/expression):
+  libmuparser-dev
   clang-format
   # tools/kiln-diff and the gold-file regression tests:
   python3-h5py python3-numpy

@@ -59,6 +59,26 @@ std::vector<std::unique_ptr<BoundaryCondition>> read_boundary_conditions(
   return conditions;
 }
 
+NodalConstraintValues::NodalConstraintValues(const Mesh &mesh, NodalConstraints &constraints,
+                                             const std::string &name, const TimeFunction &f)
+    : mesh_(mesh), constraints_(constraints), name_(name), f_(f)
+{
+  if (!f_.varies_in_space())
+  {
+    const TimeFunction g = f_;
+    shared_ = constraints_.add_value(name_, [g](const double t) { return g.value(t); });
+  }
+}
+
+int NodalConstraintValues::at(const int node)
+{
+  if (shared_ >= 0)
+    return shared_;
+  const TimeFunction g = f_;
+  const Point x = mesh_.coordinates[node];
+  return constraints_.add_value(name_, [g, x](const double t) { return g.value(t, x); });
+}
+
 TimeFunction required_time_function(const BoundaryConditionInput &input, const std::string &name,
                                     const std::string &example)
 {
@@ -68,6 +88,21 @@ TimeFunction required_time_function(const BoundaryConditionInput &input, const s
                        << "\"; give it as a sublist, e.g. <ParameterList name=\"" << name
                        << "\"><Parameter name=\"Value\" type=\"double\" value=\"" << example
                        << "\"/></ParameterList>");
-  return TimeFunction(input.params.sublist(name), input.path + "/" + name);
+  TimeFunction f(input.params.sublist(name), input.path + "/" + name);
+  if (f.varies_in_space())
+  {
+    // The formula at every node of the condition's faces at t = 0: finite, or an InputError
+    // at --check rather than a NaN in the first step.
+    std::vector<Point> points;
+    for (const int id : input.side_sets)
+    {
+      const SideSet &set = *input.mesh.find_side_set(id);
+      for (int s = 0; s < set.n_sides(); ++s)
+        for (const int i : hex_face_nodes[set.faces[s]])
+          points.push_back(input.mesh.coordinates[input.mesh.connectivity[set.cells[s]][i]]);
+    }
+    f.check_finite(points, 0.0, input.path + "/" + name);
+  }
+  return f;
 }
 } // namespace kiln

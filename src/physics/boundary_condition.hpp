@@ -82,6 +82,24 @@ std::vector<std::unique_ptr<BoundaryCondition>> read_boundary_conditions(
     const BoundaryConditionRegistry &registry, const Teuchos::ParameterList &list, const Mesh &mesh,
     const InteriorFaceCheck &interior, const std::string &where, const std::string &gap_note);
 
+/// The constraint values of a condition's function f: one value shared by every node when f
+/// does not vary in space, else one per node, f(t, x_node) (x the node's reference position).
+class NodalConstraintValues
+{
+public:
+  NodalConstraintValues(const Mesh &mesh, NodalConstraints &constraints, const std::string &name,
+                        const TimeFunction &f);
+  /// The index of the value at `node` (NodalConstraints::add_value).
+  int at(int node);
+
+private:
+  const Mesh &mesh_;
+  NodalConstraints &constraints_;
+  std::string name_;
+  TimeFunction f_;
+  int shared_ = -1; ///< the one value of a function constant in space
+};
+
 /// The time function `name` of a condition, which its Type requires: InputError naming
 /// it, with an example sublist whose value is `example`, if the input lacks it.
 TimeFunction required_time_function(const BoundaryConditionInput &input, const std::string &name,

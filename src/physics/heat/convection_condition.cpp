@@ -34,6 +34,6 @@ ConvectionCondition::ConvectionCondition(const BoundaryConditionInput &input)
 
 void ConvectionCondition::evaluate(const FaceState &state, LocalSystem &local) const
 {
-  ConvectionKernel(coefficient_).evaluate(state.fv, state.T, ambient_.value(state.time), local);
+  ConvectionKernel(coefficient_).evaluate(state.fv, state.T, ValueAt(ambient_, state.time), local);
 }
 } // namespace kiln

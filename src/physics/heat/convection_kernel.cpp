@@ -5,7 +5,7 @@
 namespace kiln
 {
 void ConvectionKernel::evaluate(const FaceValues &fv, const std::array<double, 4> &T_nodes,
-                                const double T_ambient, LocalSystem &local) const
+                                const ValueAt &T_ambient_at, LocalSystem &local) const
 {
   constexpr int T_field = static_cast<int>(Field::T);
   for (int q = 0; q < fv.n_qpoints(); ++q)
@@ -14,6 +14,7 @@ void ConvectionKernel::evaluate(const FaceValues &fv, const std::array<double, 4
     for (int j = 0; j < fv.n_shape(); ++j)
       T += fv.shape(j, q) * T_nodes[j];
     const double JxW = fv.JxW(q);
+    const double T_ambient = T_ambient_at(fv.quadrature_point(q));
     for (int i = 0; i < fv.n_shape(); ++i)
     {
       local.residual(T_field, i) += h_ * (T - T_ambient) * fv.shape(i, q) * JxW;

@@ -2,6 +2,7 @@
 /// Convective heat loss through a boundary face.
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/materials/time_function.hpp"
 
 #include <array>
 
@@ -21,7 +22,7 @@ public:
   explicit ConvectionKernel(double coefficient) : h_(coefficient) {}
 
   /// T [K] at the face nodes, T_ambient [K]; adds [W] and [W/K].
-  void evaluate(const FaceValues &fv, const std::array<double, 4> &T, double T_ambient,
+  void evaluate(const FaceValues &fv, const std::array<double, 4> &T, const ValueAt &T_ambient,
                 LocalSystem &local) const;
 
 private:

@@ -26,6 +26,6 @@ HeatFluxCondition::HeatFluxCondition(const BoundaryConditionInput &input)
 
 void HeatFluxCondition::evaluate(const FaceState &state, LocalSystem &local) const
 {
-  HeatFluxKernel::evaluate(state.fv, flux_.value(state.time), local);
+  HeatFluxKernel::evaluate(state.fv, ValueAt(flux_, state.time), local);
 }
 } // namespace kiln

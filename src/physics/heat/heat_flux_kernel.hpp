@@ -2,6 +2,7 @@
 /// A prescribed heat flux into the body through a boundary face.
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/materials/time_function.hpp"
 
 namespace kiln
 {
@@ -14,7 +15,7 @@ namespace kiln
 class HeatFluxKernel final
 {
 public:
-  /// q [W/m^2]; adds [W].
-  static void evaluate(const FaceValues &fv, double q, LocalSystem &local);
+  /// q [W/m^2] at each Gauss point (a constant or a function of space); adds [W].
+  static void evaluate(const FaceValues &fv, const ValueAt &q, LocalSystem &local);
 };
 } // namespace kiln

@@ -38,10 +38,11 @@ void RadiationCondition::evaluate(const FaceState &state, LocalSystem &local) co
   const FaceValues &fv = state.fv;
   const int T_field = state.slots.T;
   const double eps_sigma = emissivity_ * stefan_boltzmann;
-  const double T_amb = ambient_.value(state.time);
-  const double T_amb4 = T_amb * T_amb * T_amb * T_amb;
+  const ValueAt ambient(ambient_, state.time);
   for (int q = 0; q < fv.n_qpoints(); ++q)
   {
+    const double T_amb = ambient(fv.quadrature_point(q));
+    const double T_amb4 = T_amb * T_amb * T_amb * T_amb;
     double T = 0.0;
     for (int j = 0; j < fv.n_shape(); ++j)
       T += fv.shape(j, q) * state.T[j];

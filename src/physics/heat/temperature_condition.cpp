@@ -23,9 +23,8 @@ TemperatureCondition::TemperatureCondition(const BoundaryConditionInput &input)
 
 void TemperatureCondition::add_constraints(const Mesh &mesh, NodalConstraints &constraints) const
 {
-  const TimeFunction temperature = temperature_;
-  const int value =
-      constraints.add_value(name(), [temperature](const double t) { return temperature.value(t); });
-  for_each_node(mesh, [&](const int node) { constraints.constrain_temperature(node, value); });
+  NodalConstraintValues values(mesh, constraints, name(), temperature_);
+  for_each_node(mesh,
+                [&](const int node) { constraints.constrain_temperature(node, values.at(node)); });
 }
 } // namespace kiln

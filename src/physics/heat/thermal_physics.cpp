@@ -6,6 +6,8 @@
 #include "physics/heat/gap_conductance_kernel.hpp"
 #include "physics/heat/thermal_conditions.hpp"
 
+#include <cmath>
+
 namespace kiln
 {
 Teuchos::ParameterList ThermalPhysics::valid_parameters()
@@ -13,6 +15,11 @@ Teuchos::ParameterList ThermalPhysics::valid_parameters()
   Teuchos::ParameterList p("Thermal");
   p.set("Initial Temperature", 298.0, "the uniform initial temperature, must be > 0 [K]",
         positive_double_validator());
+  p.set("Initial Temperature Expression", "",
+        "the initial temperature as a formula in x, y, z [m] (the reference coordinates, after "
+        "any Coordinate Scale), e.g. \"300 + 50*x\", instead of Initial Temperature; must be "
+        "finite and > 0 at every node; \"\": none (muparser's syntax, as Type \"Expression\" "
+        "of a boundary value) [K]");
   p.set("Capacity", "Lumped",
         "the heat-capacity matrix: \"Lumped\" (rows' sums on the diagonal: no temperature "
         "below the initial after a thermal shock; with backward Euler none outside the data's "
@@ -44,10 +51,40 @@ Teuchos::ParameterList ThermalPhysics::valid_parameters()
   return p;
 }
 
+namespace
+{
+/// Initial Temperature Expression, checked at every node; none if not given.
+std::shared_ptr<const Expression> read_initial_field(const Teuchos::ParameterList &thermal,
+                                                     const Mesh &mesh, const std::string &where)
+{
+  const std::string text = thermal.get<std::string>("Initial Temperature Expression");
+  if (!given_in_input(thermal, "Initial Temperature Expression"))
+    return nullptr;
+  const std::string path = where + "/\"Initial Temperature Expression\"";
+  KILN_CHECK_INPUT(!given_in_input(thermal, "Initial Temperature"), path,
+                   "and \"Initial Temperature\" are both given; remove one");
+  auto field = std::make_shared<const Expression>(text, path);
+  KILN_CHECK_INPUT(!field->depends_on_time(), path,
+                   "= \"" << text << "\" names t; the initial temperature is at t = 0: use "
+                              "x, y, z only");
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+  {
+    const Point &x = mesh.coordinates[n];
+    const double T = (*field)(x[0], x[1], x[2], 0.0);
+    KILN_CHECK_INPUT(std::isfinite(T) && T > 0.0, path,
+                     "= \"" << text << "\" is " << T << " K at node " << n + 1 << " ("
+                             << x[0] << ", " << x[1] << ", " << x[2]
+                             << ") m; it must be finite and > 0 at every node");
+  }
+  return field;
+}
+} // namespace
+
 ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Material &material,
                                const Mesh &mesh, const DofLayout &layout,
                                const InteriorFaceCheck &interior, const std::string &where)
     : initial_temperature_(thermal.get<double>("Initial Temperature")),
+      initial_field_(read_initial_field(thermal, mesh, where)),
       conduction_(material.heat_capacity(), material.conductivity(),
                   thermal.get<std::string>("Capacity") == "Consistent"
                       ? HeatConductionKernel::Capacity::consistent

@@ -31,8 +31,14 @@ public:
                  const DofLayout &layout, const InteriorFaceCheck &interior,
                  const std::string &where);
 
-  /// The initial temperature [K].
+  /// The initial temperature [K] where no formula is given (Initial Temperature).
   double initial_temperature() const { return initial_temperature_; }
+  /// The initial temperature at x [m] (reference position) [K]: Initial Temperature, or the
+  /// formula of Initial Temperature Expression.
+  double initial_temperature(const Point &x) const
+  {
+    return initial_field_ ? (*initial_field_)(x[0], x[1], x[2], 0.0) : initial_temperature_;
+  }
   /// k at the initial temperature [W/(m K)], the scale of the heat rows.
   double conductivity_scale() const;
   const HeatConductionKernel &conduction() const { return conduction_; }
@@ -44,6 +50,7 @@ public:
 
 private:
   double initial_temperature_;
+  std::shared_ptr<const Expression> initial_field_; ///< Initial Temperature Expression, or none
   HeatConductionKernel conduction_;
   std::unique_ptr<InterfaceKernel> gap_;
   std::vector<std::unique_ptr<BoundaryCondition>> conditions_;

@@ -6,6 +6,8 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
 
+#include <cmath>
+
 namespace kiln
 {
 Teuchos::ParameterList TimeFunction::valid_parameters()
@@ -14,8 +16,9 @@ Teuchos::ParameterList TimeFunction::valid_parameters()
   p.set("Type", "Constant",
         "\"Constant\": f = Value; \"Smooth Step\": from Start Value at Start Time to End Value "
         "at End Time, y0 + (y1 - y0) s^2 (3 - 2 s) in between; \"Table\": piecewise linear "
-        "through (Times, Values), constant beyond the ends",
-        choice_validator({"Constant", "Smooth Step", "Table"}));
+        "through (Times, Values), constant beyond the ends; \"Expression\": a formula in x, y, "
+        "z [m] and t [s] (Expression)",
+        choice_validator({"Constant", "Smooth Step", "Table", "Expression"}));
   p.set("Value", 0.0, "f for Type \"Constant\" [unit of the quantity: K for a temperature]");
   p.set("Start Time", 0.0, "x0 for Type \"Smooth Step\": f = Start Value for t <= x0 [s]");
   p.set("End Time", 1.0,
@@ -31,6 +34,11 @@ Teuchos::ParameterList TimeFunction::valid_parameters()
         "for Type \"Table\": f at each of Times, as many as Times [unit of the quantity: K for "
         "a temperature]",
         double_array_validator(0));
+  p.set("Expression", "0",
+        "for Type \"Expression\": f as a formula in x, y, z (the point's reference coordinates "
+        "[m]) and t [s], e.g. \"1 + x + 2*y + 3*z\" or \"300 + 10*sin(pi*t/60)\"; operators "
+        "+ - * / ^, functions such as sin, cos, exp, log, sqrt, abs, min, max, constant pi "
+        "(muparser) [unit of the quantity: K for a temperature]");
   return p;
 }
 
@@ -50,6 +58,12 @@ TimeFunction::TimeFunction(const Teuchos::ParameterList &p, const std::string &w
     KILN_CHECK_INPUT(times_[1] > times_[0], where + "/\"End Time\"",
                      "= " << times_[1] << " must be > \"Start Time\" = " << times_[0]
                           << "; for a sudden change use Type \"Table\" with two close times");
+  }
+  else if (type == "Expression")
+  {
+    kind_ = Kind::expression;
+    expression_ = std::make_shared<const Expression>(p.get<std::string>("Expression"),
+                                                     where + "/\"Expression\"");
   }
   else
   {
@@ -87,7 +101,25 @@ double TimeFunction::value(const double t) const
   }
   case Kind::table:
     return table_.value(t);
+  case Kind::expression:
+    KILN_ASSERT(!expression_->depends_on_space(), "value(t) of a function of space");
+    return (*expression_)(0.0, 0.0, 0.0, t);
   }
   return values_[0];
+}
+
+void TimeFunction::check_finite(const std::vector<Point> &points, const double t,
+                                const std::string &where) const
+{
+  if (kind_ != Kind::expression)
+    return;
+  for (const Point &x : points)
+  {
+    const double f = value(t, x);
+    KILN_CHECK_INPUT(std::isfinite(f), where + "/\"Expression\"",
+                     "= \"" << expression_->text() << "\" is " << f << " at (" << x[0] << ", "
+                             << x[1] << ", " << x[2] << ") m, t = " << t
+                             << " s; give a formula that is finite wherever it applies");
+  }
 }
 } // namespace kiln

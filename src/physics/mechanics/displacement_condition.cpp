@@ -48,9 +48,7 @@ DisplacementCondition::DisplacementCondition(const BoundaryConditionInput &input
 
 void DisplacementCondition::add_constraints(const Mesh &mesh, NodalConstraints &constraints) const
 {
-  const TimeFunction displacement = displacement_;
-  const int value = constraints.add_value(name(), [displacement](const double t)
-                                          { return displacement.value(t); });
+  NodalConstraintValues values(mesh, constraints, name(), displacement_);
   for (const int id : side_sets())
   {
     const SideSet &set = *mesh.find_side_set(id);
@@ -61,6 +59,7 @@ void DisplacementCondition::add_constraints(const Mesh &mesh, NodalConstraints &
         const int node = mesh.connectivity[set.cells[s]][i];
         if (seen[node]++)
           continue;
+        const int value = values.at(node);
         for (const int c : components_)
         {
           Point e{};

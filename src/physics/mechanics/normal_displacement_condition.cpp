@@ -31,9 +31,7 @@ NormalDisplacementCondition::NormalDisplacementCondition(const BoundaryCondition
 void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
                                                   NodalConstraints &constraints) const
 {
-  const TimeFunction displacement = displacement_;
-  const int value = constraints.add_value(name(), [displacement](const double t)
-                                          { return displacement.value(t); });
+  NodalConstraintValues values(mesh, constraints, name(), displacement_);
   FaceValues fv;
   for (const int id : side_sets())
   {
@@ -59,7 +57,7 @@ void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
       const double length = std::sqrt(dot(n, n));
       for (double &x : n)
         x /= length;
-      constraints.constrain_direction(node, n, value);
+      constraints.constrain_direction(node, n, values.at(node));
     }
   }
 }

@@ -14,12 +14,13 @@ void TractionKernel::evaluate(const FaceValues &fv, const Point &traction, const
     }
 }
 
-void TractionKernel::evaluate_pressure(const FaceValues &fv, const double pressure,
+void TractionKernel::evaluate_pressure(const FaceValues &fv, const ValueAt &pressure_at,
                                        const int u_slot, LocalSystem &local)
 {
   for (int q = 0; q < fv.n_qpoints(); ++q)
   {
     const Point &normal = fv.normal(q);
+    const double pressure = pressure_at(fv.quadrature_point(q));
     for (int i = 0; i < fv.n_shape(); ++i)
     {
       const double phi_i_JxW = fv.shape(i, q) * fv.JxW(q);

@@ -2,6 +2,7 @@
 /// A prescribed load on a boundary face of the solid: a traction vector or a pressure.
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
+#include "physics/materials/time_function.hpp"
 #include "mesh/mesh.hpp"
 
 namespace kiln
@@ -21,7 +22,7 @@ public:
   /// t [Pa] (a fixed direction); adds [N].
   static void evaluate(const FaceValues &fv, const Point &traction, int u_slot, LocalSystem &local);
   /// p [Pa] (p > 0 compresses); adds [N].
-  static void evaluate_pressure(const FaceValues &fv, double pressure, int u_slot,
+  static void evaluate_pressure(const FaceValues &fv, const ValueAt &pressure, int u_slot,
                                 LocalSystem &local);
 };
 } // namespace kiln

@@ -399,6 +399,35 @@ TEST(HeatFluxKernel, TotalIsMinusFluxTimesArea)
     EXPECT_EQ(v, 0.0);
 }
 
+TEST(HeatFluxKernel, FluxVaryingInSpaceIsIntegratedAtTheGaussPoints)
+{
+  // q = a + b.x on a unit square in the plane z = 0: ∫ q φ_i is exact at 2x2 Gauss points
+  // (a bilinear integrand), ∫ q φ_0 over [0,1]^2 with φ_0 = (1-x)(1-y):
+  // a/4 + b_x/12 + b_y/12; the total is a + (b_x + b_y)/2.
+  Teuchos::ParameterList user;
+  user.set("Type", "Expression");
+  user.set("Expression", "100 + 12*x - 24*y");
+  const kiln::TimeFunction q(kiln::validated(user, kiln::TimeFunction::valid_parameters(), "in.xml",
+                                             "Kiln/q"),
+                             "in.xml: Kiln/q");
+  kiln::FaceValues fv;
+  fv.reinit(parallelogram({1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 0.0}));
+  kiln::LocalSystem local(4, 1);
+  kiln::HeatFluxKernel::evaluate(fv, kiln::ValueAt(q, 0.0), local);
+  double sum = 0.0;
+  for (int i = 0; i < 4; ++i)
+    sum += local.residual(0, i);
+  EXPECT_NEAR(sum, -(100.0 + (12.0 - 24.0) / 2), 1e-12);
+  // Each node (X, Y) in {0, 1}^2: ∫ q φ = a/4 + b_x (1 + X)/12 + b_y (1 + Y)/12.
+  for (int i = 0; i < 4; ++i)
+  {
+    const double X = quad_corner[i][0], Y = quad_corner[i][1];
+    EXPECT_NEAR(local.residual(0, i), -(100.0 / 4 + 12.0 * (1 + X) / 12 - 24.0 * (1 + Y) / 12),
+                1e-12)
+        << "node " << i;
+  }
+}
+
 TEST(GapConductanceKernel, EqualTemperaturesGiveExactlyZero)
 {
   kiln::FaceValues fv;

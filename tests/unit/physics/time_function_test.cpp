@@ -138,3 +138,56 @@ TEST(TimeFunction, EmptyTableAndUnknownTypeAreRejectedByValidation)
   EXPECT_THAT(e, HasSubstr("\"Constant\""));
   EXPECT_THAT(e, HasSubstr("\"Smooth Step\""));
 }
+
+// --- Type "Expression": a formula in x, y, z, t ------------------------------------------------
+
+namespace
+{
+Teuchos::ParameterList expression(const std::string &text)
+{
+  Teuchos::ParameterList p;
+  p.set("Type", "Expression");
+  p.set("Expression", text);
+  return p;
+}
+} // namespace
+
+TEST(TimeFunction, ExpressionOfSpaceAndTime)
+{
+  const kiln::TimeFunction f = make(expression("1 + x + 2*y + 3*z + 0.5*t^2"));
+  EXPECT_TRUE(f.varies_in_space());
+  EXPECT_DOUBLE_EQ(f.value(2.0, {0.1, 0.2, 0.3}), 1 + 0.1 + 0.4 + 0.9 + 2.0);
+  EXPECT_DOUBLE_EQ(f.value(0.0, {-1.0, 0.0, 2.0}), 6.0);
+  // Copies share the formula and give the same values.
+  const kiln::TimeFunction g = f;
+  EXPECT_DOUBLE_EQ(g.value(1.0, {1.0, 1.0, 1.0}), 7.5);
+  EXPECT_DOUBLE_EQ(f.value(1.0, {0.0, 0.0, 0.0}), 1.5);
+}
+
+TEST(TimeFunction, ExpressionOfTimeAloneIsAFunctionOfTime)
+{
+  const kiln::TimeFunction f = make(expression("300 + 10*sin(pi*t/60)"));
+  EXPECT_FALSE(f.varies_in_space());
+  EXPECT_NEAR(f.value(30.0), 310.0, 1e-12);
+  EXPECT_NEAR(f.value(30.0, {5.0, 6.0, 7.0}), 310.0, 1e-12);
+  // ValueAt: a function of time is evaluated once, at any point the same.
+  const kiln::ValueAt at(f, 30.0);
+  EXPECT_NEAR(at({1.0, 2.0, 3.0}), 310.0, 1e-12);
+  const kiln::TimeFunction g = make(expression("x*t"));
+  const kiln::ValueAt varying(g, 2.0); // holds g by address: g outlives it
+  EXPECT_DOUBLE_EQ(varying({3.0, 0.0, 0.0}), 6.0);
+}
+
+TEST(TimeFunction, ExpressionErrorsNameTheParameter)
+{
+  EXPECT_THAT(error_of(expression("1 + (x")),
+              HasSubstr(where + "/\"Expression\": = \"1 + (x\" cannot be read: Missing parenthesis"));
+  EXPECT_THAT(error_of(expression("2*temperature")),
+              HasSubstr("\"temperature\" is not a variable or function Kiln knows"));
+  EXPECT_THAT(error_of(expression("  ")), HasSubstr("is empty; give a formula in x, y, z"));
+  const kiln::TimeFunction f = make(expression("1/(x - 1)"));
+  EXPECT_THAT(kiln_test::input_error_message(
+                  [&] { f.check_finite({{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0.0, where); }),
+              HasSubstr("= \"1/(x - 1)\" is inf at (1, 0, 0) m, t = 0 s"));
+  EXPECT_NO_THROW(f.check_finite({{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}}, 0.0, where));
+}
