@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "physics/mechanics/free_motions.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -40,6 +41,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
                                                     where + "/Mechanics/Contact");
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
+  if (mechanics_)
+    check_free_motions(mechanics, where + "/Mechanics");
 
   // What couples in the Jacobian, and what this rank assembles.
   Couplings couplings;
@@ -81,6 +84,28 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 }
 
 CoupledProblem::~CoupledProblem() = default;
+
+void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
+                                        const std::string &where)
+{
+  const FreeMotions free(mesh_, dofs_, constraints_, interface_ != nullptr);
+  if (free.empty())
+    return;
+  KILN_CHECK_INPUT(
+      mechanics.get<std::string>("Free Motions") == "Minimum Norm", where,
+      "the displacement conditions leave rigid motions free, so the displacement is not "
+      "determined: "
+          << free.description() << ". Add a displacement condition that holds "
+          << (free.size() == 1 ? "it" : "them")
+          << " (Type \"Normal Displacement\" or \"Displacement\" on a face of the body), or "
+             "set Kiln/Mechanics/\"Free Motions\" = \"Minimum Norm\" for the displacement "
+             "with no component in them (doc/mechanics.md, \"Free motions\")"
+          << (interface_ ? "; contact across the gap holds the two sides together along "
+                           "its normal only"
+                         : ""));
+  free_motions_ = free.basis();
+  free_motion_names_ = free.names();
+}
 
 void CoupledProblem::set_log(Teuchos::RCP<Teuchos::FancyOStream> out)
 {

@@ -54,6 +54,12 @@ public:
     return hints_->near_null_space();
   }
   Teuchos::RCP<const Vector> unknown_scale() const override { return hints_->unknown_scale(); }
+  /// With Mechanics/"Free Motions" = "Minimum Norm": the free rigid motions (FreeMotions).
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions() const override
+  {
+    return free_motions_;
+  }
+  std::vector<std::string> free_motion_names() const override { return free_motion_names_; }
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
@@ -108,6 +114,9 @@ public:
   const NodalConstraints &constraints() const { return constraints_; }
 
 private:
+  /// The free rigid motions (FreeMotions): an InputError naming them unless Mechanics/"Free
+  /// Motions" is "Minimum Norm", which keeps them for the solver. Collective.
+  void check_free_motions(const Teuchos::ParameterList &mechanics, const std::string &where);
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With contact: the assembled rows at x and the decision, unless taken at x already.
@@ -131,5 +140,7 @@ private:
   std::unique_ptr<ResidualTerms> terms_;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_;
+  std::vector<std::string> free_motion_names_;
 };
 } // namespace kiln
