@@ -141,8 +141,45 @@ TEST(DirectPreconditioner, ASingularJacobianEndsTheRunOnEveryRank)
   }
   EXPECT_THAT(message, testing::StartsWith("the Direct preconditioner could not factor the "
                                            "Jacobian (Amesos2 KLU2: "));
-  EXPECT_THAT(message, testing::HasSubstr("set Kiln/Solver/Linear Solver/\"Preconditioner "
-                                          "Type\" to \"MueLu\""));
+  EXPECT_THAT(message, testing::HasSubstr("hold it with a displacement condition"));
+  EXPECT_EQ(factory.factorizations(), 0);
+}
+
+TEST(DirectPreconditioner, AJacobianSingularToRoundOffIsRefused)
+{
+  // The 1D Laplacian with free ends (a body held by nothing: the constant is its null
+  // vector), made regular by 1e-15 on the end diagonals: KLU2 factors it without complaint
+  // (pivots of 1e-15), and the condition estimate (about 1e17) refuses it.
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  std::vector<GO> gids;
+  for (GO i = comm->getRank(); i < n_rows; i += comm->getSize())
+    gids.push_back(i);
+  const auto map =
+      rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), gids, 0, comm));
+  auto J = rcp(new Matrix(map, 3));
+  for (const GO i : gids)
+  {
+    const bool end = i == 0 || i + 1 == n_rows;
+    J->insertGlobalValues(i, Teuchos::tuple<GO>(i), Teuchos::tuple(end ? 1.0 + 1e-15 : 2.0));
+    if (i > 0)
+      J->insertGlobalValues(i, Teuchos::tuple<GO>(i - 1), Teuchos::tuple(-1.0));
+    if (i + 1 < n_rows)
+      J->insertGlobalValues(i, Teuchos::tuple<GO>(i + 1), Teuchos::tuple(-1.0));
+  }
+  J->fillComplete();
+  DirectPreconditionerFactory factory;
+  const auto prec = factory.createPrec();
+  std::string message = "no RunError";
+  try
+  {
+    factory.initializePrec(source(J), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  }
+  catch (const kiln::RunError &e)
+  {
+    message = e.what();
+  }
+  EXPECT_THAT(message, testing::HasSubstr("the factors are singular to working precision, a "
+                                          "condition number of at least "));
   EXPECT_EQ(factory.factorizations(), 0);
 }
 } // namespace
