@@ -223,8 +223,13 @@ std::vector<RigidMotion> FreeMotionFinder::find(const Teuchos::Comm<int> &comm) 
   const int N = 6 * n_bodies();
   std::vector<double> A(normal_.size(), 0.0);
   if (N > 0)
+  {
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(A.size()), normal_.data(),
                        A.data());
+    // Rank 0's sums on every rank, to the last bit: every rank then finds the same motions
+    // (and throws the same error, or none).
+    Teuchos::broadcast(comm, 0, static_cast<int>(A.size()), A.data());
+  }
   const auto [values, vectors] = symmetric_eigen(A, N);
   const double largest = values.empty() ? 0.0 : values.back();
   std::vector<Coefficients> null;

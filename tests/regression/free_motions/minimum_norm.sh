@@ -3,9 +3,10 @@
 # whose z translation is free (compress-x.xml): with the Direct preconditioner (the default
 # at this size) and with MueLu under GMRES, on 1 and 2 ranks, the run completes, the mean
 # z displacement is zero (the solution has no component in the free motion), u_x is
-# Truchas' -1e-4 (x + 0.5) m, and the runs agree with each other (kiln-diff; Direct np 1 and
-# np 2: displacement to 1e-15 m, stress to 1e-3 Pa of the 2.7e6 Pa; MueLu to its Krylov
-# tolerance, 1e-11 m and 1 Pa). The same deck with a traction on z = +0.5
+# -1e-4 (x + 0.5) m (what Truchas' test-stretch-contact.py compares), and the runs agree
+# with each other (kiln-diff; Direct np 1 and np 2: displacement to 1e-15 m, stress to
+# 1e-3 Pa of the 2.7e6 Pa; MueLu to its Krylov tolerance, 1e-11 m and 1 Pa). The same deck
+# with a traction on z = +0.5
 # (a net force along the free translation) has no solution: exit 2 and a message naming
 # the force and the motion.
 # usage: minimum_norm.sh KILN MPIEXEC COMPRESS-X.xml KILN-DIFF
