@@ -149,18 +149,6 @@ std::string point(const Point &p, const double zero)
   return "(" + number(p[0], zero) + ", " + number(p[1], zero) + ", " + number(p[2], zero) + ")";
 }
 
-/// "x", "y", "z" for a coordinate axis (either sense), else the unit vector.
-std::string direction(Point d)
-{
-  const double length = std::sqrt(dot(d, d));
-  for (double &x : d)
-    x /= length;
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(std::abs(d[k]) - 1.0) < 1e-9)
-      return std::string(1, static_cast<char>('x' + k));
-  return point(d, 1e-9);
-}
-
 /// The unit vector of an axis, its first non-zero component positive: "(0, 0, 1)".
 std::string axis(Point d)
 {
@@ -175,6 +163,19 @@ std::string axis(Point d)
   for (double &x : d)
     x *= sign;
   return point(d, 1e-9);
+}
+
+/// "x", "y", "z" for a coordinate axis (either sense), else the unit vector (either sense:
+/// its first non-zero component positive).
+std::string direction(Point d)
+{
+  const double length = std::sqrt(dot(d, d));
+  for (double &x : d)
+    x /= length;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::abs(d[k]) - 1.0) < 1e-9)
+      return std::string(1, static_cast<char>('x' + k));
+  return axis(d);
 }
 } // namespace
 
@@ -279,7 +280,13 @@ std::vector<RigidMotion> FreeMotionFinder::find(const Teuchos::Comm<int> &comm) 
     // motion found in S without a part in the free translations.
     std::vector<Coefficients> w_span;
     for (const Coefficients &v : S)
-      add_if_independent({v[6 * b + 3], v[6 * b + 4], v[6 * b + 5]}, w_span);
+    {
+      // S's columns have unit length: a rotation part below 1e-6 is round-off of a
+      // translation (a rotated mesh leaves 1e-12 and more), not a rotation.
+      const Coefficients w{v[6 * b + 3], v[6 * b + 4], v[6 * b + 5]};
+      if (norm(w) > 1e-6)
+        add_if_independent(w, w_span);
+    }
     std::vector<Point> w_points;
     for (const Coefficients &w : w_span)
       w_points.push_back({w[0], w[1], w[2]});

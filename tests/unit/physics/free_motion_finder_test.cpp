@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,38 @@ TEST(FreeMotionFinder, RollersOnTwoFacesLeaveTheTranslationNormalToBoth)
   for (const Point &p : square(1, 0.0))
     add.direction(0, p, {0, 1, 0});
   EXPECT_EQ(described(finder), std::vector<std::string>{"translation along z"});
+}
+
+TEST(FreeMotionFinder, ARotatedConfigurationNamesTheRotatedDirections)
+{
+  // Two bodies of a rotated box (the contact box's Phi = 45, Theta = -30 frame), each held
+  // on its end face along the box's x' and on its y' face along y', the gap between them
+  // along x': each body's translation along z' is free, alone (the round-off of the rotated
+  // rows must not read as a rotation).
+  const double c = std::sqrt(0.5), s3 = std::sqrt(3.0) / 2.0;
+  const Point ex{c * s3, c * s3, -0.5}, ey{-c, c, 0.0}, ez{c * 0.5, c * 0.5, s3};
+  const auto at = [&](const double x, const double y, const double z)
+  {
+    return Point{x * ex[0] + y * ey[0] + z * ez[0], x * ex[1] + y * ey[1] + z * ez[1],
+                 x * ex[2] + y * ey[2] + z * ez[2]};
+  };
+  FreeMotionFinder finder({{at(-0.5, 0, 0), 1.7}, {at(0.5, 0, 0), 1.7}});
+  Adder add{finder};
+  for (const double y : {-0.5, 0.5})
+    for (const double z : {-0.5, 0.5})
+    {
+      add.direction(0, at(-1, y, z), ex);
+      add.direction(1, at(1, y, z), ex);
+      add.gap(0, 1, at(0, y, z), ex);
+    }
+  for (const double x : {-1.0, -0.5, 0.0})
+    for (const double z : {-0.5, 0.5})
+    {
+      add.direction(0, at(x, -0.5, z), ey);
+      add.direction(1, at(-x, -0.5, z), ey);
+    }
+  const std::string z_prime = "translation along (0.353553, 0.353553, 0.866025)";
+  EXPECT_EQ(described(finder), (std::vector<std::string>{z_prime, z_prime}));
 }
 
 TEST(FreeMotionFinder, RollersOnThreeFacesHoldEverything)
