@@ -177,6 +177,103 @@ std::string direction(Point d)
       return std::string(1, static_cast<char>('x' + k));
   return axis(d);
 }
+
+/// The smallest combination c of the motions S (of body b alone) whose rotation part R c is
+/// w: c = R^T (R R^T)^+ w, R the 3 x k rotation rows of S, the pseudo-inverse of R R^T by its
+/// eigenvalues.
+Coefficients combination_rotating_by(const std::vector<Coefficients> &S, const int b,
+                                     const Point &w)
+{
+  const int k = static_cast<int>(S.size());
+  std::vector<Coefficients> rows(3, Coefficients(k));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < k; ++j)
+      rows[i][j] = S[j][6 * b + 3 + i];
+  std::vector<double> RRt(9, 0.0);
+  for (int i = 0; i < 3; ++i)
+    for (int l = 0; l < 3; ++l)
+      for (int j = 0; j < k; ++j)
+        RRt[l * 3 + i] += rows[i][j] * rows[l][j];
+  const auto [lambda, e] = symmetric_eigen(RRt, 3);
+  Point y{};
+  for (int m = 0; m < 3; ++m)
+    if (lambda[m] > 1e-10 * std::max(lambda[2], 1e-300))
+    {
+      const double projection = e[m][0] * w[0] + e[m][1] * w[1] + e[m][2] * w[2];
+      for (int i = 0; i < 3; ++i)
+        y[i] += e[m][i] * projection / lambda[m];
+    }
+  Coefficients c(k, 0.0);
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < 3; ++i)
+      c[j] += rows[i][j] * y[i];
+  return c;
+}
+
+/// The motions of body b alone in the null space `null` (orthonormal, N = 6 x bodies rows),
+/// readable: its translations (coordinate axes first), then its rotations (about axes
+/// parallel to coordinate axes where possible), each without a part in its translations.
+std::vector<Coefficients> motions_of_body(const std::vector<Coefficients> &null, const int b,
+                                          const int N)
+{
+  std::vector<Coefficients> basis;
+  std::vector<int> other_rows, rotation_rows;
+  for (int r = 0; r < N; ++r)
+    if (r / 6 != b)
+      other_rows.push_back(r);
+  for (int k = 3; k < 6; ++k)
+    rotation_rows.push_back(6 * b + k);
+  // The motions of body b alone: S, orthonormal.
+  std::vector<Coefficients> S;
+  for (const Coefficients &c : combinations_vanishing_on(null, other_rows))
+  {
+    Coefficients v = combine(null, c);
+    for (const int r : other_rows)
+      v[r] = 0.0;
+    S.push_back(std::move(v));
+  }
+  if (S.empty())
+    return basis;
+  // Its translations: readable directions of their span.
+  std::vector<Point> translations;
+  for (const Coefficients &c : combinations_vanishing_on(S, rotation_rows))
+  {
+    const Coefficients v = combine(S, c);
+    translations.push_back({v[6 * b], v[6 * b + 1], v[6 * b + 2]});
+  }
+  std::vector<Coefficients> translation_vectors;
+  for (const Point &a : readable_basis(translations))
+  {
+    Coefficients v(N, 0.0);
+    std::copy(a.begin(), a.end(), v.begin() + 6 * b);
+    translation_vectors.push_back(v);
+    basis.push_back(v);
+  }
+  // Its rotations: the rotation parts of S orthonormalized, made readable, and each one's
+  // motion found in S without a part in the free translations.
+  std::vector<Coefficients> w_span;
+  for (const Coefficients &v : S)
+  {
+    // S's columns have unit length: a rotation part below 1e-6 is round-off of a
+    // translation (a rotated mesh leaves 1e-12 and more), not a rotation.
+    const Coefficients w{v[6 * b + 3], v[6 * b + 4], v[6 * b + 5]};
+    if (norm(w) > 1e-6)
+      add_if_independent(w, w_span);
+  }
+  std::vector<Point> w_points;
+  for (const Coefficients &w : w_span)
+    w_points.push_back({w[0], w[1], w[2]});
+  for (const Point &w : readable_basis(w_points))
+  {
+    const Coefficients c = combination_rotating_by(S, b, w);
+    Coefficients v = orthogonal_part(combine(S, c), translation_vectors);
+    const double length = norm(v);
+    for (double &x : v)
+      x /= length;
+    basis.push_back(std::move(v));
+  }
+  return basis;
+}
 } // namespace
 
 FreeMotionFinder::FreeMotionFinder(std::vector<Body> bodies)
@@ -243,89 +340,8 @@ std::vector<RigidMotion> FreeMotionFinder::find(const Teuchos::Comm<int> &comm) 
   // A readable basis of the same space (orthonormal in the unknowns (a, w L)).
   std::vector<Coefficients> basis;
   for (int b = 0; b < n_bodies(); ++b)
-  {
-    std::vector<int> other_rows, rotation_rows;
-    for (int r = 0; r < N; ++r)
-      if (r / 6 != b)
-        other_rows.push_back(r);
-    for (int k = 3; k < 6; ++k)
-      rotation_rows.push_back(6 * b + k);
-    // The motions of body b alone: S, orthonormal.
-    std::vector<Coefficients> S;
-    for (const Coefficients &c : combinations_vanishing_on(null, other_rows))
-    {
-      Coefficients v = combine(null, c);
-      for (const int r : other_rows)
-        v[r] = 0.0;
-      S.push_back(std::move(v));
-    }
-    if (S.empty())
-      continue;
-    // Its translations: readable directions of their span.
-    std::vector<Point> translations, rotations;
-    for (const Coefficients &c : combinations_vanishing_on(S, rotation_rows))
-    {
-      const Coefficients v = combine(S, c);
-      translations.push_back({v[6 * b], v[6 * b + 1], v[6 * b + 2]});
-    }
-    std::vector<Coefficients> translation_vectors;
-    for (const Point &a : readable_basis(translations))
-    {
-      Coefficients v(N, 0.0);
-      std::copy(a.begin(), a.end(), v.begin() + 6 * b);
-      translation_vectors.push_back(v);
-      basis.push_back(v);
-    }
-    // Its rotations: the rotation parts of S orthonormalized, made readable, and each one's
-    // motion found in S without a part in the free translations.
-    std::vector<Coefficients> w_span;
-    for (const Coefficients &v : S)
-    {
-      // S's columns have unit length: a rotation part below 1e-6 is round-off of a
-      // translation (a rotated mesh leaves 1e-12 and more), not a rotation.
-      const Coefficients w{v[6 * b + 3], v[6 * b + 4], v[6 * b + 5]};
-      if (norm(w) > 1e-6)
-        add_if_independent(w, w_span);
-    }
-    std::vector<Point> w_points;
-    for (const Coefficients &w : w_span)
-      w_points.push_back({w[0], w[1], w[2]});
-    for (const Point &w : readable_basis(w_points))
-    {
-      // c with (rotation part of S c) = w: least squares by the normal equations of S's
-      // rotation rows (k_b x k_b, regular on the complement of the translations).
-      const int k = static_cast<int>(S.size());
-      std::vector<Coefficients> rows(3, Coefficients(k));
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < k; ++j)
-          rows[i][j] = S[j][6 * b + 3 + i];
-      // Minimum-norm c: c = R^T (R R^T)^{-1} w, R = rows (3 x k), through the pseudo-inverse
-      // of R R^T by its eigenvalues.
-      std::vector<double> RRt(9, 0.0);
-      for (int i = 0; i < 3; ++i)
-        for (int l = 0; l < 3; ++l)
-          for (int j = 0; j < k; ++j)
-            RRt[l * 3 + i] += rows[i][j] * rows[l][j];
-      const auto [lambda, e] = symmetric_eigen(RRt, 3);
-      Point y{};
-      for (int m = 0; m < 3; ++m)
-        if (lambda[m] > 1e-10 * std::max(lambda[2], 1e-300))
-        {
-          const double projection = e[m][0] * w[0] + e[m][1] * w[1] + e[m][2] * w[2];
-          for (int i = 0; i < 3; ++i)
-            y[i] += e[m][i] * projection / lambda[m];
-        }
-      Coefficients c(k, 0.0);
-      for (int j = 0; j < k; ++j)
-        for (int i = 0; i < 3; ++i)
-          c[j] += rows[i][j] * y[i];
-      Coefficients v = orthogonal_part(combine(S, c), translation_vectors);
-      const double length = norm(v);
-      for (double &x : v)
-        x /= length;
+    for (Coefficients &v : motions_of_body(null, b, N))
       basis.push_back(std::move(v));
-    }
-  }
   // The motions of several bodies together: first the rigid motions of each group of bodies
   // that gaps join (A couples them) as one, where free; then what is still not spanned.
   std::vector<Coefficients> orthonormal;
