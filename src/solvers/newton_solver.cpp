@@ -374,6 +374,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
   Impl &s = *impl_;
   const internal::JacobianReuse::Counts before = s.reuse->counts();
+  const int unconverged_before = s.starting_guess->unconverged;
 
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
   // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
@@ -455,6 +456,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   result.linear_iterations =
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
+  result.linear_failures = s.starting_guess->unconverged - unconverged_before;
   const internal::JacobianReuse::Counts &after = s.reuse->counts();
   result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
   result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
