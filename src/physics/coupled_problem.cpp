@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <sstream>
 
 namespace kiln
 {
@@ -88,7 +89,8 @@ CoupledProblem::~CoupledProblem() = default;
 void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
                                         const std::string &where)
 {
-  const FreeMotions free(mesh_, dofs_, constraints_, interface_ != nullptr);
+  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, interface_ != nullptr);
+  const FreeMotions &free = *free_;
   if (free.empty())
     return;
   KILN_CHECK_INPUT(
@@ -255,6 +257,30 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
     return;
   decide(x);
   contact_->monitor().step_accepted(time, contact_->active());
+  check_open_gap(time);
+}
+
+void CoupledProblem::check_open_gap(const double time)
+{
+  std::vector<FreeMotions::HoldingPair> holding;
+  const auto &owned = interface_->owned_pairs();
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (contact_->active()[i])
+    {
+      const ContactInterface::Pair &pair = interface_->pairs()[owned[i]];
+      holding.push_back({pair.a, pair.b, pair.normal});
+    }
+  const std::string free = free_->more_free_with(holding);
+  if (free.empty())
+    return;
+  std::ostringstream message;
+  message << "at t = " << time
+          << " s the gap is open where only contact held a body, so the displacement is not "
+             "determined (the solution found is one of many): "
+          << free
+          << ". Hold the body with a displacement condition (doc/mechanics.md, \"Free "
+             "motions\")";
+  throw RunError(message.str());
 }
 
 int CoupledProblem::resume(const double time, const Vector &x)

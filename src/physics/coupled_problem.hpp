@@ -8,6 +8,7 @@
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "physics/heat/thermal_physics.hpp"
+#include "physics/mechanics/free_motions.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
 #include "physics/residual_terms.hpp"
@@ -117,6 +118,9 @@ private:
   /// The free rigid motions (FreeMotions): an InputError naming them unless Mechanics/"Free
   /// Motions" is "Minimum Norm", which keeps them for the solver. Collective.
   void check_free_motions(const Teuchos::ParameterList &mechanics, const std::string &where);
+  /// With contact, at an accepted state: a RunError if the pairs not in contact leave a body
+  /// free that the set-up counted as held by them (the result would be arbitrary). Collective.
+  void check_open_gap(double time);
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With contact: the assembled rows at x and the decision, unless taken at x already.
@@ -140,7 +144,8 @@ private:
   std::unique_ptr<ResidualTerms> terms_;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
-  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_;
+  std::unique_ptr<FreeMotions> free_;                            ///< with mechanics
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
 };
 } // namespace kiln

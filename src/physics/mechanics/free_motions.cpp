@@ -115,18 +115,19 @@ RigidMotion unit_motion(RigidMotion motion)
 
 FreeMotions::FreeMotions(const Mesh &mesh, const DofManager &dofs,
                          const NodalConstraints &constraints, const bool contact)
-    : mesh_(mesh), dofs_(dofs), constraints_(constraints), finder_({})
+    : mesh_(mesh), dofs_(dofs), constraints_(constraints), conditions_({}), finder_({})
 {
   const MeshBodies bodies = mesh_bodies(mesh);
   body_ = bodies.body;
   BodyGeometry geometry = body_geometry(mesh, dofs, body_, bodies.count);
   summary_ = std::move(geometry.summary);
-  finder_ = FreeMotionFinder(std::move(geometry.bodies));
+  conditions_ = FreeMotionFinder(std::move(geometry.bodies));
   const int rank = dofs.owned_dof_map()->getComm()->getRank();
   for (const int n : dofs.owned_nodes())
     if (body_[n] >= 0)
       for (const NodalConstraints::Direction &d : constraints.directions(n))
-        finder_.add_direction(body_[n], mesh.coordinates[n], d.n);
+        conditions_.add_direction(body_[n], mesh.coordinates[n], d.n);
+  finder_ = conditions_;
   if (contact)
     for (const GapPair &pair : mesh.gap_pairs)
       if (dofs.node_owner()[pair.node_a] == rank)
@@ -144,13 +145,22 @@ std::vector<std::string> FreeMotions::names() const
   return names;
 }
 
-std::string FreeMotions::description() const
+std::string FreeMotions::more_free_with(const std::vector<HoldingPair> &holding) const
+{
+  FreeMotionFinder finder = conditions_;
+  for (const HoldingPair &pair : holding)
+    finder.add_gap(body_[pair.a], body_[pair.b], mesh_.coordinates[pair.a], pair.normal);
+  const std::vector<RigidMotion> motions = finder.find(*dofs_.owned_dof_map()->getComm());
+  return motions.size() > motions_.size() ? description(motions) : "";
+}
+
+std::string FreeMotions::description(const std::vector<RigidMotion> &motions) const
 {
   std::string text;
   const int n_bodies = finder_.n_bodies();
   std::vector<std::vector<std::string>> of_body(n_bodies);
   std::vector<std::string> together;
-  for (const RigidMotion &m : motions_)
+  for (const RigidMotion &m : motions)
   {
     const std::vector<int> moved = finder_.bodies_moved(m);
     if (moved.size() == 1)

@@ -33,7 +33,20 @@ public:
   std::vector<std::string> names() const;
   /// What is free, body by body: "body 1 of 2 (element block 1, the cells between (0, 0, 0)
   /// and (1, 1, 1)): translation along z; ...".
-  std::string description() const;
+  std::string description() const { return description(motions_); }
+
+  /// A gap pair (mesh nodes a and b) that holds the two sides along its normal n.
+  struct HoldingPair
+  {
+    int a = -1;
+    int b = -1;
+    Point normal{};
+  };
+  /// With contact: the free motions, as description() gives them, when only the pairs
+  /// `holding` hold (this rank's share, each pair on one rank: those in contact), or "" if
+  /// they leave no more free than all the pairs do (the set-up's motions). An open gap can
+  /// leave a body that only contact holds free. Collective.
+  std::string more_free_with(const std::vector<HoldingPair> &holding) const;
   /// The motions in the unknowns of the DofManager's layout, one column each: T = 0 and
   /// û = Q^T r(x) at each owned node (the nodal frames of `constraints`), with r of unit
   /// translation or unit rotation: so that v.F is the net force [N] along a free translation
@@ -41,12 +54,15 @@ public:
   Teuchos::RCP<Tpetra::MultiVector<double>> basis() const;
 
 private:
+  std::string description(const std::vector<RigidMotion> &motions) const;
+
   const Mesh &mesh_;
   const DofManager &dofs_;
   const NodalConstraints &constraints_;
   std::vector<int> body_;            ///< per mesh node, its body or -1
   std::vector<std::string> summary_; ///< per body: blocks and extent
-  FreeMotionFinder finder_;
+  FreeMotionFinder conditions_;      ///< the displacement conditions' rows only
+  FreeMotionFinder finder_;          ///< and the gap's with contact
   std::vector<RigidMotion> motions_;
 };
 } // namespace kiln
