@@ -110,7 +110,10 @@ void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::R
   // The first step of BDF2 is backward Euler (TimeStepper).
   const bool bdf2 = run_.method == "BDF2" && state.accepted >= 2;
   std::ostringstream solve;
-  solve << "Newton " << newton.newton_iterations << " (" << newton.linear_iterations << " linear)";
+  solve << "Newton " << newton.newton_iterations << " (" << newton.linear_iterations << " linear";
+  if (newton.linear_failures > 0)
+    solve << ", " << newton.linear_failures << " short of tolerance";
+  solve << ")";
   if (run_.terminal)
   {
     std::ostringstream line;
@@ -155,6 +158,7 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   out << "steps repeated after Newton failed: " << stats.newton_failures << "\n";
   out << "Newton iterations: " << stats.newton_iterations << "\n";
   out << "linear iterations: " << stats.linear_iterations << "\n";
+  out << "linear solves short of their tolerance: " << stats.linear_failures << "\n";
   out << "Jacobians assembled in this run: " << stats.jacobians_evaluated << "\n";
   out << "Jacobians kept in this run: " << stats.jacobians_kept << "\n";
   out << "preconditioners built in this run: " << stats.preconditioners_built << "\n";

@@ -437,8 +437,11 @@ NewtonSolver::Result Simulation::equilibrate()
                         : "; a body free to move as a rigid body stops it too: check that "
                           "Kiln/Mechanics/Boundary Conditions hold every rigid-body motion"));
   *out_ << "initial equilibrium: Newton " << r.newton_iterations << " (" << r.linear_iterations
-        << " linear), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm
-        << " -> " << r.final_residual_norm << std::defaultfloat << "\n";
+        << " linear"
+        << (r.linear_failures > 0 ? ", " + std::to_string(r.linear_failures) + " short of tolerance"
+                                  : std::string())
+        << "), |F| " << std::scientific << std::setprecision(3) << r.initial_residual_norm << " -> "
+        << r.final_residual_norm << std::defaultfloat << "\n";
   problem_->step_accepted(0.0, *solution_);
   return r;
 }

@@ -9,6 +9,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace kiln
@@ -70,6 +71,17 @@ public:
   {
     return Teuchos::null;
   }
+  /// Optional: a basis of the rigid motions the problem leaves free, one column each, in the
+  /// unknowns x: its Jacobian's null space on both sides (J v = 0 and v^T J = 0), and F(x + v t)
+  /// = F(x). The solver then gives the solution with no component in them and refuses a
+  /// residual whose part along them does not vanish (a net force along a free motion: no
+  /// solution). Default: none.
+  virtual Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions() const
+  {
+    return Teuchos::null;
+  }
+  /// Optional: each free motion in words ("translation along z"), for messages.
+  virtual std::vector<std::string> free_motion_names() const { return {}; }
   /// Optional: the scale c of every unknown. The solver then works on x̂ = x / c with the
   /// rows multiplied by c (F̂ = c F, Ĵ = diag(c) J diag(c)), so that fields of different
   /// units reach the Krylov solver and the multigrid with comparable rows and unknowns;

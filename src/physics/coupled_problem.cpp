@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "physics/mechanics/free_motions.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <sstream>
 
 namespace kiln
 {
@@ -40,6 +42,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
                                                     where + "/Mechanics/Contact");
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
+  if (mechanics_)
+    check_free_motions(mechanics, where + "/Mechanics");
 
   // What couples in the Jacobian, and what this rank assembles.
   Couplings couplings;
@@ -81,6 +85,29 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 }
 
 CoupledProblem::~CoupledProblem() = default;
+
+void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
+                                        const std::string &where)
+{
+  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, interface_ != nullptr);
+  const FreeMotions &free = *free_;
+  if (free.empty())
+    return;
+  KILN_CHECK_INPUT(
+      mechanics.get<std::string>("Free Motions") == "Minimum Norm", where,
+      "the displacement conditions leave rigid motions free, so the displacement is not "
+      "determined: "
+          << free.description() << ". Add a displacement condition that holds "
+          << (free.size() == 1 ? "it" : "them")
+          << " (Type \"Normal Displacement\" or \"Displacement\" on a face of the body), or "
+             "set Kiln/Mechanics/\"Free Motions\" = \"Minimum Norm\" for the displacement "
+             "with no component in them (doc/mechanics.md, \"Free motions\")"
+          << (interface_ ? "; contact across the gap holds the two sides together along "
+                           "its normal only"
+                         : ""));
+  free_motions_ = free.basis();
+  free_motion_names_ = free.names();
+}
 
 void CoupledProblem::set_log(Teuchos::RCP<Teuchos::FancyOStream> out)
 {
@@ -230,6 +257,30 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
     return;
   decide(x);
   contact_->monitor().step_accepted(time, contact_->active());
+  check_open_gap(time);
+}
+
+void CoupledProblem::check_open_gap(const double time)
+{
+  std::vector<FreeMotions::HoldingPair> holding;
+  const auto &owned = interface_->owned_pairs();
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (contact_->active()[i])
+    {
+      const ContactInterface::Pair &pair = interface_->pairs()[owned[i]];
+      holding.push_back({pair.a, pair.b, pair.normal});
+    }
+  const std::string free = free_->more_free_with(holding);
+  if (free.empty())
+    return;
+  std::ostringstream message;
+  message << "at t = " << time
+          << " s the gap is open where only contact held a body, so the displacement is not "
+             "determined (the solution found is one of many): "
+          << free
+          << ". Hold the body with a displacement condition (doc/mechanics.md, \"Free "
+             "motions\")";
+  throw RunError(message.str());
 }
 
 int CoupledProblem::resume(const double time, const Vector &x)

@@ -8,6 +8,7 @@
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
 #include "physics/heat/thermal_physics.hpp"
+#include "physics/mechanics/free_motions.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
 #include "physics/residual_terms.hpp"
@@ -54,6 +55,12 @@ public:
     return hints_->near_null_space();
   }
   Teuchos::RCP<const Vector> unknown_scale() const override { return hints_->unknown_scale(); }
+  /// With Mechanics/"Free Motions" = "Minimum Norm": the free rigid motions (FreeMotions).
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions() const override
+  {
+    return free_motions_;
+  }
+  std::vector<std::string> free_motion_names() const override { return free_motion_names_; }
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
@@ -108,6 +115,12 @@ public:
   const NodalConstraints &constraints() const { return constraints_; }
 
 private:
+  /// The free rigid motions (FreeMotions): an InputError naming them unless Mechanics/"Free
+  /// Motions" is "Minimum Norm", which keeps them for the solver. Collective.
+  void check_free_motions(const Teuchos::ParameterList &mechanics, const std::string &where);
+  /// With contact, at an accepted state: a RunError if the pairs not in contact leave a body
+  /// free that the set-up counted as held by them (the result would be arbitrary). Collective.
+  void check_open_gap(double time);
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With contact: the assembled rows at x and the decision, unless taken at x already.
@@ -131,5 +144,8 @@ private:
   std::unique_ptr<ResidualTerms> terms_;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
+  std::unique_ptr<FreeMotions> free_;                            ///< with mechanics
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
+  std::vector<std::string> free_motion_names_;
 };
 } // namespace kiln

@@ -56,6 +56,14 @@ public:
     return problem_->near_null_space();
   }
   Teuchos::RCP<const Vector> unknown_scale() const override { return problem_->unknown_scale(); }
+  Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions() const override
+  {
+    return problem_->free_motions();
+  }
+  std::vector<std::string> free_motion_names() const override
+  {
+    return problem_->free_motion_names();
+  }
   void set_time_derivative(double time, double a, const Vector &b) override;
   Teuchos::RCP<const Vector> time_error_mask() const override
   {

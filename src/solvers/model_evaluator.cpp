@@ -17,9 +17,9 @@ using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
 ModelEvaluator::ModelEvaluator(RCP<NonlinearProblem> problem,
                                RCP<const NonlinearProblem::Vector> scale,
                                RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory,
-                               RCP<JacobianReuse> reuse)
+                               RCP<JacobianReuse> reuse, RCP<FreeMotionPins> pins)
     : problem_(std::move(problem)), scale_(std::move(scale)), W_factory_(std::move(W_factory)),
-      reuse_(reuse.assert_not_null()),
+      reuse_(reuse.assert_not_null()), pins_(std::move(pins)),
       space_(Thyra::createVectorSpace<double>(problem_->solution_map()))
 {
   if (!scale_.is_null())
@@ -46,10 +46,13 @@ bool ModelEvaluator::jacobian_with(const std::vector<double> &smooth) const
 
 void ModelEvaluator::scale_jacobian(NonlinearProblem::Matrix &J) const
 {
-  if (scale_.is_null())
-    return;
-  J.leftScale(*scale_);
-  J.rightScale(*scale_);
+  if (!scale_.is_null())
+  {
+    J.leftScale(*scale_);
+    J.rightScale(*scale_);
+  }
+  if (!pins_.is_null())
+    pins_->pin(J);
 }
 
 RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_x_space() const
@@ -134,6 +137,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
   }
   if (!f.is_null() && !scale_.is_null())
     f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
+  if (!f.is_null() && !pins_.is_null())
+    pins_->residual(*f);
 }
 } // namespace internal
 } // namespace kiln

@@ -7,6 +7,7 @@
 /// F̂(x̂) = c F(c x̂), Ŵ = diag(c) J diag(c). W is evaluated only when JacobianReuse says the
 /// matrix does not hold the Jacobian at x already.
 #include "discretization/nonlinear_problem.hpp"
+#include "solvers/free_motion_pins.hpp"
 #include "solvers/jacobian_reuse.hpp"
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
@@ -19,11 +20,12 @@ namespace internal
 class ModelEvaluator final : public Thyra::StateFuncModelEvaluatorBase<double>
 {
 public:
-  /// `scale`: c, or null for none.
+  /// `scale`: c, or null for none. `pins`: the free motions' pins (FreeMotionPins), or null
+  /// for none: Ŵ pinned after scaling, F̂'s pin rows zeroed.
   ModelEvaluator(Teuchos::RCP<NonlinearProblem> problem,
                  Teuchos::RCP<const NonlinearProblem::Vector> scale,
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory,
-                 Teuchos::RCP<JacobianReuse> reuse);
+                 Teuchos::RCP<JacobianReuse> reuse, Teuchos::RCP<FreeMotionPins> pins);
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override;
@@ -42,7 +44,7 @@ private:
   /// J (the last evaluated, at x_origin_) as the problem's jacobian_with(smooth), scaled;
   /// for JacobianReuse's restart. Collective.
   bool jacobian_with(const std::vector<double> &smooth) const;
-  /// The scaling of W: diag(c) J diag(c) (nothing without c).
+  /// The scaling of W: diag(c) J diag(c) (nothing without c); then the pins, if any.
   void scale_jacobian(NonlinearProblem::Matrix &J) const;
 
   Teuchos::RCP<NonlinearProblem> problem_;
@@ -50,6 +52,7 @@ private:
   Teuchos::RCP<NonlinearProblem::Vector> x_unscaled_;  ///< c x̂
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> W_factory_;
   Teuchos::RCP<JacobianReuse> reuse_;
+  Teuchos::RCP<FreeMotionPins> pins_; ///< or null
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_values_;
   /// While JacobianReuse restores a checkpoint's preconditioner: the x (as the problem sees

@@ -166,6 +166,8 @@ struct NewtonSolver::Impl
   RCP<internal::StartingGuess> starting_guess = Teuchos::rcp(new internal::StartingGuess);
   /// The unknowns' scale c (NOX sees x / c) and 1 / c, or null.
   RCP<const NonlinearProblem::Vector> scale, inverse_scale;
+  /// The free motions' pins (Minimum Norm; FreeMotionPins), or null.
+  RCP<internal::FreeMotionPins> pins;
   /// Kept between solves: it owns the Jacobian and the linear solver.
   RCP<NOX::Thyra::Group> group;
 
@@ -335,7 +337,11 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   const RCP<Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory =
       Teuchos::rcp(new internal::StartingGuessSolveFactory(
           s.create_linear_solver(p, preconditioner_given), s.starting_guess));
-  s.model = Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse));
+  if (const auto motions = problem->free_motions(); !motions.is_null())
+    s.pins = Teuchos::rcp(new internal::FreeMotionPins(*motions, s.inverse_scale.get(),
+                                                       problem->free_motion_names()));
+  s.model =
+      Teuchos::rcp(new internal::ModelEvaluator(problem, s.scale, lows_factory, s.reuse, s.pins));
   s.check_nonlinear_parameters();
 }
 
@@ -368,16 +374,36 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
   Impl &s = *impl_;
   const internal::JacobianReuse::Counts before = s.reuse->counts();
+  const int unconverged_before = s.starting_guess->unconverged;
 
   const RCP<const Thyra::VectorSpaceBase<double>> space = s.model->get_x_space();
   // NOX works on x̂ = x / c (ModelEvaluator); x is untouched until the end.
   const RCP<const NonlinearProblem::Vector> scale = s.scale;
-  s.group->setX(NOX::Thyra::Vector(s.to_solver(x, 1.0, space)->clone_v()));
+  RCP<Thyra::VectorBase<double>> x0 = s.to_solver(x, 1.0, space)->clone_v();
+  if (!s.pins.is_null()) // the start without a part in the free motions
+    s.pins->project(*Extraction::getTpetraVector(x0));
+  s.group->setX(NOX::Thyra::Vector(x0));
   s.group->computeF();
   Result result;
   result.initial_residual_norm = s.group->getNormF();
   result.tolerance =
       std::max(s.absolute_tolerance, s.relative_tolerance * result.initial_residual_norm);
+  // With free motions, a load with a part along them has no equilibrium: it would stay in
+  // the rows of the pins, whatever x.
+  if (!s.pins.is_null() && s.pins->pin_residual() > result.tolerance)
+  {
+    std::ostringstream message;
+    message.precision(3);
+    message << s.where
+            << ": the load has a net force or moment along a free rigid motion "
+               "(Kiln/Mechanics/\"Free Motions\" = \"Minimum Norm\"): "
+            << s.pins->imbalance()
+            << "; no displacement balances it, so there is no solution (the residual it "
+               "leaves, "
+            << s.pins->pin_residual() << ", is above the Newton target " << result.tolerance
+            << "). Hold the motion with a displacement condition, or balance the load";
+    throw RunError(message.str());
+  }
 
   // NaN/Inf first: with the "Minimal" check type the first test that is not
   // Unconverged decides.
@@ -411,12 +437,26 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     Tpetra::deep_copy(x, *x_final);
   else
     x.elementWiseMultiply(1.0, *scale, *x_final, 0.0);
+  if (!s.pins.is_null()) // the Newton updates kept the pins: the minimum-norm solution
+  {
+    NonlinearProblem::Vector x_hat(x.getMap());
+    if (s.inverse_scale.is_null())
+      Tpetra::deep_copy(x_hat, x);
+    else
+      x_hat.elementWiseMultiply(1.0, *s.inverse_scale, x, 0.0);
+    s.pins->project(x_hat);
+    if (scale.is_null())
+      Tpetra::deep_copy(x, x_hat);
+    else
+      x.elementWiseMultiply(1.0, *scale, x_hat, 0.0);
+  }
 
   result.converged = status == ST::Converged;
   result.newton_iterations = solver->getNumIterations();
   result.linear_iterations =
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
+  result.linear_failures = s.starting_guess->unconverged - unconverged_before;
   const internal::JacobianReuse::Counts &after = s.reuse->counts();
   result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
   result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;

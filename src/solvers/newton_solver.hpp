@@ -37,6 +37,9 @@ public:
     bool converged = false;
     int newton_iterations = 0;
     int linear_iterations = 0; ///< summed over the Newton iterations
+    /// Linear solves that stopped short of their tolerance (NOX warns of each and goes on
+    /// with its step; the Newton test decides).
+    int linear_failures = 0;
     double initial_residual_norm = 0.0;
     double final_residual_norm = 0.0;
     /// Jacobians evaluated or kept (Solver/"Reuse"), preconditioners built or kept.

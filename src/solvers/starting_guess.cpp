@@ -69,7 +69,10 @@ protected:
       else
         ++guess_->declined;
     }
-    return inner_->solve(transp, B, X, criteria);
+    const Thyra::SolveStatus<double> status = inner_->solve(transp, B, X, criteria);
+    if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
+      ++guess_->unconverged;
+    return status;
   }
 
 private:

@@ -35,6 +35,11 @@ public:
   /// (the guess left a larger residual).
   int used = 0;
   int declined = 0;
+  /// Solves (of StartingGuessSolveFactory, with or without a guess) that stopped short of
+  /// their tolerance (Belos at its iteration limit): NOX goes on with their step ("Rescue Bad
+  /// Newton Solve", with a warning), the Newton test on ||F|| decides; NewtonSolver counts
+  /// them per solve.
+  int unconverged = 0;
 
 private:
   Teuchos::RCP<const Thyra::VectorBase<double>> guess_;

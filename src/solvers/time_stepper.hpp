@@ -64,6 +64,7 @@ public:
     int newton_failures = 0;   ///< repeated because Newton did not converge
     int newton_iterations = 0; ///< summed over accepted steps and the initial equilibrium
     int linear_iterations = 0; ///< summed over accepted steps and the initial equilibrium
+    int linear_failures = 0;   ///< linear solves short of their tolerance, likewise
     /// Of this run's accepted steps (not in checkpoints): Jacobians and preconditioners
     /// built anew or kept (Solver/"Reuse").
     int jacobians_evaluated = 0;
@@ -75,6 +76,7 @@ public:
     {
       newton_iterations += r.newton_iterations;
       linear_iterations += r.linear_iterations;
+      linear_failures += r.linear_failures;
       jacobians_evaluated += r.jacobians_evaluated;
       jacobians_kept += r.jacobians_kept;
       preconditioners_built += r.preconditioners_built;

@@ -41,6 +41,15 @@ Teuchos::ParameterList MechanicalPhysics::valid_parameters()
                      "mechanical boundary conditions on side sets; faces in none are free of "
                      "traction",
                      boundary_condition_parameters(mechanical_conditions()));
+  p.set("Free Motions", "Error",
+        "what to do when the displacement conditions (and, with contact, the gap's normal) "
+        "leave a body free to move as a rigid body (doc/mechanics.md, \"Free motions\"): "
+        "\"Error\": refuse the input at set-up, naming the body and its free translations "
+        "and rotations; \"Minimum Norm\": solve, and give the displacement with no "
+        "component in the free motions (sum over the nodes of u . r = 0 for each free motion "
+        "r); a load with a net force or moment along a free motion is then an error of the "
+        "run [-]",
+        choice_validator({"Error", "Minimum Norm"}));
   p.set("Contact", NormalContact::valid_parameters(),
         "frictionless contact across the gap (Kiln/Mesh/\"Gap Side Set\"); doc/contact.md");
   return p;

@@ -36,16 +36,21 @@ constexpr GO n_rows = 30;
 /// A nonsymmetric tridiagonal matrix plus an entry to row + 7: (`diagonal` + i / 10) on the
 /// diagonal, -1 before, -2 after, 0.5 at +7; row `zero` (if >= 0) all zero. Rank r holds the
 /// rows i with i % size == r.
-RCP<Matrix> make_matrix(const double diagonal, const GO zero = -1)
+/// The rows i of n_rows with i % size == rank.
+RCP<const Map> spread_rows()
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   std::vector<GO> gids;
   for (GO i = comm->getRank(); i < n_rows; i += comm->getSize())
     gids.push_back(i);
-  const auto map =
-      rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), gids, 0, comm));
+  return rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), gids, 0, comm));
+}
+
+RCP<Matrix> make_matrix(const double diagonal, const GO zero = -1)
+{
+  const auto map = spread_rows();
   auto J = rcp(new Matrix(map, 4));
-  for (const GO i : gids)
+  for (const GO i : map->getNodeElementList())
   {
     const double s = i == zero ? 0.0 : 1.0;
     J->insertGlobalValues(i, Teuchos::tuple<GO>(i), Teuchos::tuple(s * (diagonal + i / 10.0)));
@@ -123,26 +128,54 @@ TEST(DirectPreconditioner, AnEarlierPreconditionerKeepsItsFactors)
   EXPECT_LT(error(*first, *old_values), 1e-13);
 }
 
-TEST(DirectPreconditioner, ASingularJacobianEndsTheRunOnEveryRank)
+/// The message of the RunError initializePrec() throws for J ("no RunError" if none).
+std::string factorization_error(const RCP<Matrix> &J, const DirectPreconditionerFactory &factory)
 {
-  // Row 3 is zero: KLU2 on rank 0 fails, and every rank throws the same RunError (none is
-  // left waiting in a collective call).
-  const RCP<Matrix> J = make_matrix(5.0, 3);
-  DirectPreconditionerFactory factory;
   const auto prec = factory.createPrec();
-  std::string message = "no RunError";
   try
   {
     factory.initializePrec(source(J), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
   }
   catch (const kiln::RunError &e)
   {
-    message = e.what();
+    return e.what();
   }
+  return "no RunError";
+}
+
+TEST(DirectPreconditioner, ASingularJacobianEndsTheRunOnEveryRank)
+{
+  // Row 3 is zero: KLU2 on rank 0 fails, and every rank throws the same RunError (none is
+  // left waiting in a collective call).
+  DirectPreconditionerFactory factory;
+  const std::string message = factorization_error(make_matrix(5.0, 3), factory);
   EXPECT_THAT(message, testing::StartsWith("the Direct preconditioner could not factor the "
                                            "Jacobian (Amesos2 KLU2: "));
-  EXPECT_THAT(message, testing::HasSubstr("set Kiln/Solver/Linear Solver/\"Preconditioner "
-                                          "Type\" to \"MueLu\""));
+  EXPECT_THAT(message, testing::HasSubstr("hold it with a displacement condition"));
+  EXPECT_EQ(factory.factorizations(), 0);
+}
+
+TEST(DirectPreconditioner, AJacobianSingularToRoundOffIsRefused)
+{
+  // The 1D Laplacian with free ends (a body held by nothing: the constant is its null
+  // vector), made regular by 1e-15 on the end diagonals: KLU2 factors it without complaint
+  // (pivots of 1e-15), and the condition estimate (about 1e17) refuses it.
+  const auto map = spread_rows();
+  auto J = rcp(new Matrix(map, 3));
+  for (const GO i : map->getNodeElementList())
+  {
+    const bool end = i == 0 || i + 1 == n_rows;
+    J->insertGlobalValues(i, Teuchos::tuple<GO>(i), Teuchos::tuple(end ? 1.0 + 1e-15 : 2.0));
+    if (i > 0)
+      J->insertGlobalValues(i, Teuchos::tuple<GO>(i - 1), Teuchos::tuple(-1.0));
+    if (i + 1 < n_rows)
+      J->insertGlobalValues(i, Teuchos::tuple<GO>(i + 1), Teuchos::tuple(-1.0));
+  }
+  J->fillComplete();
+  DirectPreconditionerFactory factory;
+  EXPECT_THAT(factorization_error(J, factory),
+              testing::HasSubstr("the factors are singular to working precision, a "
+                                 "condition number of at least "));
   EXPECT_EQ(factory.factorizations(), 0);
 }
 } // namespace
