@@ -43,14 +43,15 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
           (rho_c_ * T_dot_capacity * phi_i + k * grad_T_dot_grad_phi_i) * JxW;
       if (!local.has_jacobian())
         continue;
+      // Capacity: consistent rho c a φ_j φ_i, or lumped rho c a φ_i on the diagonal.
+      const double capacity_i = rho_c_ * dTdot_dT * (lumped ? 0.0 : phi_i);
       for (int j = 0; j < fe.n_shape(); ++j)
-      {
-        const double capacity_j = lumped ? (i == j ? phi_i : 0.0) : fe.shape(j, q) * phi_i;
         local.jacobian(T_field, i, T_field, j) +=
-            (rho_c_ * dTdot_dT * capacity_j + k * dot(fe.grad(j, q), fe.grad(i, q)) +
+            (capacity_i * fe.shape(j, q) + k * dot(fe.grad(j, q), fe.grad(i, q)) +
              dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
             JxW;
-      }
+      if (lumped)
+        local.jacobian(T_field, i, T_field, i) += rho_c_ * dTdot_dT * phi_i * JxW;
     }
   }
 }
