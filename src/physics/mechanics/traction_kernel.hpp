@@ -21,6 +21,9 @@ class TractionKernel final
 public:
   /// t [Pa] (a fixed direction); adds [N].
   static void evaluate(const FaceValues &fv, const Point &traction, int u_slot, LocalSystem &local);
+  /// t [Pa] by components, each a constant or a function of space at the Gauss points.
+  static void evaluate(const FaceValues &fv, const std::array<ValueAt, 3> &traction, int u_slot,
+                       LocalSystem &local);
   /// p [Pa] (p > 0 compresses); adds [N].
   static void evaluate_pressure(const FaceValues &fv, const ValueAt &pressure, int u_slot,
                                 LocalSystem &local);

@@ -9,6 +9,10 @@ Usage: space_varying.py KILN WORK_DIR NP MPIEXEC
    G x to rounding (the expression is evaluated at each node's own position).
 2. Initial temperature field: a heat run whose initial temperature is 300 + 10x + 5yz; the
    state written at t = 0 must be that field at every node.
+3. Traction formulas: a box held on its x- face and pulled on its x+ face by
+   "Traction Expressions" {"1e6*(1 + 2*t)", "0", "0"} at t = 1 gives the displacements of
+   "Traction" {3e6, 0, 0} (to rounding); {"3e6 + 1e7*(y - y0)", "0", "0"}, whose mean over
+   the face is 3e6 Pa, gives different ones (the formula is evaluated at the Gauss points).
 """
 import os
 import subprocess
@@ -78,6 +82,33 @@ def initial_deck(base):
 """
 
 
+def traction_deck(load):
+    def deck(base):
+        return f"""<ParameterList name="Kiln">
+  <Parameter name="Physics" type="string" value="Elasticity"/>
+{MESH.replace('<Parameter name="Phi" type="double" value="30"/>', '').replace('<Parameter name="Theta" type="double" value="20"/>', '')}  <ParameterList name="Mechanics">
+    <ParameterList name="Boundary Conditions">
+      <ParameterList name="clamped">
+        <Parameter name="Type" type="string" value="Displacement"/>
+        <Parameter name="Side Sets" type="Array(int)" value="{{1}}"/>
+        <Parameter name="Components" type="Array(string)" value="{{x, y, z}}"/>
+      </ParameterList>
+      <ParameterList name="pulled">
+        <Parameter name="Type" type="string" value="Traction"/>
+        <Parameter name="Side Sets" type="Array(int)" value="{{2}}"/>
+        {load}
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="File Base" type="string" value="{base}"/>
+    <Parameter name="Times" type="Array(double)" value="{{0, 1}}"/>
+  </ParameterList>
+</ParameterList>
+"""
+    return deck
+
+
 def run(kiln, deck_text, work, name, n_ranks, mpiexec):
     base = os.path.join(work, name)
     with open(base + ".xml", "w", encoding="utf-8") as f:
@@ -110,6 +141,27 @@ def main():
     print(f"initial temperature field: max |T(0) - (300 + 10x + 5yz)| = {err:.2e} K")
     if not err < 1e-12:
         print("FAIL: the initial temperature is not the formula")
+        failures += 1
+    displacements = {}
+    y0 = -0.2 - 0.15  # the translated box's y = -Ly/2 face (no rotation)
+    for name, load in (
+        ("vector", '<Parameter name="Traction" type="Array(double)" value="{3e6, 0, 0}"/>'),
+        ("formula", '<Parameter name="Traction Expressions" type="Array(string)" '
+                    'value="{1e6*(1 + 2*t), 0, 0}"/>'),
+        ("varying", '<Parameter name="Traction Expressions" type="Array(string)" '
+                    f'value="{{3e6 + 1e7*(y - ({y0 + 0.15})), 0, 0}}"/>')):
+        with run(kiln, traction_deck(load), work, "traction-" + name, n_ranks, mpiexec) as h5:
+            displacements[name] = h5["steps"][sorted(h5["steps"].keys())[-1]]["displacement"][...]
+    scale = np.abs(displacements["vector"]).max()
+    same = np.abs(displacements["formula"] - displacements["vector"]).max() / scale
+    differ = np.abs(displacements["varying"] - displacements["vector"]).max() / scale
+    print(f"traction formulas: |u(formula) - u(vector)| / |u| = {same:.2e}, "
+          f"|u(varying) - u(vector)| / |u| = {differ:.2e}")
+    if not same < 1e-10:
+        print("FAIL: a formula of t gives another load than the same vector")
+        failures += 1
+    if not differ > 1e-3:
+        print("FAIL: a traction varying over the face gives the uniform one's displacements")
         failures += 1
     return 1 if failures else 0
 
