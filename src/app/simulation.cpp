@@ -170,6 +170,27 @@ void Simulation::check()
                    "from t = 0 to its last output time); give the output times, e.g. <Parameter "
                    "name=\"Times\" type=\"Array(double)\" value=\"{0, 100}\"/> in the Output "
                    "list, or set Kiln/Time Stepping/\"Method\" to \"Steady\"");
+  if (layout_.temperature && !transient)
+  {
+    // Only Heat Flux conditions fix the heat flow but not the temperature level: a steady
+    // solve then has no solution (the fluxes do not balance) or infinitely many.
+    const Teuchos::ParameterList &conditions =
+        params_.sublist("Thermal").sublist("Boundary Conditions");
+    bool level_fixed = false;
+    for (auto it = conditions.begin(); it != conditions.end(); ++it)
+      level_fixed = level_fixed ||
+                    conditions.sublist(conditions.name(it)).get<std::string>("Type") != "Heat Flux";
+    KILN_CHECK_INPUT(level_fixed, input_path_ + ": Kiln/Thermal/Boundary Conditions",
+                     "a steady heat problem (Kiln/Time Stepping/\"Method\" = \"Steady\") "
+                     "needs a condition that fixes the temperature (Type \"Temperature\", "
+                     "\"Convection\" or \"Radiation\"), but "
+                         << (conditions.numParams() == 0 ? "there is none"
+                                                         : "every condition is a \"Heat Flux\"")
+                         << ": the fluxes set only how heat flows, so there is no steady state "
+                            "(heat that comes in and never leaves) or no single one. Add a "
+                            "Temperature or Convection condition, or follow the heating in time "
+                            "(Method \"BDF2\" with Kiln/Output/\"Times\")");
+  }
   const auto &times = params_.sublist("Checkpoint").get<Teuchos::Array<double>>("Times");
   for (int i = 0; i < times.size(); ++i)
     KILN_CHECK_INPUT(times[i] <= outputs_->end_time() * (1.0 + 1e-12),

@@ -4,7 +4,8 @@
 #   library reads as zeros: Kiln warns and reads it right (T(0) = 302 K below);
 # - a side set that lists a face twice: a warning, and the flux counted once (302 K, not 304);
 # - a condition that names a side set twice: an error on every rank (exit 1);
-# - a mesh with no extent in x: an error naming the direction.
+# - a mesh with no extent in y: an error naming the direction;
+# - two bodies whose coincident nodes are not merged, named as the gap: an error saying so.
 # usage: silent_inputs.sh KILN MPIEXEC NP TWO_CELL_FLUX.xml SCIPY_EXODUS.py
 set -u
 kiln=$(realpath "$1") mpiexec=$2 np=$3 deck=$(realpath "$4") generator=$(realpath "$5")
@@ -42,4 +43,10 @@ run --check "$deck"
 [ "$status" = 1 ] || fail "a flat mesh: exit $status, expected 1"
 grep -q 'mesh.exo: all 12 nodes have y = 0, so the mesh has no extent in y and holds no 3D cell' log.txt ||
   fail "no message for a flat mesh"
+"$python" "$generator" mesh.exo --unmerged || fail "cannot write the mesh"
+sed 's/"Gap Side Set" type="int" value="0"/"Gap Side Set" type="int" value="10"/' "$deck" > gap.xml
+run gap.xml
+[ "$status" = 1 ] || fail "unmerged bodies: exit $status, expected 1"
+[ "$(grep -c 'gap.xml: Kiln/Mesh/"Gap Side Set": side set 10 has no interior face: its faces touch other cells, but through nodes that are not merged (node 2 of side set 10 and node 9 are both at (1, 0, 0)).*Merge the coincident nodes' log.txt)" = 1 ] ||
+  fail "no single message for unmerged bodies"
 echo "silent_inputs.sh: np $np passed"
