@@ -20,6 +20,8 @@ packages=(
   python3-h5py python3-numpy
   # the verification report (doc/verification/report.py) and benchmarks/scaling.py's plots:
   python3-matplotlib
+  # scipy's netCDF writer, for the Exodus file the Exodus library misreads (tests/cli):
+  python3-scipy
   # GNU time, for the peak memory per rank in benchmarks/scaling.py (and its smoke test):
   time
 )

@@ -28,6 +28,8 @@ public:
   std::string path(int steps) const;
   /// BASE.h5, the latest checkpoint.
   std::string latest_path() const { return base_ + ".h5"; }
+  /// The path of the checkpoints without extension.
+  const std::string &base() const { return base_; }
 
 private:
   std::vector<double> times_;

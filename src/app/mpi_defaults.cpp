@@ -21,6 +21,11 @@ open_mpi_defaults(const std::function<const char *(const char *)> &getenv)
     choose("OMPI_MCA_pml", "ob1");
   if (by_hand)
     choose("OMPI_MCA_ess_singleton_isolated", "1");
+  // OMPIO's "lockedfile" shared-file-pointer component, queried at every MPI_File_open,
+  // sprintf()s the file's path and a suffix into a 256-byte buffer (Open MPI 4.1): a results
+  // path of about 230 bytes aborted the run in glibc's overflow check. Kiln uses no shared
+  // file pointer; the other components ("sm", "individual") allocate their names.
+  choose("OMPI_MCA_sharedfp", "^lockedfile");
   return chosen;
 }
 } // namespace kiln

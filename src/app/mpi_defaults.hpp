@@ -16,7 +16,9 @@ namespace kiln
 ///   (no probing of UCX, OFI, PSM) and no orted daemon for the lone process.
 /// - Under Open MPI's mpirun with every rank on one node (OMPI_COMM_WORLD_LOCAL_SIZE equal to
 ///   OMPI_COMM_WORLD_SIZE): ob1, whose shared-memory transport is what one node uses.
-/// - Otherwise (several nodes, another launcher): nothing; the site's choice stands.
+/// - Otherwise (several nodes, another launcher): nothing of the above; the site's choice stands.
+/// - Always: OMPI_MCA_sharedfp = "^lockedfile" (that component overflows a 256-byte buffer
+///   for a long file path at every MPI_File_open; Kiln uses no shared file pointer).
 /// A variable the environment sets already is never in the list.
 std::vector<std::pair<std::string, std::string>>
 open_mpi_defaults(const std::function<const char *(const char *)> &getenv);

@@ -6,8 +6,12 @@
 #include <Teuchos_Array.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
+#include <ios>
+
+#include <unistd.h>
 
 namespace kiln
 {
@@ -23,6 +27,26 @@ bool same_output_time(const double a, const double b)
   return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
 }
 } // namespace
+std::size_t first_non_utf8_byte(const std::string &text)
+{
+  const auto byte = [&](const std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  for (std::size_t i = 0; i < text.size();)
+  {
+    const unsigned char c = byte(i);
+    const std::size_t length = c < 0x80           ? 1
+                               : (c >> 5) == 0x6  ? 2
+                               : (c >> 4) == 0xE  ? 3
+                               : (c >> 3) == 0x1E ? 4
+                                                  : 0;
+    if (length == 0 || i + length > text.size() || (length == 2 && c < 0xC2))
+      return i;
+    for (std::size_t k = 1; k < length; ++k)
+      if ((byte(i + k) >> 6) != 0x2)
+        return i;
+    i += length;
+  }
+  return std::string::npos;
+}
 } // namespace internal
 
 Teuchos::ParameterList OutputSchedule::valid_parameters()
@@ -84,6 +108,7 @@ OutputSchedule::OutputSchedule(const Teuchos::ParameterList &p, const std::strin
                           << base_ << "run\" for " << base_ << "run.h5");
   if (base_.empty())
     base_ = "results/" + std::filesystem::path(input_path).stem().string();
+  check_file_name(base_where, input_path);
   std::error_code ignored;
   const bool is_folder = comm.getRank() == 0 && std::filesystem::is_directory(base_, ignored);
   check_collectively(comm, !is_folder, base_where,
@@ -91,6 +116,38 @@ OutputSchedule::OutputSchedule(const Teuchos::ParameterList &p, const std::strin
                          "\" is an existing folder; File Base is the results' path without "
                          "extension, a file name: give one inside it, e.g. \"" +
                          base_ + "/run\" for " + base_ + "/run.h5");
+}
+
+void OutputSchedule::check_file_name(const std::string &base_where,
+                                     const std::string &input_path) const
+{
+  const std::string name = std::filesystem::path(base_).filename().string();
+  const std::string source =
+      base_where + " = \"" + base_ + "\"" +
+      (base_.rfind("results/", 0) == 0 && name == std::filesystem::path(input_path).stem().string()
+           ? " (the default, from the input's name)"
+           : "");
+  // The longest name Kiln writes beside BASE: BASE.checkpoint-NNNNNN.h5.tmp.
+  const std::string longest = ".checkpoint-000000.h5.tmp";
+  const std::filesystem::path folder = std::filesystem::path(base_).parent_path();
+  long limit = ::pathconf(folder.empty() ? "." : folder.c_str(), _PC_NAME_MAX);
+  if (limit <= 0)
+    limit = NAME_MAX;
+  KILN_CHECK_INPUT(name.size() + longest.size() <= static_cast<std::size_t>(limit), source,
+                   "the file name is " << name.size() << " bytes; Kiln writes names up to "
+                                       << longest.size() << " bytes longer (" << longest
+                                       << "), and this file system allows " << limit
+                                       << " bytes per name: give Kiln/Output/\"File Base\" a "
+                                          "name of at most "
+                                       << limit - static_cast<long>(longest.size()) << " bytes");
+  const std::size_t bad = internal::first_non_utf8_byte(name);
+  KILN_CHECK_INPUT(!writes_hdf5() || bad == std::string::npos, source,
+                   "the file name holds the byte 0x"
+                       << std::hex << static_cast<int>(static_cast<unsigned char>(name[bad]))
+                       << std::dec << " at position " << bad + 1
+                       << ", which is not UTF-8 (a Latin-1 name?): the XDMF index, UTF-8 XML, "
+                          "could not name the results for ParaView. Give Kiln/Output/\"File "
+                          "Base\" a name in ASCII or UTF-8 (or rename the input)");
 }
 
 std::string OutputSchedule::results_files(const bool with_index) const

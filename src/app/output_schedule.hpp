@@ -3,11 +3,19 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace kiln
 {
+namespace internal
+{
+/// The index of the first byte of `text` that does not begin a well-formed UTF-8 sequence (an
+/// overlong 2-byte lead, a missing continuation byte, a Latin-1 letter), or npos.
+std::size_t first_non_utf8_byte(const std::string &text);
+} // namespace internal
+
 /// Reads and checks Kiln/Output and answers "is an output due here?". A state is written
 /// - at the start of a run (t = 0; a restarted run continues the earlier run's series);
 /// - at every listed time ("Times"); the last one is the end of the run, so it is always
@@ -50,6 +58,10 @@ public:
   bool due_after_step(int steps) const { return every_steps_ > 0 && steps % every_steps_ == 0; }
 
 private:
+  /// Refuses a file name of File Base that, with the longest suffix Kiln adds, exceeds the
+  /// file system's limit per name, or that is not UTF-8 when the XDMF index names it.
+  void check_file_name(const std::string &base_where, const std::string &input_path) const;
+
   std::string base_;
   std::string format_;
   std::vector<double> times_; ///< listed, increasing, at least one

@@ -28,7 +28,8 @@ std::string lock_holder(const int fd)
 }
 
 /// Takes the lock on rank 0: the locked descriptor, or -1 with `error` set.
-int take_lock(const std::string &path, std::string &error)
+int take_lock(const std::string &path, const std::string &what, const std::string &parameter,
+              std::string &error)
 {
   for (int attempt = 0; attempt < 100; ++attempt)
   {
@@ -39,7 +40,7 @@ int take_lock(const std::string &path, std::string &error)
       const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
       error = std::string("cannot create the lock file (") + std::strerror(errno) +
               "); check that the folder \"" + folder +
-              "\" exists and is writable, or choose another Kiln/Output/\"File Base\"";
+              "\" exists and is writable, or choose another " + parameter;
       return -1;
     }
     if (flock(fd, LOCK_EX | LOCK_NB) != 0)
@@ -53,8 +54,10 @@ int take_lock(const std::string &path, std::string &error)
         return -1;
       }
       error = "another Kiln run (" + (holder.empty() ? std::string("process unknown") : holder) +
-              ") is writing results with this File Base and holds this lock file; wait for it "
-              "to end, or give this run another Kiln/Output/\"File Base\"";
+              ") is writing " + what +
+              " and holds this lock file; wait for it to end, or give "
+              "this run another " +
+              parameter;
       return -1;
     }
     // The holder before us may have removed the file after we opened it: then we hold a lock
@@ -80,11 +83,13 @@ int take_lock(const std::string &path, std::string &error)
 } // namespace
 } // namespace internal
 
-ResultsLock::ResultsLock(const std::string &path, const Teuchos::Comm<int> &comm) : path_(path)
+ResultsLock::ResultsLock(const std::string &path, const Teuchos::Comm<int> &comm,
+                         const std::string &what, const std::string &parameter)
+    : path_(path)
 {
   std::string error;
   if (comm.getRank() == 0)
-    fd_ = internal::take_lock(path_, error);
+    fd_ = internal::take_lock(path_, what, parameter, error);
   check_collectively(comm, error.empty(), path_, error);
 }
 

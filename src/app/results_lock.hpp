@@ -16,7 +16,11 @@ namespace kiln
 class ResultsLock
 {
 public:
-  ResultsLock(const std::string &path, const Teuchos::Comm<int> &comm);
+  /// `what` and `parameter` name the files and the parameter in the message (the
+  /// checkpoints under a Checkpoint/File Base of their own take a lock of their own).
+  ResultsLock(const std::string &path, const Teuchos::Comm<int> &comm,
+              const std::string &what = "results with this File Base",
+              const std::string &parameter = "Kiln/Output/\"File Base\"");
   ~ResultsLock();
   ResultsLock(const ResultsLock &) = delete;
   ResultsLock &operator=(const ResultsLock &) = delete;

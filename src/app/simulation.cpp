@@ -170,6 +170,38 @@ void Simulation::check()
                    "from t = 0 to its last output time); give the output times, e.g. <Parameter "
                    "name=\"Times\" type=\"Array(double)\" value=\"{0, 100}\"/> in the Output "
                    "list, or set Kiln/Time Stepping/\"Method\" to \"Steady\"");
+  if (layout_.temperature && !transient)
+  {
+    // Only Heat Flux conditions fix the heat flow but not the temperature level: a steady
+    // solve then has no solution (the fluxes do not balance) or infinitely many.
+    const Teuchos::ParameterList &conditions =
+        params_.sublist("Thermal").sublist("Boundary Conditions");
+    bool level_fixed = false;
+    for (auto it = conditions.begin(); it != conditions.end(); ++it)
+      level_fixed = level_fixed ||
+                    conditions.sublist(conditions.name(it)).get<std::string>("Type") != "Heat Flux";
+    KILN_CHECK_INPUT(level_fixed, input_path_ + ": Kiln/Thermal/Boundary Conditions",
+                     "a steady heat problem (Kiln/Time Stepping/\"Method\" = \"Steady\") "
+                     "needs a condition that fixes the temperature (Type \"Temperature\", "
+                     "\"Convection\" or \"Radiation\"), but "
+                         << (conditions.numParams() == 0 ? "there is none"
+                                                         : "every condition is a \"Heat Flux\"")
+                         << ": the fluxes set only how heat flows, so there is no steady state "
+                            "(heat that comes in and never leaves) or no single one. Add a "
+                            "Temperature or Convection condition, or follow the heating in time "
+                            "(Method \"BDF2\" with Kiln/Output/\"Times\")");
+  }
+  const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), outputs_->file_base(),
+                                       input_path_ + ": Kiln/Checkpoint");
+  KILN_CHECK_INPUT(checkpoints.latest_path() != outputs_->file_base() + ".h5" &&
+                       checkpoints.base() != outputs_->file_base(),
+                   parameter_path(input_path_, "Kiln/Checkpoint", "File Base"),
+                   "= \"" << checkpoints.base()
+                          << "\" is also the results' File Base (Kiln/Output): "
+                          << "the latest checkpoint " << checkpoints.latest_path()
+                          << " would overwrite the results " << outputs_->file_base()
+                          << ".h5. Give the checkpoints another base, or leave it \"\" for "
+                          << outputs_->file_base() << ".checkpoint");
   const auto &times = params_.sublist("Checkpoint").get<Teuchos::Array<double>>("Times");
   for (int i = 0; i < times.size(); ++i)
     KILN_CHECK_INPUT(times[i] <= outputs_->end_time() * (1.0 + 1e-12),
@@ -183,10 +215,21 @@ void Simulation::check()
 Simulation::Ending Simulation::run()
 {
   check();
-  make_output_folder();
-  const ResultsLock lock(outputs_->lock_path(), *comm_);
   const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), outputs_->file_base(),
                                        input_path_ + ": Kiln/Checkpoint");
+  make_output_folder(outputs_->file_base(),
+                     parameter_path(input_path_, "Kiln/Output", "File Base"));
+  make_output_folder(checkpoints.base(),
+                     parameter_path(input_path_, "Kiln/Checkpoint", "File Base"));
+  const ResultsLock lock(outputs_->lock_path(), *comm_);
+  // Checkpoints under a base of their own get a lock of their own: two runs with different
+  // results but one Checkpoint/File Base would overwrite each other's checkpoints.
+  const std::unique_ptr<const ResultsLock> checkpoint_lock =
+      checkpoints.base() == outputs_->file_base() + ".checkpoint"
+          ? nullptr
+          : std::make_unique<const ResultsLock>(checkpoints.base() + ".lock", *comm_,
+                                                "checkpoints with this Checkpoint/File Base",
+                                                "Kiln/Checkpoint/\"File Base\"");
   const bool fresh = restart_.empty();
   TimeStepper::State state = fresh ? start() : resume();
   // A continued run's results start with the earlier run's, read before the new files open.
@@ -243,15 +286,20 @@ Simulation::Ending Simulation::run()
   return Ending::finished;
 }
 
-void Simulation::make_output_folder() const
+void Simulation::make_output_folder(const std::string &file_base, const std::string &where) const
 {
-  const std::filesystem::path base(outputs_->file_base());
+  const std::filesystem::path base(file_base);
+  std::string problem;
   if (comm_->getRank() == 0 && base.has_parent_path())
   {
-    std::error_code ignored; // a failure shows when the lock file is created
-    std::filesystem::create_directories(base.parent_path(), ignored);
+    std::error_code error;
+    std::filesystem::create_directories(base.parent_path(), error);
+    if (!std::filesystem::is_directory(base.parent_path()))
+      problem = "= \"" + file_base + "\": cannot create its folder \"" +
+                base.parent_path().string() + "\" (" + error.message() +
+                "); give a base in a folder this user can create or write";
   }
-  comm_->barrier();
+  check_collectively(*comm_, problem.empty(), where, problem);
 }
 
 HistoryCsv Simulation::open_history(const TimeStepper::State &state)

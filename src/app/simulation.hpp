@@ -80,8 +80,9 @@ public:
 
 private:
   void print_header() const;
-  /// Rank 0 creates the folder of the results (collective).
-  void make_output_folder() const;
+  /// Rank 0 creates the folder of `file_base` (the results, the checkpoints), or every rank
+  /// throws an InputError naming `where` (collective).
+  void make_output_folder(const std::string &file_base, const std::string &where) const;
   /// BASE.history.csv, new or (a restart) continued; the rows kept go to every results writer.
   HistoryCsv open_history(const TimeStepper::State &state);
   /// The state at t = 0: the initial condition, in equilibrium with a displacement.

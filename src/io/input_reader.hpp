@@ -12,6 +12,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 
@@ -24,6 +25,9 @@ constexpr std::size_t max_input_bytes = std::size_t(1) << 20;
 /// Elements nested deeper than this are refused before they are parsed (a Kiln
 /// input nests about 8 lists; Teuchos' reader recurses once per level).
 constexpr int max_input_depth = 64;
+/// How long rank 0 waits for an input that is not a regular file (a FIFO, a
+/// device) to send its text and its end; a FIFO nobody writes is refused after it.
+constexpr std::chrono::seconds input_wait{5};
 
 /// The unvalidated parameter list in `path`. Throws InputError naming the file
 /// when it cannot be read, is a directory, is empty or binary, is not well-formed
@@ -36,4 +40,12 @@ Teuchos::ParameterList read_input(const std::string &path, const Teuchos::Comm<i
 /// written in full, in decimal, finite and in the range of their type (also in
 /// arrays, which are written {a, b, c} without empty entries); bools true or false.
 Teuchos::ParameterList parse_input(const std::string &xml, const std::string &where);
+
+namespace internal
+{
+/// Reads at most max_input_bytes + 1 bytes of `path` (of any kind of file) into
+/// `text`, waiting at most input_wait; returns "" or what is wrong (with the
+/// system's reason when the file cannot be opened).
+std::string read_input_text(const std::string &path, std::string &text);
+} // namespace internal
 } // namespace kiln

@@ -14,10 +14,36 @@ namespace internal
 {
 namespace
 {
+/// The file name of `path`, escaped for XML text (a deck named steel&al.xml gives
+/// steel&amp;al.h5, which ParaView's parser reads back as steel&al.h5). OutputSchedule
+/// refuses a name that is not UTF-8, the encoding of the index.
 std::string file_name_of(const std::string &path)
 {
   const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  std::string escaped;
+  for (const char c : name)
+    switch (c)
+    {
+    case '&':
+      escaped += "&amp;";
+      break;
+    case '<':
+      escaped += "&lt;";
+      break;
+    case '>':
+      escaped += "&gt;";
+      break;
+    case '"':
+      escaped += "&quot;";
+      break;
+    case '\'':
+      escaped += "&apos;";
+      break;
+    default:
+      escaped += c;
+    }
+  return escaped;
 }
 } // namespace
 

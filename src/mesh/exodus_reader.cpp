@@ -2,6 +2,7 @@
 #include "mesh/exodus_io.hpp"
 
 #include "base/errors.hpp"
+#include "base/log.hpp"
 #include "mesh/exodus_file.hpp"
 #include "mesh/netcdf_header.hpp"
 
@@ -9,6 +10,7 @@
 #include <netcdf.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -240,6 +242,8 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
     if (n_sides > 0)
       check_exodus(ex_get_side_set(exo, set.id, elems.data(), sides.data()), path,
                    "reading side set " + std::to_string(set.id));
+    std::set<std::pair<int, int>> seen;
+    int repeats = 0, first_elem = 0, first_side = 0;
     for (int i = 0; i < n_sides; ++i)
     {
       KILN_CHECK_INPUT(elems[i] >= 1 && elems[i] <= n_cells, path,
@@ -256,9 +260,23 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
                                    << "): side number " << sides[i]
                                    << " is outside 1..6, the sides of a HEX8; the side set "
                                       "may hold edges or nodes: redefine it on element faces");
+      // A face listed twice would take its flux, traction or pressure twice: keep it once.
+      if (!seen.insert({elems[i], sides[i]}).second)
+      {
+        if (repeats++ == 0)
+          first_elem = elems[i], first_side = sides[i];
+        continue;
+      }
       set.cells.push_back(elems[i] - 1);
       set.faces.push_back(sides[i] - 1);
     }
+    if (repeats > 0)
+      warn_once(path + ": side set " + std::to_string(set.id) + " lists " +
+                std::to_string(repeats) + " face" + (repeats == 1 ? "" : "s") +
+                " more than once (the first: element " + std::to_string(first_elem) + ", side " +
+                std::to_string(first_side) +
+                "); Kiln counts each face once, so a condition on it applies once. Remove the "
+                "repeated entries from the mesh to silence this warning");
     mesh.side_sets.push_back(std::move(set));
   }
   std::stable_sort(mesh.side_sets.begin(), mesh.side_sets.end(),
@@ -287,6 +305,51 @@ int open_exodus_for_reading(const std::string &path)
   return id;
 }
 
+/// Refuses coordinates that are all equal in one direction (a flat mesh). The Exodus library
+/// takes a coordinate variable with netCDF id 0 for an absent one and returns zeros (scipy's
+/// netCDF writer stores "coordx" first): such a variable is read with the netCDF library.
+void check_coordinates_span(const int exo, const std::string &path,
+                            const std::array<std::vector<double> *, 3> &coordinates)
+{
+  const int n_nodes = static_cast<int>(coordinates[0]->size());
+  if (n_nodes < 2)
+    return;
+  const char *const axes[3] = {"x", "y", "z"};
+  const auto flat = [](const std::vector<double> &values)
+  {
+    const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
+    return *lowest == *highest;
+  };
+  for (int d = 0; d < 3; ++d)
+  {
+    std::vector<double> &values = *coordinates[d];
+    if (!flat(values))
+      continue;
+    const std::string variable = std::string("coord") + axes[d];
+    int variable_id = -1;
+    if (nc_inq_varid(exo, variable.c_str(), &variable_id) == NC_NOERR && variable_id == 0)
+    {
+      std::vector<double> direct(values.size());
+      if (nc_get_var_double(exo, variable_id, direct.data()) == NC_NOERR && !flat(direct))
+      {
+        values = std::move(direct);
+        warn_once(path + ": the Exodus library read \"" + variable +
+                  "\" as all zeros, because the file stores it as netCDF variable 0 (as "
+                  "scipy.io.netcdf writes it), which that library takes for an absent variable; "
+                  "Kiln read the coordinates with the netCDF library instead. Re-export the "
+                  "mesh (Cubit, seacas, kiln --write-mesh) for other Exodus tools, which "
+                  "misread it the same way");
+        continue;
+      }
+    }
+    KILN_CHECK_INPUT(false, path,
+                     "all " << n_nodes << " nodes have " << axes[d] << " = " << values.front()
+                            << ", so the mesh has no extent in " << axes[d]
+                            << " and holds no 3D cell: check the program that wrote the file "
+                               "(its \""
+                            << variable << "\" values are all equal)");
+  }
+}
 } // namespace
 
 Mesh read_exodus_mesh(const std::string &path, const double scale)
@@ -328,11 +391,11 @@ Mesh read_exodus_mesh(const std::string &path, const double scale)
   {
     check_exodus(ex_get_coord(id, x.data(), y.data(), z.data()), path, "reading the coordinates");
   }
+  internal::read_blocks(id, path, n_blocks, n_nodes, mesh); // element types checked first
+  check_coordinates_span(id, path, {&x, &y, &z});
   mesh.coordinates.resize(n_nodes);
   for (int i = 0; i < n_nodes; ++i)
     mesh.coordinates[i] = {scale * x[i], scale * y[i], scale * z[i]};
-
-  internal::read_blocks(id, path, n_blocks, n_nodes, mesh);
   KILN_CHECK_INPUT(mesh.n_cells() == n_elems, path,
                    "the header announces " << n_elems << " elements but the blocks hold "
                                            << mesh.n_cells()

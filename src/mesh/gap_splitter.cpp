@@ -4,7 +4,9 @@
 #include "mesh/hex_geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -71,6 +73,46 @@ std::vector<int> cell_parts(const Mesh &mesh,
     p = rank_of[p];
   return part;
 }
+void check_not_unmerged(const Mesh &mesh, const SideSet &side_set, const std::string &where)
+{
+  // Coordinates compared after rounding to 1e-9 of the mesh's extent: two bodies meshed
+  // apart place their coincident nodes at the same point up to round-off.
+  Point lowest = mesh.coordinates.front(), highest = lowest;
+  for (const Point &p : mesh.coordinates)
+    for (int d = 0; d < 3; ++d)
+      lowest[d] = std::min(lowest[d], p[d]), highest[d] = std::max(highest[d], p[d]);
+  const double extent = std::max({highest[0] - lowest[0], highest[1] - lowest[1],
+                                  highest[2] - lowest[2], std::numeric_limits<double>::min()});
+  const auto rounded = [&](const Point &p)
+  {
+    std::array<long long, 3> key{};
+    for (int d = 0; d < 3; ++d)
+      key[d] = std::llround((p[d] - lowest[d]) / (1e-9 * extent));
+    return key;
+  };
+  std::map<std::array<long long, 3>, int> side_nodes;
+  for (int s = 0; s < side_set.n_sides(); ++s)
+    for (const int n : mesh.face_key(side_set.cells[s], side_set.faces[s]))
+      side_nodes.emplace(rounded(mesh.coordinates[n]), n);
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+  {
+    const auto it = side_nodes.find(rounded(mesh.coordinates[n]));
+    if (it == side_nodes.end() || it->second == n)
+      continue;
+    const Point &p = mesh.coordinates[n];
+    KILN_CHECK_INPUT(false, where,
+                     "side set " << side_set.id << " has no interior face: its faces touch "
+                                 << "other cells, but through nodes that are not merged (node "
+                                 << it->second + 1 << " of side set " << side_set.id << " and node "
+                                 << n + 1 << " are both at (" << p[0] << ", " << p[1] << ", "
+                                 << p[2]
+                                 << ")), so the bodies on its two sides are separate pieces of "
+                                    "the mesh with no face between them to split into a gap. "
+                                    "Merge the coincident nodes before exporting the mesh "
+                                    "(Cubit: \"merge all\"), and keep side set "
+                                 << side_set.id << " as the gap side set");
+  }
+}
 } // namespace internal
 
 void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
@@ -96,6 +138,8 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
     if (faces.at(key).size() == 2)
       cut.insert(key);
   }
+  if (cut.empty())
+    internal::check_not_unmerged(mesh, *side_set, where);
   KILN_CHECK_INPUT(!cut.empty(), where,
                    "side set " << side_set_id
                                << " has no interior face, so it cannot split the mesh into a "

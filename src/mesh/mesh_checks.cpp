@@ -12,15 +12,15 @@ namespace kiln
 {
 namespace
 {
-/// The largest distance from node 0 of a cell to its other nodes.
+/// The largest distance from node 0 of a cell to its other nodes (std::hypot: the squares
+/// of a cell 1e-170 m across underflow to 0, which made a tiny Coordinate Scale look like a
+/// mesh of collapsed cells).
 double cell_extent(const HexNodes &x)
 {
-  double d2 = 0.0;
+  double d = 0.0;
   for (int i = 1; i < n_hex_nodes; ++i)
-    d2 = std::max(d2, (x[i][0] - x[0][0]) * (x[i][0] - x[0][0]) +
-                          (x[i][1] - x[0][1]) * (x[i][1] - x[0][1]) +
-                          (x[i][2] - x[0][2]) * (x[i][2] - x[0][2]));
-  return std::sqrt(d2);
+    d = std::max(d, std::hypot(x[i][0] - x[0][0], x[i][1] - x[0][1], x[i][2] - x[0][2]));
+  return d;
 }
 
 /// Cells outside [smallest_cell, largest_cell] metres come from a wrong scale, not from a
@@ -52,6 +52,16 @@ void check_scale(const Mesh &mesh, const std::string &where, const std::string &
   }
   const std::string hint =
       scale_parameter.empty() ? std::string("fix the mesh") : "check " + scale_parameter;
+  // A scale that shrinks every cell below what Kiln resolves, some to zero where the
+  // coordinates underflow, collapses the mesh: name the scale, not the cells' Jacobians.
+  KILN_CHECK_INPUT(smallest_extent > 0.0 || largest_extent >= smallest_cell, where,
+                   "every cell is below "
+                       << smallest_cell << " m across (the largest, cell " << largest + 1 << ", is "
+                       << largest_extent
+                       << " m): the mesh has collapsed, to a point where "
+                          "coordinates underflow to 0; "
+                       << (scale_parameter.empty() ? std::string("fix the mesh")
+                                                   : "the cause is " + scale_parameter));
   // An extent of exactly 0 is a collapsed cell, which the Jacobian check below reports.
   KILN_CHECK_INPUT(smallest_extent == 0.0 || smallest_extent >= smallest_cell, where,
                    "cell " << smallest + 1 << " (block " << mesh.block_id[smallest] << ") is only "

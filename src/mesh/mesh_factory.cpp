@@ -1,6 +1,7 @@
 #include "mesh/mesh_factory.hpp"
 
 #include "base/errors.hpp"
+#include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/exodus_io.hpp"
@@ -50,6 +51,20 @@ MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string
   exodus_file_ = mesh_file.empty() ? params.sublist("Exodus").get<std::string>("File") : mesh_file;
   scale_ = params.sublist("Exodus").get<double>("Coordinate Scale");
   gap_side_set_ = params.get<int>("Gap Side Set");
+  if (!mesh_file.empty() && params.get<std::string>("Type") == "Box")
+  {
+    const auto &cells = params.sublist("Box").get<Teuchos::Array<int>>("Cells");
+    std::ostringstream note;
+    note << where_ << ": --mesh " << mesh_file
+         << " replaces the Box this input defines (Type = \"Box\", Cells {" << cells[0] << ", "
+         << cells[1] << ", " << cells[2] << "}); the file is read with Exodus/\"Coordinate "
+         << "Scale\" = " << scale_ << " [m per file unit]"
+         << (given_in_input(params.sublist("Exodus"), "Coordinate Scale")
+                 ? ""
+                 : ", the default: its coordinates are taken as metres (set Kiln/Mesh/Exodus/"
+                   "\"Coordinate Scale\" to 0.01 for a mesh in cm)");
+    warn_once(note.str());
+  }
   KILN_CHECK_INPUT(type_ != "Exodus" || !exodus_file_.empty(), where_ + "/Exodus/\"File\"",
                    "missing: Type = \"Exodus\" needs the path of the mesh file; set "
                    "Mesh/Exodus/\"File\" or run kiln --mesh FILE");

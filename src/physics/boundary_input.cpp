@@ -47,6 +47,11 @@ std::vector<int> read_boundary_side_sets(const Teuchos::ParameterList &p, const 
                      "side set " << id << " is not in the mesh; its boundary side sets are "
                                  << available.str()
                                  << ". Use one of these ids, or check the mesh file");
+    KILN_CHECK_INPUT(std::find(result.begin(), result.end(), id) == result.end(),
+                     path + "/\"Side Sets\"",
+                     "side set " << id
+                                 << " is listed twice; its faces would take the condition twice "
+                                    "(a flux doubled). List each side set once");
     result.push_back(id);
   }
   return result;

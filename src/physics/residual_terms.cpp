@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <array>
 #include <new>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace kiln
 {
@@ -69,13 +71,17 @@ void ResidualTerms::add_boundary_conditions(
 {
   for (const auto &condition : conditions)
     if (!condition->is_constraint())
+    {
+      // Two side sets of one condition may share faces: each face takes the condition once.
+      std::set<std::pair<int, int>> faces;
       for (const int id : condition->side_sets())
       {
         const SideSet &set = *mesh_.find_side_set(id);
         for (int s = 0; s < set.n_sides(); ++s)
-          if (owns_cell_[set.cells[s]])
+          if (owns_cell_[set.cells[s]] && faces.insert({set.cells[s], set.faces[s]}).second)
             faces_.push_back({set.cells[s], set.faces[s], condition.get()});
       }
+    }
 }
 
 void ResidualTerms::set_interface_kernel(const InterfaceKernel &kernel)

@@ -29,32 +29,37 @@ Chosen chosen_in(const std::map<std::string, std::string> &env)
 
 TEST(OpenMpiDefaults, ByHandOb1AndNoDaemon)
 {
-  EXPECT_THAT(chosen_in({}), ElementsAre(Pair("OMPI_MCA_pml", "ob1"),
-                                         Pair("OMPI_MCA_ess_singleton_isolated", "1")));
+  EXPECT_THAT(chosen_in({}),
+              ElementsAre(Pair("OMPI_MCA_pml", "ob1"), Pair("OMPI_MCA_ess_singleton_isolated", "1"),
+                          Pair("OMPI_MCA_sharedfp", "^lockedfile")));
 }
 
 TEST(OpenMpiDefaults, UnderMpirunOnOneNodeOb1)
 {
   EXPECT_THAT(chosen_in({{"OMPI_COMM_WORLD_SIZE", "2"}, {"OMPI_COMM_WORLD_LOCAL_SIZE", "2"}}),
-              ElementsAre(Pair("OMPI_MCA_pml", "ob1")));
+              ElementsAre(Pair("OMPI_MCA_pml", "ob1"), Pair("OMPI_MCA_sharedfp", "^lockedfile")));
 }
 
-TEST(OpenMpiDefaults, OnSeveralNodesOrUnderAnotherLauncherNothing)
+TEST(OpenMpiDefaults, OnSeveralNodesOrUnderAnotherLauncherOnlyTheSharedFilePointer)
 {
   EXPECT_THAT(chosen_in({{"OMPI_COMM_WORLD_SIZE", "4"}, {"OMPI_COMM_WORLD_LOCAL_SIZE", "2"}}),
-              IsEmpty());
-  EXPECT_THAT(chosen_in({{"OMPI_COMM_WORLD_SIZE", "4"}}), IsEmpty());
-  EXPECT_THAT(chosen_in({{"PMI_SIZE", "2"}}), IsEmpty());
+              ElementsAre(Pair("OMPI_MCA_sharedfp", "^lockedfile")));
+  EXPECT_THAT(chosen_in({{"OMPI_COMM_WORLD_SIZE", "4"}}),
+              ElementsAre(Pair("OMPI_MCA_sharedfp", "^lockedfile")));
+  EXPECT_THAT(chosen_in({{"PMI_SIZE", "2"}}),
+              ElementsAre(Pair("OMPI_MCA_sharedfp", "^lockedfile")));
 }
 
 TEST(OpenMpiDefaults, NeverOverTheUsersChoice)
 {
   EXPECT_THAT(chosen_in({{"OMPI_COMM_WORLD_SIZE", "2"},
                          {"OMPI_COMM_WORLD_LOCAL_SIZE", "2"},
-                         {"OMPI_MCA_pml", "ucx"}}),
+                         {"OMPI_MCA_pml", "ucx"},
+                         {"OMPI_MCA_sharedfp", "sm"}}),
               IsEmpty());
   EXPECT_THAT(chosen_in({{"OMPI_MCA_pml", "cm"}}),
-              ElementsAre(Pair("OMPI_MCA_ess_singleton_isolated", "1")));
+              ElementsAre(Pair("OMPI_MCA_ess_singleton_isolated", "1"),
+                          Pair("OMPI_MCA_sharedfp", "^lockedfile")));
   EXPECT_THAT(chosen_in({{"OMPI_MCA_ess_singleton_isolated", "0"}}),
-              ElementsAre(Pair("OMPI_MCA_pml", "ob1")));
+              ElementsAre(Pair("OMPI_MCA_pml", "ob1"), Pair("OMPI_MCA_sharedfp", "^lockedfile")));
 }

@@ -125,3 +125,16 @@ TEST(OutputSchedule, FileBaseMustNotBeAFolder)
   if (comm->getRank() == 0)
     std::filesystem::remove_all(folder);
 }
+
+// The UTF-8 check of File Base's name (the XDMF index is UTF-8 XML): ASCII and UTF-8 pass, a
+// Latin-1 letter, a cut-off sequence and an overlong lead byte are found at their index.
+TEST(OutputSchedule, FirstNonUtf8Byte)
+{
+  using kiln::internal::first_non_utf8_byte;
+  EXPECT_EQ(first_non_utf8_byte("steel&al"), std::string::npos);
+  EXPECT_EQ(first_non_utf8_byte("acier-\xc3\xa9t\xc3\xa9"), std::string::npos);
+  EXPECT_EQ(first_non_utf8_byte("\xe2\x82\xac and \xf0\x9f\x94\xa5"), std::string::npos);
+  EXPECT_EQ(first_non_utf8_byte("acier-\xe9t\xe9"), 6U);
+  EXPECT_EQ(first_non_utf8_byte("ab\xc3"), 2U);
+  EXPECT_EQ(first_non_utf8_byte("\xc0\xaf"), 0U);
+}
