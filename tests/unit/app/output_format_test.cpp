@@ -167,7 +167,7 @@ TEST(OutputFormat, HdfAndExodusHoldTheSameSteps)
     }
     ++found;
   }
-  // temperature, displacement_x/y/z, gap_opening, gap_normal_traction, contact_active,
+  // temperature, displacement_x/y/z, gap_opening, contact_pressure, contact_active,
   // gap_heat_flux
   EXPECT_EQ(found, 8);
   ex_get_variable_param(exo, EX_ELEM_BLOCK, &n_vars);
