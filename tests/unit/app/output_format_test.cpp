@@ -14,8 +14,10 @@
 #include <Teuchos_Tuple.hpp>
 #include <exodusII.h>
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -190,6 +192,37 @@ TEST(OutputFormat, ExodusAloneWritesNoHdf)
   EXPECT_FALSE(std::filesystem::exists(base + ".xmf"));
 }
 
+/// Makes the results file `h5` as Kiln wrote it before changelog 0032: every
+/// /steps/NNNNNN/contact_pressure becomes gap_normal_traction, negated.
+void make_legacy_traction(const std::string &h5)
+{
+  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  for (int s = 0;; ++s)
+  {
+    char name[64];
+    std::snprintf(name, sizeof name, "/steps/%06d/contact_pressure", s);
+    if (H5Lexists(file, "/steps", H5P_DEFAULT) <= 0 ||
+        H5Oexists_by_name(file, name, H5P_DEFAULT) <= 0)
+      break;
+    const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(set);
+    for (double &v : values)
+      v = -v;
+    H5Ldelete(file, name, H5P_DEFAULT);
+    std::snprintf(name, sizeof name, "/steps/%06d/gap_normal_traction", s);
+    const hid_t legacy =
+        H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dwrite(legacy, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(legacy);
+    H5Sclose(space);
+  }
+  H5Fclose(file);
+}
+
 // A continued run's Exodus file holds the earlier run's steps (replayed from its HDF5 file
 // before the history rows are read) with their global variables, then its own.
 TEST(OutputFormat, ExodusContinuedByARestartKeepsTheGlobalVariables)
@@ -206,5 +239,40 @@ TEST(OutputFormat, ExodusContinuedByARestartKeepsTheGlobalVariables)
   ASSERT_GE(exo, 0);
   ASSERT_EQ(ex_inquire_int(exo, EX_INQ_TIME), 3);
   check_globals_and_set_names(exo, base);
+  ex_close(exo);
+}
+
+// Results written before changelog 0032 (minus the pressure as gap_normal_traction) continue
+// as contact_pressure: one field through the series, in the HDF5 and the Exodus file.
+TEST(OutputFormat, RestartContinuesLegacyTractionAsContactPressure)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string base = "output_format_np" + std::to_string(comm->getSize()) + "/legacy";
+  run(base, "HDF5 and Exodus");
+  if (comm->getRank() == 0)
+    make_legacy_traction(base + ".h5");
+  comm->barrier();
+  run(base, "HDF5 and Exodus", base + ".checkpoint.h5");
+  if (comm->getRank() != 0)
+    return;
+  for (const int step : {0, 1, 2})
+  {
+    double time = 0.0;
+    const std::vector<double> p =
+        kiln_test::read_step(base + ".h5", "contact_pressure", step, time);
+    ASSERT_FALSE(p.empty()) << "step " << step;
+    for (const double v : p)
+    {
+      if (!std::isnan(v))
+      {
+        EXPECT_GE(v, 0.0) << "step " << step;
+      }
+    }
+  }
+  int cpu_ws = 8, io_ws = 0;
+  float version = 0;
+  const int exo = ex_open((base + ".exo").c_str(), EX_READ, &cpu_ws, &io_ws, &version);
+  ASSERT_GE(exo, 0);
+  EXPECT_EQ(ex_inquire_int(exo, EX_INQ_TIME), 3);
   ex_close(exo);
 }
