@@ -88,7 +88,7 @@ Voigt rotated_diagonal(const Matrix &A, const std::array<double, 3> &d)
 struct ExactState
 {
   Voigt stress{}, strain{};
-  double gap_normal_traction = 0.0, gap_opening = 0.0;
+  double contact_pressure = 0.0, gap_opening = 0.0; ///< [Pa] > 0 in compression, [m]
 };
 
 /// The uniform state at dT = T - T_ref, closed or open gap, in the mesh frame.
@@ -104,7 +104,7 @@ ExactState exact_state(const bool closed, const kiln::Material &m, const double 
     s.stress = rotated_diagonal(A, {sigma, 0.0, sigma});
     s.strain =
         rotated_diagonal(A, {0.0, (3 * lambda + 2 * G) * alpha * dT / (lambda + 2 * G), 0.0});
-    s.gap_normal_traction = sigma;
+    s.contact_pressure = -sigma;
     s.gap_opening = 0.0;
   }
   else
@@ -112,7 +112,7 @@ ExactState exact_state(const bool closed, const kiln::Material &m, const double 
     const double eps = (1.0 + nu) * alpha * dT;
     s.stress = rotated_diagonal(A, {0.0, 0.0, -E * alpha * dT});
     s.strain = rotated_diagonal(A, {eps, eps, 0.0});
-    s.gap_normal_traction = 0.0;
+    s.contact_pressure = 0.0;
     s.gap_opening = -2.0 * half_width * eps;
   }
   return s;
@@ -378,7 +378,7 @@ int report(const Options &o)
   const Field temperature = results.read(step + "/temperature", n_nodes, 1);
   const Field stress = results.read(step + "/stress", n_cells, 6, needs_mechanics);
   const Field strain = results.read(step + "/strain", n_cells, 6, needs_mechanics);
-  const Field traction = results.read(step + "/gap_normal_traction", n_nodes, 1, needs_gap);
+  const Field pressure = results.read(step + "/contact_pressure", n_nodes, 1, needs_gap);
   const Field active = results.read(step + "/contact_active", n_nodes, 1, needs_gap);
   const Field opening = results.read(step + "/gap_opening", n_nodes, 1, needs_gap);
 
@@ -415,7 +415,7 @@ int report(const Options &o)
   const double dT = T_mean - material.reference_temperature();
 
   // The gap: its nodes are those with a gap opening (NaN elsewhere).
-  std::vector<double> gap_traction, gap_opening;
+  std::vector<double> gap_pressure, gap_opening;
   std::size_t n_gap = 0, n_active = 0;
   for (std::size_t n = 0; n < n_nodes; ++n)
   {
@@ -423,7 +423,7 @@ int report(const Options &o)
       continue;
     ++n_gap;
     n_active += active.at(n) > 0.5 ? 1 : 0;
-    gap_traction.push_back(traction.at(n));
+    gap_pressure.push_back(pressure.at(n));
     gap_opening.push_back(opening.at(n));
   }
   if (n_gap == 0)
@@ -487,17 +487,16 @@ int report(const Options &o)
     print_row(std::string("eps' ") + voigt_names[k] + " [-]", column, exact.strain[k],
               strain_scale);
   }
-  print_row("gap normal traction [Pa]", gap_traction, exact.gap_normal_traction, stress_scale,
-            "Pa");
+  print_row("contact pressure [Pa]", gap_pressure, exact.contact_pressure, stress_scale, "Pa");
   print_row("gap opening [m]", gap_opening, exact.gap_opening, 0.0, "m");
   char dT_text[48];
   std::snprintf(dT_text, sizeof dT_text, "%.6f K", dT);
   std::cout << "  (mesh frame, Voigt order, tensor shear strains; gap rows over the " << n_gap
             << " gap nodes; error:\n"
             << "   max |Kiln - exact| / largest exact component of the tensor (the stress's for "
-            << "the gap\n"
-            << "   traction), absolute for the gap opening; exact state at dT = mean T - T_ref = "
-            << dT_text << ")\n";
+            << "the\n"
+            << "   contact pressure, > 0 in compression), absolute for the gap opening; exact\n"
+            << "   state at dT = mean T - T_ref = " << dT_text << ")\n";
   return 0;
 }
 } // namespace

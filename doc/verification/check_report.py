@@ -34,14 +34,14 @@ HERE = Path(__file__).resolve().parent
 # exactly, so a correct code reproduces them to round-off; Kiln reproduces them to the
 # accuracy of its iterative solves (Newton 1e-8 relative, GMRES 1e-10), and the final
 # states carry what is left of the transient (1.5e-6 K of temperature spread at 150 s in
-# variant A: 1e-7 of the stress). Observed at most 1e-7 (stress, strain, traction),
+# variant A: 1e-7 of the stress). Observed at most 1e-7 (stress, strain, contact pressure),
 # 3e-13 m (opening), 1e-6 K (temperature); a bound 10 to 100 times above that fails at a
 # change of 1e-6 of the state.
 BOUNDS = {
     "T error [K]": 1e-5,       # of a 10 to 110 K change
     "stress": 1e-6,            # relative to the largest exact stress component
     "strain": 1e-6,            # relative to the largest exact strain component
-    "gap traction": 1e-6,      # relative to the largest exact stress component
+    "contact pressure": 1e-6,  # relative to the largest exact stress component
     "gap opening [m]": 1e-11,  # 1e-6 of the 1.17e-5 m opening
 }
 STATES = {("A-close", 0): "open", ("A-close", 150): "closed",

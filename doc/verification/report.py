@@ -307,22 +307,22 @@ def full_series(path):
     with h5py.File(path, "r") as f:
         geometry = Geometry(f)
         names = step_names(f)
-        s = {k: [] for k in ("time", "T_end", "T_gap_1", "T_gap_2", "T_mean", "traction",
-                             "traction_min", "traction_max", "opening_max", "opening_min",
+        s = {k: [] for k in ("time", "T_end", "T_gap_1", "T_gap_2", "T_mean", "pressure",
+                             "pressure_min", "pressure_max", "opening_max", "opening_min",
                              "in_contact") + TENSOR_COMPONENTS}
         for name in names:
             step = f[f"/steps/{name}"]
             T = step["temperature"][:]
-            traction = step["gap_normal_traction"][:][geometry.gap]
+            pressure = step["contact_pressure"][:][geometry.gap]
             opening = step["gap_opening"][:][geometry.gap]
             s["time"].append(step.attrs["time"])
             s["T_end"].append(T[geometry.end].mean())
             s["T_gap_1"].append(T[geometry.gap_1].mean())
             s["T_gap_2"].append(T[geometry.gap_2].mean())
             s["T_mean"].append(T.mean())
-            s["traction"].append(traction.mean())
-            s["traction_min"].append(traction.min())
-            s["traction_max"].append(traction.max())
+            s["pressure"].append(pressure.mean())
+            s["pressure_min"].append(pressure.min())
+            s["pressure_max"].append(pressure.max())
             s["opening_max"].append(opening.max())
             s["opening_min"].append(opening.min())
             s["in_contact"].append(step["contact_active"][:][geometry.gap].mean())
@@ -360,7 +360,7 @@ def gap_event_time(times, opening, closing):
 
 # --- the report tool's table -----------------------------------------------------------------
 
-ROW = re.compile(r"^  (sigma' \w\w \[Pa\]|eps' \w\w \[-\]|gap normal traction \[Pa\]|"
+ROW = re.compile(r"^  (sigma' \w\w \[Pa\]|eps' \w\w \[-\]|contact pressure \[Pa\]|"
                  r"gap opening \[m\])\s+(" + NUMBER + r") \.\. (" + NUMBER + r")\s+(" + NUMBER +
                  r")\s+(" + NUMBER + r")( \w+)?( abs\.)?\s*$")
 HEAD = re.compile(r"^contact box at t = (\S+) s: gap (closed|open|partly closed) \((\d+) of "
@@ -393,7 +393,7 @@ def table_errors(table):
         errors = [r["error"] for name, r in rows.items() if name.startswith(prefix)]
         return max(errors) if errors else float("nan")
     return {"stress": largest("sigma'"), "strain": largest("eps'"),
-            "traction": largest("gap normal traction"), "opening": largest("gap opening")}
+            "pressure": largest("contact pressure"), "opening": largest("gap opening")}
 
 
 # --- heat convergence tests ------------------------------------------------------------------
@@ -484,10 +484,10 @@ def plot_gap(variant, cases, path):
     for column, case in enumerate(cases):
         s = case["series"]
         ax = axes[0, column]
-        ax.fill_between(s["time"], s["traction_min"] / 1e6, s["traction_max"] / 1e6,
+        ax.fill_between(s["time"], s["pressure_min"] / 1e6, s["pressure_max"] / 1e6,
                         alpha=0.3, label="min .. max over the gap nodes")
-        ax.plot(s["time"], s["traction"] / 1e6, label="mean over the gap nodes")
-        ax.set_ylabel("gap normal traction [MPa]")
+        ax.plot(s["time"], s["pressure"] / 1e6, label="mean over the gap nodes")
+        ax.set_ylabel("contact pressure [MPa]\n(> 0 in compression)")
         ax.set_title(title(case), fontsize=9)
         time_axis(ax, variant)
         mark_event(ax, case)
@@ -665,7 +665,7 @@ def fmt(value, digits=1):
 
 def summary_table(cases):
     lines = ["| run | t [s] | gap: Kiln (expected) | mean T [K] (expected) | T error [K] | "
-             "T spread [K] | stress | strain | gap traction | gap opening [m] |",
+             "T spread [K] | stress | strain | contact pressure | gap opening [m] |",
              "|---|---:|---|---|---:|---:|---:|---:|---:|---:|"]
     for case in cases:
         for table, expected_T, T in zip(case["tables"], case["expected_T"],
@@ -676,7 +676,7 @@ def summary_table(cases):
                 f"| {case['key']} | {table['time']:g} | {table['gap']} ({expected_gap}) | "
                 f"{table['T']:.6f} ({expected_T:g}) | {fmt(abs(T - expected_T))} | "
                 f"{fmt(table['T_spread'])} | {fmt(errors['stress'])} | {fmt(errors['strain'])} | "
-                f"{fmt(errors['traction'])} | {fmt(errors['opening'])} |")
+                f"{fmt(errors['pressure'])} | {fmt(errors['opening'])} |")
     return "\n".join(lines)
 
 
@@ -715,7 +715,7 @@ def write_report(out, args, cases, refinement, heat, runner, spec, started, elap
            "compared by `kiln_contact_box_report` (tools/contact_box_report.cpp, which "
            "computes the spec's formulas from the deck's material and rotation). Errors: "
            "max |Kiln - exact| over the cells (gap nodes) divided by the largest exact "
-           "component of the tensor (the stress's for the traction); absolute for the gap "
+           "component of the tensor (the stress's for the contact pressure); absolute for the gap "
            "opening [m]; T error: |mean T over the nodes - the temperature the deck starts "
            "at or drives to|; T spread: max - min over the nodes.", "",
            summary_table(cases), "",

@@ -1,6 +1,7 @@
 #include "io/exodus_results_file.hpp"
 
 #include "base/errors.hpp"
+#include "io/history_csv.hpp"
 
 #include <exodusII.h>
 
@@ -48,10 +49,14 @@ ExodusResultsFile::~ExodusResultsFile()
 
 void ExodusResultsFile::define_variables(const ExodusVariables &variables) const
 {
-  ExodusNames globals({"dt", "cycle"});
-  check_exodus_write(ex_put_variable_param(exo_, EX_GLOBAL, 2), path_,
+  std::vector<std::string> global_names;
+  for (const HistoryColumn &column : history_columns())
+    global_names.push_back(column.name);
+  const int n_globals = static_cast<int>(global_names.size());
+  ExodusNames globals(global_names);
+  check_exodus_write(ex_put_variable_param(exo_, EX_GLOBAL, n_globals), path_,
                      "defining the global variables");
-  check_exodus_write(ex_put_variable_names(exo_, EX_GLOBAL, 2, globals.data()), path_,
+  check_exodus_write(ex_put_variable_names(exo_, EX_GLOBAL, n_globals, globals.data()), path_,
                      "naming the global variables");
   for (const Center center : {Center::node, Center::cell})
   {
@@ -80,8 +85,10 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
   const int exodus_step = step.index + 1; // Exodus counts from 1
   const std::string what = "writing output step " + std::to_string(step.index);
   check_exodus_write(ex_put_time(exo_, exodus_step, &step.time), path_, what);
-  const double globals[2] = {step.dt, static_cast<double>(step.cycle)};
-  check_exodus_write(ex_put_glob_vars(exo_, exodus_step, 2, globals), path_, what);
+  KILN_ASSERT(step.globals.size() == history_columns().size(), "one global per history column");
+  check_exodus_write(ex_put_var(exo_, exodus_step, EX_GLOBAL, 1, 0,
+                                static_cast<int64_t>(step.globals.size()), step.globals.data()),
+                     path_, what);
   for (std::size_t f = 0; f < step.fields.size(); ++f)
   {
     const FieldSpec &field = step.fields[f];
@@ -100,6 +107,16 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
         write_cell_variable(exodus_step, first + k, data, field_what);
     }
   }
+  check_exodus_write(ex_update(exo_), path_, "flushing the file after " + what);
+}
+
+void ExodusResultsFile::write_globals(const int index, const std::vector<double> &globals) const
+{
+  KILN_ASSERT(globals.size() == history_columns().size(), "one global per history column");
+  const std::string what = "writing the global variables of output step " + std::to_string(index);
+  check_exodus_write(ex_put_var(exo_, index + 1, EX_GLOBAL, 1, 0,
+                                static_cast<int64_t>(globals.size()), globals.data()),
+                     path_, what);
   check_exodus_write(ex_update(exo_), path_, "flushing the file after " + what);
 }
 

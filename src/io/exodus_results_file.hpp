@@ -1,7 +1,8 @@
 #pragma once
 /// Private to src/io: the Exodus II results file, as rank 0 writes it alone (the values come
 /// gathered). The mesh as exodus_layout() names it (with the element attribute "cell_rank"),
-/// the global variables "dt" and "cycle", and the node and element variables of
+/// one global variable per column of the time history (history_columns(), named as the
+/// columns), and the node and element variables of
 /// ExodusVariables, element variables on every block. Every member function throws an
 /// InputError naming the file when an Exodus call fails; the destructor closes the file.
 #include "io/exodus_variables.hpp"
@@ -32,15 +33,17 @@ public:
   /// each in global-id order.
   struct Step
   {
-    int index;   ///< 0-based (Exodus time step index + 1)
-    double time; ///< [s]
-    double dt;   ///< [s]
-    int cycle;   ///< time steps taken
+    int index;                          ///< 0-based (Exodus time step index + 1)
+    double time;                        ///< [s]
+    const std::vector<double> &globals; ///< one per history column, history_columns() order
     const std::vector<FieldSpec> &fields;
     const std::vector<std::vector<double>> &values; ///< per field
   };
   /// Writes the step's time, global variables and fields, then flushes the file.
   void write_step(const Step &step, const ExodusVariables &variables) const;
+  /// Writes the global variables of the written step `index` (0-based) again, then flushes
+  /// the file: a step whose history row comes after it (a continued run's earlier steps).
+  void write_globals(int index, const std::vector<double> &globals) const;
 
 private:
   void write_cell_variable(int step, int variable, const double *values,

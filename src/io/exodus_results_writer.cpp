@@ -3,11 +3,14 @@
 #include "io/collective_checks.hpp"
 #include "io/exodus_results_file.hpp"
 #include "io/exodus_variables.hpp"
+#include "io/history_csv.hpp"
 #include "io/row_gather.hpp"
 
 #include "base/errors.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 namespace kiln
@@ -38,7 +41,12 @@ struct ExodusResultsWriter::Impl
   void check_field(const FieldSpec &field) const;
   void write_field(const FieldSpec &field, const std::vector<double> &values);
   /// Rank 0: the variables at the first step, then the step with its gathered `values`.
-  void write_step(bool first_step, const std::vector<std::vector<double>> &values) const;
+  void write_step(bool first_step, const std::vector<std::vector<double>> &values,
+                  const std::vector<double> &globals) const;
+  /// The global variables of the step being ended: the last history row if it is this
+  /// step's (its "step" is the cycle), else step, time and dt with NaN for the rest, and the
+  /// step waits in `pending` for its row.
+  std::vector<double> step_globals();
 
   MPI_Comm comm;
   int rank = 0;
@@ -54,6 +62,9 @@ struct ExodusResultsWriter::Impl
   double dt = 0.0;
   std::vector<FieldSpec> step_fields;
   std::vector<std::vector<double>> step_values;
+  std::vector<double> last_row; ///< the last history row given, or empty
+  /// Written output steps without their history row yet: (cycle, output step index).
+  std::vector<std::pair<int, int>> pending;
   std::unique_ptr<internal::ExodusResultsFile> file;
 };
 
@@ -99,12 +110,39 @@ void ExodusResultsWriter::Impl::write_field(const FieldSpec &field,
   step_fields.push_back(field);
 }
 
+namespace
+{
+/// The index of the history column `name`.
+std::size_t history_column(const std::string &name)
+{
+  const auto &columns = history_columns();
+  const auto it = std::find_if(columns.begin(), columns.end(),
+                               [&](const HistoryColumn &c) { return c.name == name; });
+  KILN_ASSERT(it != columns.end(), name);
+  return static_cast<std::size_t>(it - columns.begin());
+}
+} // namespace
+
+std::vector<double> ExodusResultsWriter::Impl::step_globals()
+{
+  const std::size_t step_column = history_column("step");
+  if (!last_row.empty() && last_row[step_column] == cycle)
+    return last_row;
+  std::vector<double> globals(history_columns().size(), std::numeric_limits<double>::quiet_NaN());
+  globals[step_column] = cycle;
+  globals[history_column("time")] = time;
+  globals[history_column("dt")] = dt;
+  pending.emplace_back(cycle, n_steps);
+  return globals;
+}
+
 void ExodusResultsWriter::Impl::write_step(const bool first_step,
-                                           const std::vector<std::vector<double>> &values) const
+                                           const std::vector<std::vector<double>> &values,
+                                           const std::vector<double> &globals) const
 {
   if (first_step)
     file->define_variables(variables);
-  file->write_step({n_steps, time, dt, cycle, step_fields, values}, variables);
+  file->write_step({n_steps, time, globals, step_fields, values}, variables);
 }
 
 ExodusResultsWriter::ExodusResultsWriter(const MPI_Comm comm, const std::string &base_path,
@@ -165,8 +203,37 @@ void ExodusResultsWriter::end_step()
     m.variables.define(m.step_fields);
   std::vector<std::vector<double>> values;
   values.swap(m.step_values); // released when this call ends, written or not
-  internal::run_on_rank_zero(m.comm, [&] { m.write_step(first_step, values); });
+  const std::vector<double> globals = m.step_globals();
+  internal::run_on_rank_zero(m.comm, [&] { m.write_step(first_step, values, globals); });
   ++m.n_steps;
+}
+
+/// The row of a written step (a continued run's earlier steps, replayed before their rows
+/// are read) completes its global variables; rows of steps not written are kept until the
+/// next end_step().
+void ExodusResultsWriter::write_history(const std::vector<double> &row)
+{
+  Impl &m = *impl_;
+  internal::check_usage(row.size() == history_columns().size(),
+                        "row.size() == history_columns().size()",
+                        "a history row needs one value per column of history_columns()");
+  m.last_row = row;
+  const double step = row[history_column("step")];
+  std::vector<int> complete; // output steps of this row
+  for (const auto &[cycle, index] : m.pending)
+    if (cycle == step)
+      complete.push_back(index);
+  // Rows come in increasing step order: a pending step before this row has lost its row.
+  m.pending.erase(std::remove_if(m.pending.begin(), m.pending.end(),
+                                 [&](const std::pair<int, int> &p) { return p.first <= step; }),
+                  m.pending.end());
+  if (!complete.empty())
+    internal::run_on_rank_zero(m.comm,
+                               [&]
+                               {
+                                 for (const int index : complete)
+                                   m.file->write_globals(index, row);
+                               });
 }
 
 void ExodusResultsWriter::finish(const std::string & /*status*/)

@@ -58,13 +58,14 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
   if (problem_.has_contact())
   {
     const CoupledProblem::ContactOutput contact = problem_.contact_output(x);
-    std::vector<double> traction, active;
+    // One sign for the gap everywhere: the pressure, positive in compression (+ 0.0: no -0).
+    std::vector<double> pressure, active;
     for (const int n : dofs_.owned_nodes())
     {
-      traction.push_back(contact.traction[n]);
+      pressure.push_back(-contact.traction[n] + 0.0);
       active.push_back(contact.active[n]);
     }
-    writer.write_node_field("gap_normal_traction", 1, traction);
+    writer.write_node_field("contact_pressure", 1, pressure);
     writer.write_node_field("contact_active", 1, active);
   }
   if (layout.temperature && !mesh_.gap_pairs.empty())

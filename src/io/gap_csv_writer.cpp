@@ -6,7 +6,6 @@
 #include "io/history_csv.hpp"
 #include "io/row_gather.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -39,8 +38,8 @@ void GapCsvWriter::begin_step(const double time, int, double)
 void GapCsvWriter::write_node_field(const std::string &name, const int n_components,
                                     const std::vector<double> &values)
 {
-  static const char *kept[] = {"gap_opening", "gap_normal_traction", "gap_heat_flux",
-                               "contact_active", "temperature"};
+  static const char *kept[] = {"gap_opening", "contact_pressure", "gap_heat_flux", "contact_active",
+                               "temperature"};
   for (const char *k : kept)
     if (name == k && n_components == 1)
       fields_[name] = gather_->to_rank_zero(values, 1);
@@ -61,20 +60,18 @@ void GapCsvWriter::end_step()
         };
         const std::string temporary = file + ".tmp";
         std::ofstream out(temporary, std::ios::trunc);
-        out << "time,pair,x,y,z,s,t,gap_opening,contact_pressure,gap_heat_flux,contact_active,"
-               "temperature_a,temperature_b\n";
+        out << "time [s],pair [-],x [m],y [m],z [m],s [m],t [m],gap_opening [m],"
+               "contact_pressure [Pa],gap_heat_flux [W/m^2],contact_active [-],"
+               "temperature_a [K],temperature_b [K]\n";
         const std::string time = history_number(time_);
         for (int p = 0; p < gap_->n_points(); ++p)
         {
           const std::int64_t a = gap_->node_a[p], b = gap_->node_b[p];
-          // The traction across the gap is -p: the pressure is positive in compression.
-          const double traction = value("gap_normal_traction", a);
           out << time << "," << p;
           for (const double v :
                {gap_->points[p][0], gap_->points[p][1], gap_->points[p][2], gap_->s[p], gap_->t[p],
-                value("gap_opening", a), std::isnan(traction) ? traction : -traction + 0.0,
-                value("gap_heat_flux", a), value("contact_active", a), value("temperature", a),
-                value("temperature", b)})
+                value("gap_opening", a), value("contact_pressure", a), value("gap_heat_flux", a),
+                value("contact_active", a), value("temperature", a), value("temperature", b)})
             out << "," << history_number(v);
           out << "\n";
         }

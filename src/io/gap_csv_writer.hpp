@@ -23,7 +23,8 @@ class RowGather;
 /// row per gap pair (side a) with the time, the pair's position (x, y, z and the in-plane
 /// s, t of internal::GapSurface), the gap opening, the contact pressure (positive in
 /// compression), the heat flux across the gap, the contact state and the temperatures of
-/// both sides; "nan" for what the run does not have. The node fields are gathered to rank 0,
+/// both sides; "nan" for what the run does not have. Each header is "NAME [UNIT]". The node
+/// fields are gathered to rank 0,
 /// which writes each file under a temporary name and renames it. Collective; InputError on
 /// every rank when a file cannot be written.
 class GapCsvWriter final : public ResultsWriter

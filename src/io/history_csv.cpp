@@ -17,11 +17,12 @@ namespace internal
 {
 namespace
 {
-std::string header_line()
+/// "step [-],time [s],...", or without the units as Kiln wrote it before changelog 0032.
+std::string header_line(const bool units = true)
 {
   std::string line;
   for (const HistoryColumn &c : history_columns())
-    line += (line.empty() ? "" : ",") + c.name;
+    line += (line.empty() ? "" : ",") + c.name + (units ? " [" + c.unit + "]" : "");
   return line;
 }
 
@@ -103,7 +104,8 @@ HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int s
                  " (the earlier run's history) is missing; the history starts at the "
                  "restart, step " +
                  std::to_string(step);
-    else if (!std::getline(in, line) || line != internal::header_line())
+    else if (!std::getline(in, line) ||
+             (line != internal::header_line() && line != internal::header_line(false)))
     {
       in.close();
       std::error_code ignored;

@@ -7,8 +7,8 @@
 
 namespace kiln
 {
-/// One column of the history: its name (the CSV header and the HDF5 dataset /history/NAME),
-/// unit and meaning.
+/// One column of the history: its name (the HDF5 dataset /history/NAME and the Exodus global
+/// variable; the CSV header is "NAME [UNIT]"), unit and meaning.
 struct HistoryColumn
 {
   std::string name;
@@ -24,7 +24,8 @@ const std::vector<HistoryColumn> &history_columns();
 /// ("0.04", "53", "1e-06"), "nan" for NaN.
 std::string history_number(double value);
 
-/// BASE.history.csv: a header line with the column names, then one line per row, each
+/// BASE.history.csv: a header line with the column names and units ("time [s]"), then one
+/// line per row, each
 /// flushed as it is written (a run cut off keeps its rows). Rank 0 writes; every member
 /// function is collective and throws InputError on every rank when the file cannot be
 /// written.

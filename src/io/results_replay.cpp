@@ -104,10 +104,16 @@ int replay_results(const std::string &path, const double until, const ReplayRows
         if (H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, all_rows.data()) <
             0)
           throw std::runtime_error("cannot read step " + name + "/" + field);
-        Field f{field, on_nodes, n_components, {}};
+        // Files before changelog 0032 hold minus the contact pressure as gap_normal_traction:
+        // continued as contact_pressure, the field of the new steps.
+        const bool traction = field == "gap_normal_traction";
+        Field f{traction ? "contact_pressure" : field, on_nodes, n_components, {}};
         for (const int r : on_nodes ? rows.owned_nodes : rows.owned_cells)
           f.values.insert(f.values.end(), all_rows.begin() + std::size_t(r) * n_components,
                           all_rows.begin() + std::size_t(r + 1) * n_components);
+        if (traction)
+          for (double &v : f.values)
+            v = -v + 0.0;
         step.fields.push_back(std::move(f));
       }
       steps.push_back(std::move(step));

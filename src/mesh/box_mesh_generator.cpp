@@ -99,9 +99,14 @@ Mesh BoxMeshGenerator::generate() const
 
   // Side sets 1..6 and 10, filled while the cells are made.
   mesh.side_sets.resize(7);
+  const char *const face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
   for (int s = 0; s < 6; ++s)
+  {
     mesh.side_sets[s].id = s + 1;
+    mesh.side_sets[s].name = face_names[s];
+  }
   mesh.side_sets[6].id = 10;
+  mesh.side_sets[6].name = "gap";
   SideSet &gap = mesh.side_sets[6];
   const auto add_side = [](SideSet &set, const int cell, const int face)
   {

@@ -3,7 +3,8 @@
 /// own frame, then rotated (phi about y, then theta about x) and translated.
 /// Side sets as in the contact-box spec: 1 x = -Lx/2, 2 x = +Lx/2, 3 y = -Ly/2,
 /// 4 y = +Ly/2, 5 z = -Lz/2, 6 z = +Lz/2, 10 the plane x = 0 listed from both
-/// sides (block 1 first). Cells are numbered block 1 first, each block in
+/// sides (block 1 first); named x_min, x_max, y_min, y_max, z_min, z_max (in the box's own
+/// frame) and gap. Cells are numbered block 1 first, each block in
 /// x-fastest order; nodes in x-fastest order.
 #include "mesh/mesh.hpp"
 

@@ -56,7 +56,7 @@ UniformState closed_gap_state(const double E, const double nu, const double alph
   s.stress = rotate_diagonal(s.A, {sigma, 0.0, sigma});
   s.strain = rotate_diagonal(s.A, {0.0, s.eps_yy, 0.0});
   s.thermal_strain = {alpha * dT, alpha * dT, alpha * dT, 0.0, 0.0, 0.0};
-  s.gap_normal_traction = sigma;
+  s.contact_pressure = -sigma;
   s.gap_opening = 0.0;
   return s;
 }

@@ -28,8 +28,8 @@ struct UniformState
   kiln::Voigt stress{};
   kiln::Voigt strain{};
   kiln::Voigt thermal_strain{};
-  double gap_opening = 0.0;         ///< [m]
-  double gap_normal_traction = 0.0; ///< -p [Pa], negative in compression
+  double gap_opening = 0.0;      ///< [m]
+  double contact_pressure = 0.0; ///< p [Pa], positive in compression (minus the normal traction)
   // For the displacement field: the box-frame strains and the rotation.
   double eps_xx = 0.0;
   double eps_yy = 0.0;

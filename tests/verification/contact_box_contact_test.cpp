@@ -4,11 +4,11 @@
 // - the spec's table (7 digits) for the closed gap, dT = +10 and +100, is the formula's;
 // - inputs/contact-box-close.xml to 150 s: at 0 s the open-gap state at 288 K; at 50 s every
 //   gap pair is open (contact_active 0, gap_opening > 0), at 53 s every pair in contact
-//   (contact_active 1, |gap_opening| < 1e-12 m, compressive traction); at 150 s the temperature
+//   (contact_active 1, |gap_opening| < 1e-12 m, contact pressure > 0); at 150 s the temperature
 //   is 308 K to 1e-9 of dT and the closed-gap state holds: every cell's stress, strain and
 //   thermal strain to 1e-9 of the tensor's largest component (1e-3 Pa, 1e-13 where the exact
-//   value is 0), every node's displacement to 1e-9 of the largest, the gap normal traction at
-//   every gap node equal to sigma_xx = -E alpha dT / (1 - nu) of the box frame to 1e-9,
+//   value is 0), every node's displacement to 1e-9 of the largest, the contact pressure at
+//   every gap node equal to -sigma_xx = E alpha dT / (1 - nu) of the box frame to 1e-9,
 //   contact_active 1 and |gap_opening| < 1e-12 m;
 // - inputs/contact-box-open.xml to 53 s: at 0 s (after the initial equilibrium at 308 K) the
 //   same closed-gap state; every pair in contact at 50 s, every pair open at 53 s;
@@ -162,7 +162,7 @@ struct OutputStep
 {
   double time = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> temperature, displacement, stress, strain, thermal_strain;
-  std::vector<double> gap_opening, gap_normal_traction, contact_active;
+  std::vector<double> gap_opening, contact_pressure, contact_active;
 };
 
 OutputStep read_output_step(const std::string &h5, const int step)
@@ -175,7 +175,7 @@ OutputStep read_output_step(const std::string &h5, const int step)
   s.strain = read_step(h5, "strain", step, t);
   s.thermal_strain = read_step(h5, "thermal_strain", step, t);
   s.gap_opening = read_step(h5, "gap_opening", step, t);
-  s.gap_normal_traction = read_step(h5, "gap_normal_traction", step, t);
+  s.contact_pressure = read_step(h5, "contact_pressure", step, t);
   s.contact_active = read_step(h5, "contact_active", step, t);
   return s;
 }
@@ -187,9 +187,9 @@ std::vector<int> gap_nodes(const std::string &label, const OutputStep &s, const 
   std::vector<int> nodes;
   const std::size_t n_nodes = static_cast<std::size_t>(r.mesh.n_nodes());
   EXPECT_EQ(s.gap_opening.size(), n_nodes) << label;
-  EXPECT_EQ(s.gap_normal_traction.size(), n_nodes) << label;
+  EXPECT_EQ(s.contact_pressure.size(), n_nodes) << label;
   EXPECT_EQ(s.contact_active.size(), n_nodes) << label;
-  if (s.gap_opening.size() != n_nodes || s.gap_normal_traction.size() != n_nodes ||
+  if (s.gap_opening.size() != n_nodes || s.contact_pressure.size() != n_nodes ||
       s.contact_active.size() != n_nodes)
     return nodes;
   for (std::size_t n = 0; n < n_nodes; ++n)
@@ -198,9 +198,9 @@ std::vector<int> gap_nodes(const std::string &label, const OutputStep &s, const 
       nodes.push_back(static_cast<int>(n));
     else
     {
-      EXPECT_TRUE(std::isnan(s.gap_normal_traction[n]))
-          << label << ": node " << n << " off the gap has gap_normal_traction "
-          << s.gap_normal_traction[n];
+      EXPECT_TRUE(std::isnan(s.contact_pressure[n]))
+          << label << ": node " << n << " off the gap has contact_pressure "
+          << s.contact_pressure[n];
       EXPECT_TRUE(std::isnan(s.contact_active[n]))
           << label << ": node " << n << " off the gap has contact_active " << s.contact_active[n];
     }
@@ -212,8 +212,8 @@ std::vector<int> gap_nodes(const std::string &label, const OutputStep &s, const 
 constexpr double closed_opening_tolerance = 1e-12; // [m]
 
 /// Output step `step` (at `time`): every gap pair in contact (closed) or open. In contact:
-/// contact_active 1, |gap_opening| < 1e-12 m, a compressive traction; open: contact_active 0,
-/// gap_opening > 0, traction 0.
+/// contact_active 1, |gap_opening| < 1e-12 m, a positive (compressive) contact pressure; open:
+/// contact_active 0, gap_opening > 0, pressure 0.
 void check_gap(const std::string &label, const std::string &h5, const int step, const double time,
                const bool closed, const Run &r)
 {
@@ -223,7 +223,7 @@ void check_gap(const std::string &label, const std::string &h5, const int step, 
   double traction_min = opening_min, traction_max = -opening_min;
   for (const int n : gap_nodes(label, s, r))
   {
-    const double g = s.gap_opening[n], p = s.gap_normal_traction[n];
+    const double g = s.gap_opening[n], p = s.contact_pressure[n];
     opening_min = std::min(opening_min, g);
     opening_max = std::max(opening_max, g);
     traction_min = std::min(traction_min, p);
@@ -232,17 +232,17 @@ void check_gap(const std::string &label, const std::string &h5, const int step, 
     if (closed)
     {
       EXPECT_LT(std::abs(g), closed_opening_tolerance) << label << ": gap node " << n;
-      EXPECT_LT(p, 0.0) << label << ": gap node " << n << " normal traction";
+      EXPECT_GT(p, 0.0) << label << ": gap node " << n << " contact pressure";
     }
     else
     {
       EXPECT_GT(g, 0.0) << label << ": gap node " << n;
-      EXPECT_EQ(p, 0.0) << label << ": gap node " << n << " normal traction";
+      EXPECT_EQ(p, 0.0) << label << ": gap node " << n << " contact pressure";
     }
   }
   rank0_out() << label << ": gap " << (closed ? "closed" : "open") << " at t = " << s.time
               << " s: gap opening in [" << opening_min << ", " << opening_max
-              << "] m, normal traction in [" << traction_min << ", " << traction_max << "] Pa\n";
+              << "] m, contact pressure in [" << traction_min << ", " << traction_max << "] Pa\n";
 }
 
 /// Output step `step` (at `time`) is the uniform state `exact` at temperature T: the temperature
@@ -304,11 +304,11 @@ void check_uniform_state(const std::string &label, const std::string &h5, const 
   double opening_closed = 0.0; // max |gap opening| where closed
   for (const int n : gap_nodes(label, s, r))
   {
-    const double g = s.gap_opening[n], p = s.gap_normal_traction[n];
+    const double g = s.gap_opening[n], p = s.contact_pressure[n];
     EXPECT_EQ(s.contact_active[n], closed ? 1.0 : 0.0) << label << ": gap node " << n;
-    EXPECT_TRUE(traction.check(p, exact.gap_normal_traction, rel, 0.0))
-        << label << ": gap node " << n << " normal traction " << std::setprecision(12) << p
-        << " Pa, expected " << exact.gap_normal_traction;
+    EXPECT_TRUE(traction.check(p, exact.contact_pressure, rel, 0.0))
+        << label << ": gap node " << n << " contact pressure " << std::setprecision(12) << p
+        << " Pa, expected " << exact.contact_pressure;
     if (closed)
     {
       opening_closed = std::max(opening_closed, std::abs(g));
@@ -327,7 +327,7 @@ void check_uniform_state(const std::string &label, const std::string &h5, const 
               << stress.relative << ", strain " << strain.relative << ", thermal strain "
               << thermal_strain.relative << "; where 0: stress " << stress.absolute_at_zero
               << " Pa, strain " << strain.absolute_at_zero << "; max |u - u_exact| / max |u_exact| "
-              << u_error / u_scale << "; gap normal traction "
+              << u_error / u_scale << "; contact pressure "
               << (closed ? traction.relative : traction.absolute_at_zero)
               << (closed ? " relative" : " Pa") << ", gap opening "
               << (closed ? opening_closed : opening.relative) << (closed ? " m" : " relative")
@@ -425,7 +425,7 @@ TEST(ContactBoxContact, SpecTableIsTheClosedGapFormula)
                   std::max(1e-6 * std::abs(factor * strain_10[k]), 1e-12 * 3.3e-4 * factor))
           << "dT " << dT << ": strain " << voigt_name[k];
     }
-    EXPECT_NEAR(formula.gap_normal_traction, -2.288e7 * factor, 1e-6 * 2.288e7 * factor);
+    EXPECT_NEAR(formula.contact_pressure, 2.288e7 * factor, 1e-6 * 2.288e7 * factor);
     EXPECT_EQ(formula.gap_opening, 0.0);
   }
 }

@@ -3,7 +3,7 @@
 // - uniform temperature, open gap (contact on, as by default): every cell's stress, strain and
 //   thermal strain, every node's displacement and the gap opening at every gap node (read back
 //   from the HDF5 output) are the spec's uniform state to 1e-9 relative, and every gap node is
-//   out of contact (contact_active 0, gap_normal_traction 0; NaN off the gap), on the generated
+//   out of contact (contact_active 0, contact_pressure 0; NaN off the gap), on the generated
 //   rotated box, on the Cubit mesh rotated-cube.exo and on another rotation, size, cell count and
 //   material; the spec's table (7 digits) agrees to 1e-6;
 // - inputs/contact-box-open.xml as it is ends at 150 s in that state, to the accuracy its
@@ -163,7 +163,7 @@ void run_and_check_open_gap(const std::string &label, const Teuchos::ParameterLi
                   << gap.relative << "\n";
     }
     // Contact is on (the default): every pair is open, without traction; NaN off the gap.
-    const auto traction = read_last_step(base + ".h5", "gap_normal_traction", time);
+    const auto traction = read_last_step(base + ".h5", "contact_pressure", time);
     const auto active = read_last_step(base + ".h5", "contact_active", time);
     ASSERT_EQ(traction.size(), opening.size()) << label;
     ASSERT_EQ(active.size(), opening.size()) << label;

@@ -20,8 +20,9 @@ import numpy as np
 
 
 def read_csv(path):
+    """The column names (the headers "NAME [UNIT]" without their units) and the values."""
     with open(path) as f:
-        names = f.readline().strip().split(",")
+        names = [h.split(" [")[0] for h in f.readline().strip().split(",")]
         rows = [[float(v) for v in line.strip().split(",")] for line in f if line.strip()]
     return names, np.array(rows)
 

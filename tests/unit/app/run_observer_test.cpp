@@ -4,6 +4,9 @@
 // - BASE.history.csv has one row per step from step 0, the same as /history in the .h5;
 // - a BASE.gap-NNNNNN.csv per output step, the same as /gap/steps/NNNNNN, the gap closed at
 //   the end (every pair in contact, pressure > 0);
+// - every CSV header is "NAME [UNIT]", and the closed gap's pressure is positive (compression)
+//   in every output: the gap tables, the contact_pressure field of /steps and /gap, and the
+//   history's normal_force;
 // - the gap surface (/gap: 25 points, 16 quadrilaterals, a 4 cm square in the gap's plane) is
 //   a grid of the XDMF file, which checks;
 // - the run's metadata and status are in the .h5, and the lock is gone after the run.
@@ -41,10 +44,12 @@ namespace
 {
 using kiln_test::inputs;
 
-/// A CSV file: its header's names and its rows, each value read with strtod.
+/// A CSV file: its header's names (without the units), units and rows, each value read with
+/// strtod.
 struct Table
 {
   std::vector<std::string> names;
+  std::vector<std::string> units;
   std::vector<std::vector<double>> rows;
   std::vector<double> column(const std::string &name) const
   {
@@ -64,7 +69,15 @@ Table read_csv(const std::string &path)
   std::string line, cell;
   std::getline(in, line);
   for (std::istringstream header(line); std::getline(header, cell, ',');)
-    table.names.push_back(cell);
+  {
+    // "NAME [UNIT]": every column says its unit.
+    const std::size_t open = cell.find(" [");
+    EXPECT_TRUE(open != std::string::npos && cell.back() == ']')
+        << path << ": the header \"" << cell << "\" has no unit";
+    table.names.push_back(cell.substr(0, open));
+    table.units.push_back(
+        open == std::string::npos ? "" : cell.substr(open + 2, cell.size() - open - 3));
+  }
   while (std::getline(in, line))
   {
     std::vector<double> row;
@@ -114,10 +127,14 @@ TEST(RunObserver, OutputsHistoryAndGapTables)
   // One history row per step, from the start.
   const Table history = read_csv(base + ".history.csv");
   ASSERT_GE(history.rows.size(), 10u);
-  std::vector<std::string> names;
+  std::vector<std::string> names, units;
   for (const auto &c : kiln::history_columns())
+  {
     names.push_back(c.name);
+    units.push_back(c.unit);
+  }
   EXPECT_EQ(history.names, names);
+  EXPECT_EQ(history.units, units);
   const std::vector<double> steps = history.column("step"), times = history.column("time");
   for (std::size_t i = 0; i < steps.size(); ++i)
     EXPECT_EQ(steps[i], static_cast<double>(i));
@@ -172,17 +189,43 @@ TEST(RunObserver, OutputsHistoryAndGapTables)
     char group[32];
     std::snprintf(group, sizeof group, "/gap/steps/%06d/", s);
     const auto opening = kiln_test::read_dataset(h5, std::string(group) + "gap_opening");
-    const auto traction = kiln_test::read_dataset(h5, std::string(group) + "gap_normal_traction");
+    const auto pressure = kiln_test::read_dataset(h5, std::string(group) + "contact_pressure");
     const auto flux = kiln_test::read_dataset(h5, std::string(group) + "gap_heat_flux");
     for (std::size_t p = 0; p < 25; ++p)
     {
       EXPECT_EQ(gap.column("time")[p], written[static_cast<std::size_t>(s)]);
       EXPECT_EQ(gap.column("gap_opening")[p], opening[p]);
-      EXPECT_EQ(gap.column("contact_pressure")[p], -traction[p] + 0.0);
+      EXPECT_EQ(gap.column("contact_pressure")[p], pressure[p]);
       EXPECT_EQ(gap.column("gap_heat_flux")[p], flux[p]);
     }
   }
   const Table last = read_csv(gap_table(base, static_cast<int>(written.size()) - 1));
+  EXPECT_EQ(last.names,
+            (std::vector<std::string>{"time", "pair", "x", "y", "z", "s", "t", "gap_opening",
+                                      "contact_pressure", "gap_heat_flux", "contact_active",
+                                      "temperature_a", "temperature_b"}));
+  EXPECT_EQ(last.units, (std::vector<std::string>{"s", "-", "m", "m", "m", "m", "m", "m", "Pa",
+                                                  "W/m^2", "-", "K", "K"}));
+  // The closed gap in compression: a positive pressure in the volume's field (NaN off the
+  // gap), the gap surface's and the table's, and a positive normal force in the history.
+  {
+    double time = 0.0;
+    const int s_last = static_cast<int>(written.size()) - 1;
+    const auto volume = kiln_test::read_step(h5, "contact_pressure", s_last, time);
+    int n_gap = 0;
+    for (const double p : volume)
+      if (!std::isnan(p))
+      {
+        EXPECT_GT(p, 0.0);
+        ++n_gap;
+      }
+    EXPECT_EQ(n_gap, 50); // the 25 pairs' two nodes
+    char group[32];
+    std::snprintf(group, sizeof group, "/gap/steps/%06d/", s_last);
+    for (const double p : kiln_test::read_dataset(h5, std::string(group) + "contact_pressure"))
+      EXPECT_GT(p, 0.0);
+    EXPECT_GT(history.column("normal_force").back(), 0.0);
+  }
   for (std::size_t p = 0; p < 25; ++p)
   {
     EXPECT_EQ(last.column("contact_active")[p], 1.0);

@@ -6,6 +6,7 @@
 #include "io/exodus_results_writer.hpp"
 
 #include "base/errors.hpp"
+#include "io/history_csv.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/exodus_io.hpp"
 #include "mesh/gap_splitter.hpp"
@@ -112,9 +113,24 @@ double stress(const int step, const int cell, const int v)
   return 100.0 * v + cell + 0.5 * step;
 }
 
+/// The history row of step s: its cycle, time and dt, then 10 s + column index.
+std::vector<double> history_row(const int s)
+{
+  std::vector<double> row(kiln::history_columns().size());
+  for (std::size_t k = 0; k < row.size(); ++k)
+    row[k] = 10.0 * s + static_cast<double>(k);
+  row[0] = step_cycle(s);
+  row[1] = step_time(s);
+  row[2] = step_dt(s);
+  return row;
+}
+
+/// Step 0 comes as in a run: its history row, then the step. Step 1 as a continued run's
+/// earlier step: the row of another step first, the step, then its own row (after the step).
 void write_step(kiln::ExodusResultsWriter &writer, const Mesh &mesh, const Ownership &o,
                 const int s)
 {
+  writer.write_history(history_row(0));
   writer.begin_step(step_time(s), step_cycle(s), step_dt(s));
   std::vector<double> t, u, g, sigma;
   for (const int n : o.owned_nodes)
@@ -277,8 +293,8 @@ void check_mesh_records(const ExodusReader &file, const Mesh &mesh,
   }
 
   // Side sets and node sets: the same ids and names; the node sets hold the face nodes.
-  const Names set_names = {"left",      "sideset_2", "gap_3", "sideset_4",
-                           "sideset_5", "sideset_6", "gap"};
+  // The box's own names, but where the test renamed them.
+  const Names set_names = {"left", "x_max", "gap_3", "y_max", "z_min", "z_max", "gap"};
   std::vector<int> side_set_ids(n_side_sets), node_set_ids(n_node_sets);
   ASSERT_GE(ex_get_side_set_ids(exo, side_set_ids.data()), 0);
   ASSERT_GE(ex_get_node_set_ids(exo, node_set_ids.data()), 0);
@@ -328,8 +344,14 @@ void check_steps(const ExodusReader &file, const Mesh &mesh, const int n_written
   for (int s = 0; s < n_written; ++s)
     EXPECT_EQ(times[s], step_time(s));
 
-  ASSERT_EQ(file.n_variables(EX_GLOBAL), 2);
-  EXPECT_EQ(file.names(EX_GLOBAL, 2, true), (Names{"dt", "cycle"}));
+  // The history columns, named as in the CSV.
+  const auto &columns = kiln::history_columns();
+  const int n_globals = static_cast<int>(columns.size());
+  Names global_names;
+  for (const auto &c : columns)
+    global_names.push_back(c.name);
+  ASSERT_EQ(file.n_variables(EX_GLOBAL), n_globals);
+  EXPECT_EQ(file.names(EX_GLOBAL, n_globals, true), global_names);
   const Names node_variables = {"temperature", "displacement_x", "displacement_y", "displacement_z",
                                 "gap_opening"};
   const Names cell_variables = {"stress_xx", "stress_yy", "stress_zz",
@@ -346,9 +368,7 @@ void check_steps(const ExodusReader &file, const Mesh &mesh, const int n_written
   for (int s = 0; s < n_written; ++s)
   {
     const int step = s + 1;
-    const std::vector<double> globals = file.variable(step, EX_GLOBAL, 1, 0, 2);
-    EXPECT_EQ(globals[0], step_dt(s));
-    EXPECT_EQ(globals[1], step_cycle(s));
+    EXPECT_EQ(file.variable(step, EX_GLOBAL, 1, 0, n_globals), history_row(s)) << "step " << s;
 
     const auto t = file.variable(step, EX_NODAL, 1, 1, n_nodes);
     const auto g = file.variable(step, EX_NODAL, 5, 1, n_nodes);
@@ -414,6 +434,22 @@ TEST(ExodusResultsWriter, SplitBoxReadBackWithTheExodusLibrary)
     for (int s = 0; s < n_steps; ++s)
     {
       write_step(writer, mesh, o, s);
+      if (s > 0)
+      {
+        // Before its row: step, time and dt, NaN for the rest; the row completes it.
+        MPI_Barrier(comm);
+        if (rank_of(comm) == 0)
+        {
+          const ExodusReader file(base + ".running.exo");
+          const auto globals = file.variable(s + 1, EX_GLOBAL, 1, 0, 4);
+          EXPECT_EQ(globals[0], step_cycle(s));
+          EXPECT_EQ(globals[1], step_time(s));
+          EXPECT_EQ(globals[2], step_dt(s));
+          EXPECT_TRUE(std::isnan(globals[3]));
+        }
+        MPI_Barrier(comm);
+        writer.write_history(history_row(s));
+      }
       // The step is on disk while the writer is still open.
       MPI_Barrier(comm);
       if (rank_of(comm) == 0)

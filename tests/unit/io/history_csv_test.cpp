@@ -82,9 +82,10 @@ TEST(HistoryCsv, RowsAppendedAndContinuedAfterARestart)
   comm->barrier();
   const std::vector<std::string> written = lines_of(path);
   ASSERT_EQ(written.size(), 7u);
-  EXPECT_EQ(written[0], "step,time,dt,newton_iterations,linear_iterations,T_min,T_max,T_mean,"
-                        "thermal_energy,max_displacement,min_gap,max_gap,active_pairs,"
-                        "contact_area,normal_force,wall_time");
+  EXPECT_EQ(written[0], "step [-],time [s],dt [s],newton_iterations [-],linear_iterations [-],"
+                        "T_min [K],T_max [K],T_mean [K],thermal_energy [J],"
+                        "max_displacement [m],min_gap [m],max_gap [m],active_pairs [-],"
+                        "contact_area [m^2],normal_force [N],wall_time [s]");
   EXPECT_EQ(written[1].substr(0, 2), "0,");
   EXPECT_THAT(written[3], HasSubstr(",nan,"));
   comm->barrier();
@@ -103,6 +104,27 @@ TEST(HistoryCsv, RowsAppendedAndContinuedAfterARestart)
   ASSERT_EQ(continued.size(), 6u);
   for (std::size_t i = 0; i < continued.size(); ++i)
     EXPECT_EQ(continued[i], written[i]) << "line " << i;
+  comm->barrier();
+
+  // The same columns without their units (Kiln before changelog 0032): the rows are kept and
+  // the header gets the units.
+  if (comm->getRank() == 0)
+  {
+    std::ofstream legacy(path);
+    legacy << "step,time,dt,newton_iterations,linear_iterations,T_min,T_max,T_mean,"
+              "thermal_energy,max_displacement,min_gap,max_gap,active_pairs,contact_area,"
+              "normal_force,wall_time\n";
+    for (std::size_t i = 1; i < written.size(); ++i)
+      legacy << written[i] << "\n";
+  }
+  comm->barrier();
+  {
+    const kiln::HistoryCsv history(raw(*comm), path, 3);
+    EXPECT_EQ(history.warning(), "");
+    EXPECT_EQ(history.kept_rows().size(), 4u);
+  }
+  comm->barrier();
+  EXPECT_EQ(lines_of(path).front(), written.front());
   comm->barrier();
 
   // Other columns (an older file): kept aside, the history starts anew.

@@ -148,6 +148,12 @@ void expect_box(const Box &box)
   for (const auto &s : mesh.side_sets)
     ids.push_back(s.id);
   ASSERT_EQ(ids, (std::vector<int>{1, 2, 3, 4, 5, 6, 10}));
+  // Named after the face of the box's own frame (the names the Exodus output shows).
+  std::vector<std::string> names;
+  for (const auto &s : mesh.side_sets)
+    names.push_back(s.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max",
+                                             "gap"}));
   struct Side
   {
     int id, axis;
