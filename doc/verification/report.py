@@ -14,6 +14,8 @@ work folder (default BUILD/verification-work). It then
   (BUILD/tools/kiln_contact_box_report): the formulas live there only;
 - runs the heat-conduction convergence tests (BUILD/tests/verification_heat_convergence, on one
   rank) and reads the errors they print;
+- runs every deck of inputs/truchas/ (--truchas) and tabulates the figures its check
+  module doc/verification/truchas/NAME.py gives (doc/verification/truchas_section.py);
 - writes OUT/report.md (default doc/verification/; with --quick BUILD/verification-quick/)
   with the tables, the spec's list of errors of the original statement and PNG plots.
 
@@ -53,6 +55,8 @@ except ImportError as error:  # pragma: no cover - depends on the machine
 
 HERE = Path(__file__).resolve().parent
 SOURCE = HERE.parent.parent
+sys.path.insert(0, str(HERE))
+import truchas_section  # noqa: E402  (beside this file)
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?nan|[-+]?inf"
 
 
@@ -653,7 +657,12 @@ def kiln_commit():
                                 "--untracked-files=no", "--", "src", "tools", "tests",
                                 "inputs", "CMakeLists.txt"],
                                capture_output=True, text=True).stdout.strip()
-        return commit + (" with local changes to src/tools/tests/inputs" if dirty else "")
+        described = subprocess.run(["git", "-C", str(SOURCE), "describe", "--tags", "--always"],
+                                   capture_output=True, text=True).stdout.strip()
+        date = subprocess.run(["git", "-C", str(SOURCE), "show", "-s", "--format=%cI", "HEAD"],
+                              capture_output=True, text=True).stdout.strip()
+        return (commit + (f" ({described}, committed {date})" if described else "")
+                + (" with local changes to src/tools/tests/inputs" if dirty else ""))
     except (OSError, subprocess.CalledProcessError):
         return "unknown (not a git checkout)"
 
@@ -686,7 +695,8 @@ def time_steps(log, until):
     return [s for s in steps if float(s[0]) <= until]
 
 
-def write_report(out, args, cases, refinement, heat, runner, spec, started, elapsed):
+def write_report(out, args, cases, refinement, heat, truchas, runner, spec, started,
+                 elapsed):
     same_steps = len({tuple(r["steps"]) for r in refinement}) == 1
     command = "doc/verification/report.py " + " ".join(
         shlex.quote(a) for a in sys.argv[1:])
@@ -817,6 +827,8 @@ def write_report(out, args, cases, refinement, heat, runner, spec, started, elap
             md.append(f"| {label} | not run (--quick) | | |")
     md += ["", "![heat convergence](heat-convergence.png)", ""]
 
+    md += truchas_section.section(shown(args.truchas), truchas)
+
     md += ["## Runs", "", "| run | wall time [s] |", "|---|---:|"]
     md += [f"| {label} | {seconds:.1f} |" for label, seconds in runner.wall.items()]
     md.append("")
@@ -842,6 +854,11 @@ def main():
     parser.add_argument("--spec", type=Path,
                         default=SOURCE.parent / "shared" / "spec" / "contact-box.md",
                         help="the contact-box spec (default ../shared/spec/contact-box.md)")
+    parser.add_argument("--truchas", type=Path, default=SOURCE / "inputs" / "truchas",
+                        help="the folder of the Truchas decks (default inputs/truchas/)")
+    parser.add_argument("--truchas-checks", type=Path, default=HERE / "truchas",
+                        help="their check modules, NAME.py per NAME.xml (default "
+                        "doc/verification/truchas/)")
     args = parser.parse_args()
     if args.np < 1:
         parser.error("--np must be at least 1")
@@ -925,7 +942,12 @@ def report(args):
     plot_closing(refinement, args.out / "closing-time.png")
     plot_heat(heat, args.out / "heat-convergence.png")
 
-    write_report(args.out, args, cases, refinement, heat, runner, args.spec, started,
+    try:
+        truchas = truchas_section.run_all(args.truchas, args.truchas_checks, runner.run_case)
+    except truchas_section.SidecarError as error:
+        raise ReportError(str(error)) from error
+
+    write_report(args.out, args, cases, refinement, heat, truchas, runner, args.spec, started,
                  time.monotonic() - start)
     print(summary_table(cases))
     print("closing time: " + ", ".join(f"{r['n']}^3 {r['event']:.4f} s" for r in refinement))
