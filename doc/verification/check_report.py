@@ -20,7 +20,7 @@ DIR/work). Then checks DIR/report.md and the PNGs beside it:
   of 2 (displacement, L2) and 1 (cell stress, L2);
 - the Truchas section (doc/verification/truchas_section.py): a row for every deck of
   inputs/truchas/ and each figure within its test's tolerance, or, with no deck, the line
-  saying so (a --full report made before the section existed passes without it);
+  saying so;
 - the PNG files exist, are PNG files under 300 KB, and report.md shows each of them.
 
 Then checks the checker: the same report with one error raised above its bound must fail.
@@ -157,18 +157,17 @@ def check(text, full, truchas=HERE.parent.parent / "inputs" / "truchas"):
             if not orders or not abs(orders[-1] - order) <= 0.1:
                 failures.append(f"heat convergence, {test}: orders {orders}, expected the last "
                                 f"within 0.1 of {order}")
-    failures += check_elastic(text, full)
-    failures += check_truchas(text, truchas, full)
+    failures += check_elastic(text)
+    failures += check_truchas(text, truchas)
     return failures
 
 
-def check_elastic(text, full):
+def check_elastic(text):
     """The elasticity convergence table: both cases on four meshes, the last orders within
-    0.1 of 2 (displacement) and 1 (cell stress), as the test asserts. The committed full
-    report predates the table: with --full, a report without it passes until regenerated."""
+    0.1 of 2 (displacement) and 1 (cell stress), as the test asserts."""
     rows = table_rows(text, "| case | cells along the bar |")
     if rows is None:
-        return [] if full else ["no table of the elasticity convergence orders"]
+        return ["no table of the elasticity convergence orders"]
     failures = []
     for case in ("bar under its own weight (Elasticity)",
                  "bar under a linear temperature (Thermo-Elasticity)"):
@@ -184,13 +183,12 @@ def check_elastic(text, full):
     return failures
 
 
-def check_truchas(text, folder, full):
+def check_truchas(text, folder):
     """The Truchas section: one row set per deck of `folder` (the "No deck" line when it has
-    none), every figure within its test's tolerance. The committed full report predates the
-    section: with --full, a report without it passes until it is regenerated."""
+    none), every figure within its test's tolerance."""
     match = re.search(r"^## Truchas tests\n(.*?)(?=^## |\Z)", text, re.S | re.M)
     if match is None:
-        return [] if full else ["no section \"Truchas tests\""]
+        return ["no section \"Truchas tests\""]
     body = match.group(1)
     names = {deck.name for deck in truchas_section.decks(folder)}
     if not names:

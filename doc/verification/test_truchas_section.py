@@ -43,10 +43,10 @@ def main():
             rows = truchas_section.run_all(folder, checks, fake_run)
             text = "\n".join(truchas_section.section("inputs/truchas/", rows))
             expect(rows == [] and "No deck in" in text, f"zero decks: {rows}, {text}")
-            expect(check_report.check_truchas(text, folder, False) == [],
+            expect(check_report.check_truchas(text, folder) == [],
                    "zero decks: the check fails")
             decks.mkdir(exist_ok=True)
-        expect(check_report.check_truchas("# no section\n", decks, False) != [],
+        expect(check_report.check_truchas("# no section\n", decks) != [],
                "a quick report without the section passes")
         # A deck without its module: an error naming it.
         (decks / "fake.xml").write_text("<ParameterList/>\n")
@@ -57,7 +57,7 @@ def main():
             expect("fake.xml" in str(error), f"the error does not name the deck: {error}")
         # The empty-deck report fails once the folder has a deck.
         empty = "\n".join(truchas_section.section("inputs/truchas/", []))
-        expect(check_report.check_truchas(empty, decks, False) != [],
+        expect(check_report.check_truchas(empty, decks) != [],
                "a report without the deck's row passes")
         # The module plugs in: within tolerance, then out of it.
         for value, passes in ((1e-7, True), (1e-3, False)):
@@ -65,7 +65,7 @@ def main():
             rows = truchas_section.run_all(decks, checks, fake_run)
             text = "\n".join(truchas_section.section("inputs/truchas/", rows)) + "\n"
             expect(len(rows) == 1 and rows[0][1] == "heat_conduction/fake", f"rows {rows}")
-            failures = check_report.check_truchas(text, decks, False)
+            failures = check_report.check_truchas(text, decks)
             expect((failures == []) == passes, f"value {value}: check {failures}")
     for failure in FAILURES:
         print(f"test_truchas_section.py: FAILED: {failure}")
