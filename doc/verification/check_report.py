@@ -16,6 +16,11 @@ DIR/work). Then checks DIR/report.md and the PNGs beside it:
   time between 50 and 53 s, and each difference smaller than the one before;
 - the heat convergence orders: the order of the last refinement within 0.1 of 1 (backward
   Euler) and 2 (BDF2, space), as the unit test asserts;
+- the elasticity convergence table: both bars on four meshes, the last orders within 0.1
+  of 2 (displacement, L2) and 1 (cell stress, L2);
+- the Truchas section (doc/verification/truchas_section.py): a row for every deck of
+  inputs/truchas/ and each figure within its test's tolerance, or, with no deck, the line
+  saying so;
 - the PNG files exist, are PNG files under 300 KB, and report.md shows each of them.
 
 Then checks the checker: the same report with one error raised above its bound must fail.
@@ -29,6 +34,8 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import truchas_section  # noqa: E402  (beside this file)
 
 # Bounds of the errors of the uniform states. The spec: a trilinear mesh represents them
 # exactly, so a correct code reproduces them to round-off; Kiln reproduces them to the
@@ -53,18 +60,24 @@ PNGS = ["temperature-A.png", "gap-A.png", "stress-A.png", "temperature-B.png", "
 SPEC_ERRORS = ["transpose", "sigma'_yy", "eps'_zz", "theta"]
 
 
+def cells(line):
+    """The cells of a markdown table row (a pipe escaped as \\| stays in its cell)."""
+    return [c.strip().replace("\\|", "|")
+            for c in re.split(r"(?<!\\)\|", line.strip().strip("|"))]
+
+
 def table_rows(text, header_start):
     """The rows (lists of cells) of the markdown table whose header starts with
     `header_start`."""
     lines = text.splitlines()
     for i, line in enumerate(lines):
         if line.startswith(header_start):
-            header = [c.strip() for c in line.strip("|").split("|")]
+            header = cells(line)
             rows = []
             for row in lines[i + 2:]:
                 if not row.startswith("|"):
                     break
-                rows.append(dict(zip(header, (c.strip() for c in row.strip("|").split("|")))))
+                rows.append(dict(zip(header, cells(row))))
             return rows
     return None
 
@@ -76,7 +89,7 @@ def number(text):
         return float("nan")
 
 
-def check(text, full):
+def check(text, full, truchas=HERE.parent.parent / "inputs" / "truchas"):
     """The failures of report.md's text (an empty list when it passes)."""
     failures = []
 
@@ -144,6 +157,54 @@ def check(text, full):
             if not orders or not abs(orders[-1] - order) <= 0.1:
                 failures.append(f"heat convergence, {test}: orders {orders}, expected the last "
                                 f"within 0.1 of {order}")
+    failures += check_elastic(text)
+    failures += check_truchas(text, truchas)
+    return failures
+
+
+def check_elastic(text):
+    """The elasticity convergence table: both cases on four meshes, the last orders within
+    0.1 of 2 (displacement) and 1 (cell stress), as the test asserts."""
+    rows = table_rows(text, "| case | cells along the bar |")
+    if rows is None:
+        return ["no table of the elasticity convergence orders"]
+    failures = []
+    for case in ("bar under its own weight (Elasticity)",
+                 "bar under a linear temperature (Thermo-Elasticity)"):
+        mine = [r for r in rows if r["case"] == case]
+        if len(mine) < 4:
+            failures.append(f"elasticity convergence, {case}: {len(mine)} meshes, expected 4")
+            continue
+        for column, expected in (("order u", 2.0), ("order stress", 1.0)):
+            last = number(mine[-1][column])
+            if not abs(last - expected) <= 0.1:
+                failures.append(f"elasticity convergence, {case}: {column} {last}, expected "
+                                f"within 0.1 of {expected}")
+    return failures
+
+
+def check_truchas(text, folder):
+    """The Truchas section: one row set per deck of `folder` (the "No deck" line when it has
+    none), every figure within its test's tolerance."""
+    match = re.search(r"^## Truchas tests\n(.*?)(?=^## |\Z)", text, re.S | re.M)
+    if match is None:
+        return ["no section \"Truchas tests\""]
+    body = match.group(1)
+    names = {deck.name for deck in truchas_section.decks(folder)}
+    if not names:
+        return [] if "No deck in" in body else [f"no deck in {folder}, but the Truchas section "
+                                                  "does not say so"]
+    rows = table_rows(body, truchas_section.HEADER[:20])
+    if rows is None:
+        return [f"{len(names)} decks in {folder}, but no table in the Truchas section"]
+    failures = []
+    shown = {row["deck"] for row in rows}
+    for name in sorted(names - shown):
+        failures.append(f"Truchas deck {name}: no row in the report")
+    for row in rows:
+        if row["within tolerance"] != "yes":
+            failures.append(f"Truchas deck {row['deck']}: {row['quantity']} = {row['Kiln']}, "
+                            f"not within the test's tolerance ({row['tolerance']})")
     return failures
 
 
