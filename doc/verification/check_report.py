@@ -158,6 +158,7 @@ def check(text, full, truchas=HERE.parent.parent / "inputs" / "truchas"):
                 failures.append(f"heat convergence, {test}: orders {orders}, expected the last "
                                 f"within 0.1 of {order}")
     failures += check_elastic(text)
+    failures += check_energy(text)
     failures += check_truchas(text, truchas)
     return failures
 
@@ -180,6 +181,22 @@ def check_elastic(text):
             if not abs(last - expected) <= 0.1:
                 failures.append(f"elasticity convergence, {case}: {column} {last}, expected "
                                 f"within 0.1 of {expected}")
+    return failures
+
+
+def check_energy(text):
+    """The energy balance: every step's stored energy equals the heat in to 1e-8."""
+    rows = table_rows(text, "| step | t [s] | stored [J] |")
+    if not rows:
+        return ["no table of the energy balance"]
+    failures = []
+    for row in rows:
+        error = number(row["relative difference"])
+        if not error <= 1e-8:
+            failures.append(f"energy balance, step {row['step']}: stored and heat in differ by "
+                            f"{error} (relative), above 1e-8")
+    if len(rows) < 5:
+        failures.append(f"energy balance: {len(rows)} steps, expected at least 5")
     return failures
 
 

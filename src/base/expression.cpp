@@ -50,8 +50,7 @@ Expression::Expression(const std::string &text, const std::string &where)
   }
 }
 
-double Expression::operator()(const double x, const double y, const double z,
-                              const double t) const
+double Expression::operator()(const double x, const double y, const double z, const double t) const
 {
   Parser &p = *parser_;
   p.x = x;

@@ -8,9 +8,9 @@ namespace kiln
 /// f(x, y, z, t) from a text such as "1 + x + 2*y + 3*z" or "300 + 10*sin(pi*t/60)":
 /// muparser's operators (+ - * / ^, comparisons, ?:) and functions (sin, cos, tan, asin, acos,
 /// atan, sinh, cosh, tanh, exp, log, ln, log10, log2, sqrt, abs, sign, rint, min, max, sum,
-/// avg), the constants pi (and muparser's _pi, _e); x, y, z the reference coordinates [m] and t the time [s].
-/// Copies share the parsed formula (muparser binds its variables by address; Kiln evaluates
-/// on one thread per rank).
+/// avg), the constants pi (and muparser's _pi, _e); x, y, z the reference coordinates [m] and t the
+/// time [s]. Copies share the parsed formula (muparser binds its variables by address; Kiln
+/// evaluates on one thread per rank).
 class Expression
 {
 public:

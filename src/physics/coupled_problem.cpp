@@ -143,9 +143,10 @@ void CoupledProblem::initial_condition(const double time, Vector &x) const
     const int n = owned_nodes[i];
     const LO row = static_cast<LO>(F * i);
     if (thermal_)
-      x.replaceLocalValue(row + slots_.T, constraints_.has_temperature(n)
-                                              ? constraints_.prescribed_temperature(n, time)
-                                              : thermal_->initial_temperature(mesh_.coordinates[n]));
+      x.replaceLocalValue(row + slots_.T,
+                          constraints_.has_temperature(n)
+                              ? constraints_.prescribed_temperature(n, time)
+                              : thermal_->initial_temperature(mesh_.coordinates[n]));
     const std::array<double, 3> u_hat = constraints_.prescribed_components(n, time);
     for (int l = 0; l < constraints_.n_constrained(n); ++l)
       x.replaceLocalValue(row + slots_.u + l, u_hat[l]);

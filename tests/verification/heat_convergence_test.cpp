@@ -160,8 +160,8 @@ TEST_P(HeatConvergence, SpatialL2OrderTwo)
   // coarser mesh.
   for (std::size_t i = 0; i < errors.size(); ++i)
   {
-    std::cout << prefix(capacity) << "cells " << (4 << i) << " x " << (2 << i) << " x " << (2 << i) << ": L2 error "
-              << errors[i];
+    std::cout << prefix(capacity) << "cells " << (4 << i) << " x " << (2 << i) << " x " << (2 << i)
+              << ": L2 error " << errors[i];
     if (i > 0)
       std::cout << ", order " << order(errors[i - 1], errors[i]);
     std::cout << "\n";
@@ -177,8 +177,8 @@ std::vector<double> temporal_errors(const std::string &method, const std::string
   constexpr int nx = 8;
   const double h = L / nx;
   const double c = std::cos(pi * h / L);
-  const double lambda_h = capacity == "Lumped" ? 2.0 / (h * h) * (1.0 - c)
-                                               : 6.0 / (h * h) * (1.0 - c) / (2.0 + c);
+  const double lambda_h =
+      capacity == "Lumped" ? 2.0 / (h * h) * (1.0 - c) : 6.0 / (h * h) * (1.0 - c) / (2.0 + c);
   const double t_end = 0.1;
   std::vector<double> errors;
   for (const double dt : {0.02, 0.01, 0.005, 0.0025})

@@ -65,16 +65,17 @@ std::shared_ptr<const Expression> read_initial_field(const Teuchos::ParameterLis
                    "and \"Initial Temperature\" are both given; remove one");
   auto field = std::make_shared<const Expression>(text, path);
   KILN_CHECK_INPUT(!field->depends_on_time(), path,
-                   "= \"" << text << "\" names t; the initial temperature is at t = 0: use "
-                              "x, y, z only");
+                   "= \"" << text
+                          << "\" names t; the initial temperature is at t = 0: use "
+                             "x, y, z only");
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {
     const Point &x = mesh.coordinates[n];
     const double T = (*field)(x[0], x[1], x[2], 0.0);
     KILN_CHECK_INPUT(std::isfinite(T) && T > 0.0, path,
-                     "= \"" << text << "\" is " << T << " K at node " << n + 1 << " ("
-                             << x[0] << ", " << x[1] << ", " << x[2]
-                             << ") m; it must be finite and > 0 at every node");
+                     "= \"" << text << "\" is " << T << " K at node " << n + 1 << " (" << x[0]
+                            << ", " << x[1] << ", " << x[2]
+                            << ") m; it must be finite and > 0 at every node");
   }
   return field;
 }

@@ -118,8 +118,8 @@ void TimeFunction::check_finite(const std::vector<Point> &points, const double t
     const double f = value(t, x);
     KILN_CHECK_INPUT(std::isfinite(f), where + "/\"Expression\"",
                      "= \"" << expression_->text() << "\" is " << f << " at (" << x[0] << ", "
-                             << x[1] << ", " << x[2] << ") m, t = " << t
-                             << " s; give a formula that is finite wherever it applies");
+                            << x[1] << ", " << x[2] << ") m, t = " << t
+                            << " s; give a formula that is finite wherever it applies");
   }
 }
 } // namespace kiln

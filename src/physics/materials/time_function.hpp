@@ -65,7 +65,7 @@ private:
   /// Constant: values_ = {value}. Smooth step: times_ = {x0, x1}, values_ = {y0, y1}.
   std::vector<double> times_;
   std::vector<double> values_{0.0};
-  PiecewiseLinear table_; ///< Table
+  PiecewiseLinear table_;                        ///< Table
   std::shared_ptr<const Expression> expression_; ///< Expression
 };
 

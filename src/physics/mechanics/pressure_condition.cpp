@@ -26,7 +26,6 @@ PressureCondition::PressureCondition(const BoundaryConditionInput &input)
 
 void PressureCondition::evaluate(const FaceState &state, LocalSystem &local) const
 {
-  TractionKernel::evaluate_pressure(state.fv, ValueAt(pressure_, state.time), state.slots.u,
-                                   local);
+  TractionKernel::evaluate_pressure(state.fv, ValueAt(pressure_, state.time), state.slots.u, local);
 }
 } // namespace kiln

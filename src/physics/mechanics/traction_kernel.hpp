@@ -2,8 +2,8 @@
 /// A prescribed load on a boundary face of the solid: a traction vector or a pressure.
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
-#include "physics/materials/time_function.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/materials/time_function.hpp"
 
 namespace kiln
 {

@@ -156,7 +156,8 @@ TEST(HeatConductionKernel, LinearFieldGivesTheBoundaryFluxIntegral)
 TEST(HeatConductionKernel, MassTermIntegratesTheRateOfChange)
 {
   const double rho_c = 2.43e6;
-  const kiln::HeatConductionKernel kernel(rho_c, kiln::ConductivityModel::constant(240.0), consistent);
+  const kiln::HeatConductionKernel kernel(rho_c, kiln::ConductivityModel::constant(240.0),
+                                          consistent);
   const double V = volume(skew_edges);
   ASSERT_GT(V, 0.5);
   kiln::ElementValues fe;
@@ -407,9 +408,9 @@ TEST(HeatFluxKernel, FluxVaryingInSpaceIsIntegratedAtTheGaussPoints)
   Teuchos::ParameterList user;
   user.set("Type", "Expression");
   user.set("Expression", "100 + 12*x - 24*y");
-  const kiln::TimeFunction q(kiln::validated(user, kiln::TimeFunction::valid_parameters(), "in.xml",
-                                             "Kiln/q"),
-                             "in.xml: Kiln/q");
+  const kiln::TimeFunction q(
+      kiln::validated(user, kiln::TimeFunction::valid_parameters(), "in.xml", "Kiln/q"),
+      "in.xml: Kiln/q");
   kiln::FaceValues fv;
   fv.reinit(parallelogram({1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 0.0}));
   kiln::LocalSystem local(4, 1);

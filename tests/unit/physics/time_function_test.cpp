@@ -180,14 +180,17 @@ TEST(TimeFunction, ExpressionOfTimeAloneIsAFunctionOfTime)
 
 TEST(TimeFunction, ExpressionErrorsNameTheParameter)
 {
-  EXPECT_THAT(error_of(expression("1 + (x")),
-              HasSubstr(where + "/\"Expression\": = \"1 + (x\" cannot be read: Missing parenthesis"));
+  EXPECT_THAT(
+      error_of(expression("1 + (x")),
+      HasSubstr(where + "/\"Expression\": = \"1 + (x\" cannot be read: Missing parenthesis"));
   EXPECT_THAT(error_of(expression("2*temperature")),
               HasSubstr("\"temperature\" is not a variable or function Kiln knows"));
   EXPECT_THAT(error_of(expression("  ")), HasSubstr("is empty; give a formula in x, y, z"));
   const kiln::TimeFunction f = make(expression("1/(x - 1)"));
   EXPECT_THAT(kiln_test::input_error_message(
-                  [&] { f.check_finite({{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0.0, where); }),
+                  [&] {
+                    f.check_finite({{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0.0, where);
+                  }),
               HasSubstr("= \"1/(x - 1)\" is inf at (1, 0, 0) m, t = 0 s"));
   EXPECT_NO_THROW(f.check_finite({{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}}, 0.0, where));
 }
