@@ -159,7 +159,12 @@ double MemoryEstimate::unknown_bytes() const
 
 double MemoryEstimate::bytes_per_rank() const
 {
-  return internal::base_bytes + mesh_bytes() + unknown_bytes();
+  return base_bytes() + mesh_bytes() + unknown_bytes();
+}
+
+double MemoryEstimate::base_bytes() const
+{
+  return internal::base_bytes;
 }
 
 std::string memory_text(const double bytes)
@@ -180,7 +185,9 @@ std::string memory_text(const double bytes)
 std::string MemoryEstimate::summary() const
 {
   std::ostringstream s;
-  s << "about " << memory_text(bytes_per_rank()) << " per rank (" << memory_text(mesh_bytes())
+  // The three parts, each rounded as printed, add up to the total (rounded the same way).
+  s << "about " << memory_text(bytes_per_rank()) << " per rank (" << memory_text(base_bytes())
+    << " the program, its libraries and MPI; " << memory_text(mesh_bytes())
     << " on every rank for the " << cells_
     << " cells (what more ranks do not divide: ghost rows, maps, the mesh); "
     << memory_text(unknown_bytes()) << " for ";

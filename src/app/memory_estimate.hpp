@@ -28,13 +28,15 @@ public:
   /// One rank's share of the unknowns: the matrices and their graphs, the multigrid
   /// hierarchy, the vectors and the Krylov basis [bytes].
   double unknown_bytes() const;
-  /// The peak resident memory of a rank [bytes]: the program, its libraries and MPI, and the
-  /// two above.
+  /// What every rank holds before the input: the program, its libraries and MPI [bytes].
+  double base_bytes() const;
+  /// The peak resident memory of a rank [bytes]: base_bytes() + mesh_bytes() + unknown_bytes().
   double bytes_per_rank() const;
   long long unknowns() const { return unknowns_; }
   int krylov_vectors() const { return krylov_vectors_; }
-  /// "1.23 GB per rank (0.20 GB the mesh, held whole on every rank; 1.0 GB for 1/2 of the
-  /// 148104 unknowns)".
+  /// "about 1.23 GB per rank (94 MB the program, its libraries and MPI; 136 MB on every rank
+  /// for the 32768 cells (...); 1.0 GB for 1/2 of the 148104 unknowns)": the total, then the
+  /// three parts it is the sum of.
   std::string summary() const;
 
 private:

@@ -60,7 +60,8 @@ double peak_rss_bytes()
 } // namespace internal
 
 ProgressReport::ProgressReport(Teuchos::RCP<Teuchos::FancyOStream> out, Run run)
-    : out_(std::move(out)), run_(std::move(run)), started_(std::chrono::steady_clock::now())
+    : out_(std::move(out)), run_(std::move(run)), started_(std::chrono::steady_clock::now()),
+      time_left_(run_.end_time)
 {
 }
 
@@ -74,24 +75,56 @@ void ProgressReport::start(const StateSummary &summary)
   last_active_ = summary.n_pairs > 0 ? summary.n_active : -1;
 }
 
-std::string ProgressReport::figures(const double time, const StateSummary &summary) const
+std::vector<StatusField> ProgressReport::figures(const double time,
+                                                 const StateSummary &summary) const
 {
-  std::ostringstream s;
-  const double span = run_.end_time - run_.start_time;
+  std::vector<StatusField> fields;
   if (run_.end_time > 0.0)
-    s << std::fixed << std::setprecision(0) << 100.0 * time / run_.end_time << std::defaultfloat
-      << "% of " << internal::seconds(run_.end_time) << ", ";
+  {
+    std::ostringstream percent;
+    percent << std::fixed << std::setprecision(0) << 100.0 * time / run_.end_time << "%";
+    fields.push_back(
+        {percent.str() + " of " + internal::seconds(run_.end_time), percent.str(), 60});
+  }
   if (summary.n_pairs > 0)
-    s << summary.n_active << "/" << summary.n_pairs << " pairs in contact, ";
-  const double wall = wall_time();
-  s << "wall " << internal::duration_text(wall);
-  // The time left from the pace of the steps so far (the set-up before them left out).
-  const double stepping =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  const double done = time - run_.start_time;
-  if (span > 0.0 && done > 0.0 && time < run_.end_time)
-    s << ", " << internal::duration_text(stepping * (run_.end_time - time) / done) << " left";
-  return s.str();
+  {
+    const std::string pairs =
+        std::to_string(summary.n_active) + "/" + std::to_string(summary.n_pairs);
+    fields.push_back({pairs + " pairs in contact", pairs + " in contact", 20});
+  }
+  fields.push_back({"wall " + internal::duration_text(wall_time()), "", 10});
+  const double left = time_left_.seconds_left();
+  if (left >= 0.0 && time < run_.end_time)
+    fields.push_back({internal::duration_text(left) + " left", "", 50});
+  return fields;
+}
+
+std::vector<StatusField> ProgressReport::status_fields(const TimeStepper::State &state,
+                                                       const NewtonSolver::Result &newton,
+                                                       const StateSummary &summary) const
+{
+  const bool steady = run_.method == "Steady";
+  std::vector<StatusField> fields;
+  fields.push_back({(steady ? "steady solve " : "step ") + std::to_string(state.statistics.steps) +
+                        ": t = " + internal::seconds(state.time),
+                    "", 100});
+  if (!steady)
+    fields.push_back({"dt = " + internal::seconds(state.last_step), "", 30});
+  const std::string newton_its = std::to_string(newton.newton_iterations);
+  const std::string linear_its = std::to_string(newton.linear_iterations);
+  const std::string short_of_tolerance =
+      newton.linear_failures > 0
+          ? ", " + std::to_string(newton.linear_failures) + " short of tolerance"
+          : std::string();
+  fields.push_back({"Newton " + newton_its + " (" + linear_its + " linear" + short_of_tolerance +
+                        ")",
+                    "N " + newton_its + "/" + linear_its +
+                        (newton.linear_failures > 0 ? "!" + std::to_string(newton.linear_failures)
+                                                    : std::string()),
+                    40});
+  for (StatusField &f : figures(state.time, summary))
+    fields.push_back(std::move(f));
+  return fields;
 }
 
 void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::Result &newton,
@@ -105,34 +138,34 @@ void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::R
       opened_.push_back(state.time);
     last_active_ = summary.n_active;
   }
+  time_left_.step(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(),
+      state.time);
+  if (run_.terminal)
+  {
+    show_status_line(fit_status_line(status_fields(state, newton, summary), terminal_columns()));
+    return;
+  }
   const int n = state.statistics.steps;
   const bool steady = run_.method == "Steady";
   // The first step of BDF2 is backward Euler (TimeStepper).
   const bool bdf2 = run_.method == "BDF2" && state.accepted >= 2;
-  std::ostringstream solve;
-  solve << "Newton " << newton.newton_iterations << " (" << newton.linear_iterations << " linear";
-  if (newton.linear_failures > 0)
-    solve << ", " << newton.linear_failures << " short of tolerance";
-  solve << ")";
-  if (run_.terminal)
-  {
-    std::ostringstream line;
-    line << (steady ? "steady solve " : "step ") << n << ": t = " << internal::seconds(state.time);
-    if (!steady)
-      line << ", dt = " << internal::seconds(state.last_step);
-    line << ", " << solve.str() << "; " << figures(state.time, summary);
-    show_status_line(line.str());
-    return;
-  }
   std::ostringstream line;
   line << (steady ? "steady solve " : "step ") << n << ": t = " << internal::seconds(state.time);
   if (!steady)
     line << ", dt = " << internal::seconds(state.last_step) << (bdf2 ? " (BDF2)" : " (BE)");
-  line << ", " << solve.str() << ", |F| " << std::scientific << std::setprecision(3)
+  line << ", Newton " << newton.newton_iterations << " (" << newton.linear_iterations
+       << " linear";
+  if (newton.linear_failures > 0)
+    line << ", " << newton.linear_failures << " short of tolerance";
+  line << "), |F| " << std::scientific << std::setprecision(3)
        << newton.initial_residual_norm << " -> " << newton.final_residual_norm;
   if (error >= 0.0)
     line << ", error " << std::defaultfloat << std::setprecision(3) << error;
-  line << std::defaultfloat << "; " << figures(state.time, summary);
+  std::string rest;
+  for (const StatusField &f : figures(state.time, summary))
+    rest += (rest.empty() ? "" : ", ") + f.text;
+  line << std::defaultfloat << "; " << rest;
   *out_ << line.str() << "\n";
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 /// What a run tells its user as it goes, and at its end.
+#include "app/time_left_estimate.hpp"
+#include "base/log.hpp"
 #include "physics/state_summary.hpp"
 #include "solvers/newton_solver.hpp"
 #include "solvers/time_stepper.hpp"
@@ -28,7 +30,12 @@ double peak_rss_bytes();
 ///   with the share of the run done, the pairs in contact, the wall time and an estimate of
 ///   the time left; a steady solve's line starts "steady solve N: t = T s, Newton I ...".
 /// - On a terminal: the same figures on one status line, rewritten in place at each step,
-///   below the log's other lines.
+///   below the log's other lines, fitted to the terminal's width (fit_status_line): shortened
+///   first ("35%", "25/25 in contact", "N 3/41"), then without, in this order, the wall time,
+///   the pairs in contact, the time step, the Newton iterations, the time left and the share
+///   done; "step N: t = T s" stays.
+/// - The time left (TimeLeftEstimate) is printed once the steps after the first two give a
+///   pace.
 /// - At the end: "key: value" lines (status, times, steps, iterations, the times the gap
 ///   closed and opened, the peak memory per rank and summed, the files written).
 class ProgressReport
@@ -62,13 +69,20 @@ public:
                const std::vector<std::pair<std::string, std::string>> &files,
                const Teuchos::Comm<int> &comm) const;
 
+  /// The status line's fields of a step (`solve`: "Newton 3 (41 linear)") with their short
+  /// forms and priorities, in order.
+  std::vector<StatusField> status_fields(const TimeStepper::State &state,
+                                         const NewtonSolver::Result &newton,
+                                         const StateSummary &summary) const;
+
 private:
-  /// "35% of 150 s, 25/25 pairs in contact, wall 0.61 s, 1.1 s left"
-  std::string figures(double time, const StateSummary &summary) const;
+  /// "35% of 150 s, 25/25 pairs in contact, wall 0.61 s, 1.1 s left" as fields.
+  std::vector<StatusField> figures(double time, const StateSummary &summary) const;
 
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Run run_;
   std::chrono::steady_clock::time_point started_; ///< the first step's start (construction)
+  TimeLeftEstimate time_left_;
   int last_active_ = -1; ///< pairs in contact at the last state (-1: none yet)
   std::vector<double> closed_, opened_;
 };

@@ -125,7 +125,9 @@ Simulation::~Simulation() = default;
 
 void Simulation::setup()
 {
-  check_memory(params_, layout_, input_path_, mesh_file_, *comm_, *out_);
+  // Checked before the mesh is allocated, printed after the header that names the run.
+  std::ostringstream memory;
+  check_memory(params_, layout_, input_path_, mesh_file_, *comm_, memory);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 1 mesh"));
     const MeshFactory factory(params_.sublist("Mesh"), input_path_ + ": Kiln/Mesh", mesh_file_);
@@ -157,6 +159,7 @@ void Simulation::setup()
                                              input_path_ + ": Kiln/Time Stepping", out_);
   }
   print_header();
+  *out_ << memory.str();
 }
 
 void Simulation::check()

@@ -2,7 +2,10 @@
 
 #include <Teuchos_oblackholestream.hpp>
 #include <mpi.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <cstdlib>
 #include <iostream>
@@ -30,7 +33,12 @@ void StatusLineBuffer::set_status(const std::string &line)
     target_ << "\n"; // a partial ordinary line stays above
     line_start_ = true;
   }
-  status_ = line;
+  // Never wider than the terminal: a wrapped line cannot be rewritten by "\r" and leaves a
+  // trail (the caller fits it first, fit_status_line; this is the last resort).
+  const int width = terminal_columns();
+  status_ = width > 1 && line.size() >= static_cast<std::size_t>(width)
+                ? line.substr(0, static_cast<std::size_t>(width - 1))
+                : line;
   target_ << "\r" << status_ << "\033[K";
   shown_ = true;
   target_.flush();
@@ -139,6 +147,65 @@ void end_status_line()
 {
   if (internal::world_rank() == 0)
     internal::log_buffer().end_status();
+}
+
+std::string fit_status_line(const std::vector<StatusField> &fields, const int width)
+{
+  const std::size_t room =
+      width > 1 ? static_cast<std::size_t>(width - 1) : std::string::npos; // columns usable
+  const auto joined = [](const std::vector<std::string> &texts)
+  {
+    std::string line;
+    for (const std::string &t : texts)
+      line += (line.empty() ? "" : ", ") + t;
+    return line;
+  };
+  std::vector<std::string> full, shortened;
+  for (const StatusField &f : fields)
+  {
+    full.push_back(f.text);
+    shortened.push_back(f.short_text.empty() ? f.text : f.short_text);
+  }
+  std::string line = joined(full);
+  if (line.size() <= room)
+    return line;
+  // Drop the fields of lowest priority (the later one first among equals) from the short forms.
+  std::vector<std::size_t> order(fields.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](const std::size_t a, const std::size_t b)
+                   {
+                     return fields[a].priority < fields[b].priority ||
+                            (fields[a].priority == fields[b].priority && a > b);
+                   });
+  std::vector<bool> kept(fields.size(), true);
+  for (std::size_t k = 0;; ++k)
+  {
+    std::vector<std::string> texts;
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      if (kept[i])
+        texts.push_back(shortened[i]);
+    line = joined(texts);
+    if (line.size() <= room || texts.size() <= 1)
+      break;
+    kept[order[k]] = false;
+  }
+  return line.size() <= room ? line : line.substr(0, room);
+}
+
+int terminal_columns()
+{
+  struct winsize size = {};
+  if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0)
+    return size.ws_col;
+  if (const char *columns = std::getenv("COLUMNS"))
+  {
+    const int n = std::atoi(columns);
+    if (n > 0)
+      return n;
+  }
+  return 80;
 }
 
 bool warn_once(const std::string &message)

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <streambuf>
 #include <string>
+#include <vector>
 
 namespace kiln
 {
@@ -59,6 +60,23 @@ bool log_is_terminal();
 void show_status_line(const std::string &line);
 /// Leaves the last status line as an ordinary line (before a summary or an error message).
 void end_status_line();
+
+/// One field of a status line: its text, a shorter form of it ("": none) and its priority
+/// (when the line does not fit, the field of the lowest priority is dropped first).
+struct StatusField
+{
+  std::string text;
+  std::string short_text;
+  int priority = 0;
+};
+/// The fields joined by ", " in `width - 1` columns at most (a line of the terminal's full
+/// width would wrap on some terminals): all in full if they fit; else each in its short form;
+/// else without the fields of lowest priority, one at a time, until the rest fits; the one
+/// field left is cut. A `width` below 2 means no limit.
+std::string fit_status_line(const std::vector<StatusField> &fields, int width);
+/// The width of rank 0's terminal in columns, asked at each call (so a resized window counts
+/// at the next line): ioctl(TIOCGWINSZ) on stdout, else $COLUMNS, else 80.
+int terminal_columns();
 
 /// Prints "kiln: warning: <message>" on std::cout, on rank 0 of MPI_COMM_WORLD only (every
 /// rank may call it: inputs are replicated) and once per distinct message in a process.

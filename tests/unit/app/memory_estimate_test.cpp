@@ -72,19 +72,27 @@ TEST(MemoryEstimate, TheKrylovBasisIsTheChosenSolvers)
               HasSubstr("with a Krylov basis of 301 vectors"));
 }
 
+TEST(MemoryEstimate, PartsAddUpToTheTotal)
+{
+  const MemoryEstimate e(110592, 120050, 1, 201, 2);
+  EXPECT_DOUBLE_EQ(e.bytes_per_rank(), e.base_bytes() + e.mesh_bytes() + e.unknown_bytes());
+  EXPECT_THAT(e.summary(), HasSubstr(kiln::memory_text(e.base_bytes()) +
+                                     " the program, its libraries and MPI; "));
+}
+
 TEST(MemoryEstimate, Text)
 {
   EXPECT_EQ(kiln::memory_text(870e6), "870 MB");
   EXPECT_EQ(kiln::memory_text(1.234e9), "1.23 GB");
   EXPECT_EQ(kiln::memory_text(3.07e12), "3.07 TB");
   EXPECT_EQ(kiln::memory_text(4.28e3), "4.28 kB");
-  EXPECT_EQ(
-      MemoryEstimate(64, 150, 4, 201, 2).summary(),
-      "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
-          " per rank (201 kB on every rank for the 64 cells (what more ranks do not divide: ghost "
-          "rows, maps, the mesh); " +
-          kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
-          " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
+  EXPECT_EQ(MemoryEstimate(64, 150, 4, 201, 2).summary(),
+            "about " + kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).bytes_per_rank()) +
+                " per rank (94 MB the program, its libraries and MPI; 201 kB on every rank for the "
+                "64 cells (what more ranks do not divide: ghost "
+                "rows, maps, the mesh); " +
+                kiln::memory_text(MemoryEstimate(64, 150, 4, 201, 2).unknown_bytes()) +
+                " for 1/2 of the 600 unknowns, with a Krylov basis of 201 vectors)");
 }
 
 TEST(CheckMemory, ABoxThatCannotFitIsRefusedNamingCells)

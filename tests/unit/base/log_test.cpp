@@ -7,8 +7,13 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -96,4 +101,52 @@ TEST(Log, NoStatusLineElsewhere)
   buffer.end_status();
   EXPECT_EQ(file.str(), "step 1: t = 1 s\n");
   EXPECT_FALSE(buffer.terminal());
+}
+
+TEST(Log, FitStatusLineShortensThenDropsByPriority)
+{
+  const std::vector<kiln::StatusField> fields = {{"step 12: t = 1.5 s", "", 100},
+                                                 {"Newton 3 (41 linear)", "N 3/41", 40},
+                                                 {"35% of 150 s", "35%", 60},
+                                                 {"wall 12.5 s", "", 10},
+                                                 {"1 min 05 s left", "", 50}};
+  const std::string full =
+      "step 12: t = 1.5 s, Newton 3 (41 linear), 35% of 150 s, wall 12.5 s, 1 min 05 s left";
+  EXPECT_EQ(kiln::fit_status_line(fields, 200), full);
+  EXPECT_EQ(kiln::fit_status_line(fields, static_cast<int>(full.size()) + 1), full);
+  // One column less: the short forms.
+  EXPECT_EQ(kiln::fit_status_line(fields, static_cast<int>(full.size())),
+            "step 12: t = 1.5 s, N 3/41, 35%, wall 12.5 s, 1 min 05 s left");
+  // Then the wall time goes, then the Newton iterations, then the time left, then the share.
+  EXPECT_EQ(kiln::fit_status_line(fields, 50), "step 12: t = 1.5 s, N 3/41, 35%, 1 min 05 s left");
+  EXPECT_EQ(kiln::fit_status_line(fields, 41), "step 12: t = 1.5 s, 35%, 1 min 05 s left");
+  EXPECT_EQ(kiln::fit_status_line(fields, 30), "step 12: t = 1.5 s, 35%");
+  EXPECT_EQ(kiln::fit_status_line(fields, 20), "step 12: t = 1.5 s");
+  // The last field is cut: never more than width - 1 columns.
+  EXPECT_EQ(kiln::fit_status_line(fields, 11), "step 12: t");
+  for (int width = 2; width < 100; ++width)
+    EXPECT_LE(kiln::fit_status_line(fields, width).size(), static_cast<std::size_t>(width - 1));
+}
+
+TEST(Log, TerminalColumnsFallsBackOnColumns)
+{
+  // ctest's output is not a terminal: the width is $COLUMNS, else 80.
+  if (isatty(STDOUT_FILENO) == 1)
+    GTEST_SKIP() << "stdout is a terminal: its own width counts";
+  ::setenv("COLUMNS", "123", 1);
+  EXPECT_EQ(kiln::terminal_columns(), 123);
+  ::unsetenv("COLUMNS");
+  EXPECT_EQ(kiln::terminal_columns(), 80);
+}
+
+TEST(Log, StatusLineNeverWiderThanTheTerminal)
+{
+  if (isatty(STDOUT_FILENO) == 1)
+    GTEST_SKIP() << "stdout is a terminal: its own width counts";
+  ::setenv("COLUMNS", "20", 1);
+  std::ostringstream screen;
+  kiln::internal::StatusLineBuffer buffer(screen, true);
+  buffer.set_status(std::string(50, 'x'));
+  ::unsetenv("COLUMNS");
+  EXPECT_EQ(screen.str(), "\r" + std::string(19, 'x') + "\033[K");
 }
