@@ -116,12 +116,12 @@ std::vector<StatusField> ProgressReport::status_fields(const TimeStepper::State 
       newton.linear_failures > 0
           ? ", " + std::to_string(newton.linear_failures) + " short of tolerance"
           : std::string();
-  fields.push_back({"Newton " + newton_its + " (" + linear_its + " linear" + short_of_tolerance +
-                        ")",
-                    "N " + newton_its + "/" + linear_its +
-                        (newton.linear_failures > 0 ? "!" + std::to_string(newton.linear_failures)
-                                                    : std::string()),
-                    40});
+  fields.push_back(
+      {"Newton " + newton_its + " (" + linear_its + " linear" + short_of_tolerance + ")",
+       "N " + newton_its + "/" + linear_its +
+           (newton.linear_failures > 0 ? "!" + std::to_string(newton.linear_failures)
+                                       : std::string()),
+       40});
   for (StatusField &f : figures(state.time, summary))
     fields.push_back(std::move(f));
   return fields;
@@ -154,12 +154,11 @@ void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::R
   line << (steady ? "steady solve " : "step ") << n << ": t = " << internal::seconds(state.time);
   if (!steady)
     line << ", dt = " << internal::seconds(state.last_step) << (bdf2 ? " (BDF2)" : " (BE)");
-  line << ", Newton " << newton.newton_iterations << " (" << newton.linear_iterations
-       << " linear";
+  line << ", Newton " << newton.newton_iterations << " (" << newton.linear_iterations << " linear";
   if (newton.linear_failures > 0)
     line << ", " << newton.linear_failures << " short of tolerance";
-  line << "), |F| " << std::scientific << std::setprecision(3)
-       << newton.initial_residual_norm << " -> " << newton.final_residual_norm;
+  line << "), |F| " << std::scientific << std::setprecision(3) << newton.initial_residual_norm
+       << " -> " << newton.final_residual_norm;
   if (error >= 0.0)
     line << ", error " << std::defaultfloat << std::setprecision(3) << error;
   std::string rest;

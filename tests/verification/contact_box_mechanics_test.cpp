@@ -329,10 +329,10 @@ open_box_displacements(const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const std::string path = inputs + "contact-box-open.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  // |F| of this deck's first steps levels off at 1.3-1.4e-12 (rounding, on 1 and 2 ranks):
-  // an absolute tolerance of 1e-12 is below it; 3e-12 changes u by far less than the 1e-9
-  // compared.
-  set_solver_tolerances(input, 3e-12, 1e-12, 1e-13);
+  // |F| levels off at 1e-12 to 1e-11 by rounding (T_dot = a T + b cancels more as the step
+  // shortens): an absolute tolerance of 1e-12 is below it; 1e-11 (as contact_box_contact)
+  // changes u by far less than the 1e-9 compared.
+  set_solver_tolerances(input, 1e-11, 1e-12, 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
   kiln::CoupledProblem &problem = sim.problem();

@@ -15,7 +15,11 @@ std::vector<std::vector<double>> run(const Teuchos::RCP<const Teuchos::Comm<int>
 {
   const std::string path = kiln_test::inputs + "contact-box-close.xml";
   Teuchos::ParameterList input = kiln::read_input(path, *comm);
-  kiln_test::set_solver_tolerances(input, 1e-12, 1e-14, 1e-13);
+  // |F| levels off at 1e-12 to 1e-11 by rounding (T_dot = a T + b cancels more as the step
+  // shortens; the same with the lumped and the consistent capacity): an absolute tolerance
+  // of 1e-12 is below it, and a step retried with a shorter dt only raises it. 1e-11 changes
+  // the temperatures by far less than the 1e-9 compared.
+  kiln_test::set_solver_tolerances(input, 1e-11, 1e-14, 1e-13);
   kiln::Simulation sim(input, path, comm);
   sim.setup();
   kiln::CoupledProblem &problem = sim.problem();
