@@ -159,6 +159,7 @@ def check(text, full, truchas=HERE.parent.parent / "inputs" / "truchas"):
                                 f"within 0.1 of {order}")
     failures += check_elastic(text)
     failures += check_energy(text)
+    failures += check_corefined(text, full)
     failures += check_truchas(text, truchas)
     return failures
 
@@ -181,6 +182,26 @@ def check_elastic(text):
             if not abs(last - expected) <= 0.1:
                 failures.append(f"elasticity convergence, {case}: {column} {last}, expected "
                                 f"within 0.1 of {expected}")
+    return failures
+
+
+def check_corefined(text, full):
+    """The closing time with space and time refined together: every mesh closes within the
+    spec's 50 to 53 s; in the full report four meshes whose differences shrink."""
+    rows = table_rows(text, "| cells | h [mm] | largest step [s] |")
+    if not rows:
+        return ["no table of the closing time with space and time refined together"]
+    failures = []
+    events = [number(r["closing time [s]"]) for r in rows]
+    for r, t in zip(rows, events):
+        if not 50.0 <= t <= 53.0:
+            failures.append(f"co-refined closing time on {r['cells']}: {t} s, outside 50..53 s")
+    if full:
+        if len(rows) < 4:
+            failures.append(f"co-refined closing time: {len(rows)} meshes, expected 4")
+        elif not abs(events[3] - events[2]) < abs(events[2] - events[1]) < \
+                abs(events[1] - events[0]):
+            failures.append(f"co-refined closing times {events}: the differences do not shrink")
     return failures
 
 
