@@ -1,6 +1,10 @@
 #include "io/parallel_hdf5_file.hpp"
 
+#include "base/errors.hpp"
 #include "io/collective_checks.hpp"
+#include "io/hdf5_errors.hpp"
+
+#include <Teuchos_DefaultMpiComm.hpp>
 
 #include <algorithm>
 
@@ -52,6 +56,7 @@ OwnedRows::OwnedRows(const std::vector<int> &owned, const int n_rows_of_all)
 ParallelHdf5File::ParallelHdf5File(const MPI_Comm comm, const std::string &path)
     : comm_(comm), path_(path)
 {
+  quiet_hdf5_errors();
   fapl_ = H5Handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_fapl_mpio(fapl_.get(), comm, MPI_INFO_NULL);
   // Metadata (groups, attributes, dataset headers) is written collectively too.
@@ -72,9 +77,16 @@ ParallelHdf5File::ParallelHdf5File(const MPI_Comm comm, const std::string &path)
 
 void ParallelHdf5File::check_io(const bool local_ok, const std::string &what) const
 {
-  check_input_collectively(comm_, local_ok, path_,
-                           what + " failed; check that the disk is not full and that the file is "
-                                  "not removed or opened by another program while Kiln runs");
+  // Read before any other HDF5 call clears the error stack.
+  const std::string reason = local_ok ? "" : hdf5_failure_reason();
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(
+      comm, local_ok, path_,
+      what + " failed" + in_parentheses(reason) +
+          "; the run cannot go on. Check that the disk is not full, that no file-size limit "
+          "(ulimit -f) stops the file and that it is not removed or opened by another program "
+          "while Kiln runs; the steps written before are kept (continue from the last "
+          "checkpoint with kiln INPUT.xml --restart)");
 }
 
 H5Handle ParallelHdf5File::create_group(const std::string &name) const
@@ -100,9 +112,16 @@ H5Handle ParallelHdf5File::open_dataset(const hid_t location, const std::string 
 void ParallelHdf5File::close()
 {
   const bool ok = !file_.valid() || H5Fclose(file_.release()) >= 0;
-  check_io(ok, "closing the file");
+  const std::string reason = ok ? "" : hdf5_failure_reason();
+  // The property lists go whatever the outcome: nothing of the file stays open for
+  // MPI_Finalize to trip on.
   dxpl_.reset();
   fapl_.reset();
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(comm, ok, path_,
+                           "closing the file failed" + in_parentheses(reason) +
+                               "; check that the disk is not full and that no file-size limit "
+                               "(ulimit -f) stops the file");
 }
 
 void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,
