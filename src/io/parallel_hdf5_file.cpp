@@ -6,7 +6,14 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include <sys/resource.h>
+#include <sys/statvfs.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
 
 namespace kiln
 {
@@ -95,6 +102,49 @@ H5Handle ParallelHdf5File::create_group(const std::string &name) const
                  H5Gclose);
   check_io(group.valid(), "creating group /" + name);
   return group;
+}
+
+std::uintmax_t ParallelHdf5File::size() const
+{
+  std::error_code e;
+  std::uint64_t bytes = std::filesystem::file_size(path_, e);
+  if (e)
+    bytes = 0;
+  MPI_Bcast(&bytes, 1, MPI_UINT64_T, 0, comm_);
+  return bytes;
+}
+
+void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
+{
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  std::string shortfall;
+  if (rank == 0)
+  {
+    std::ostringstream text;
+    struct statvfs disk = {};
+    struct rlimit limit = {};
+    std::error_code e;
+    const std::uintmax_t now = std::filesystem::file_size(path_, e);
+    if (statvfs(directory_of(path_).c_str(), &disk) == 0 &&
+        static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize < bytes)
+      text << std::strerror(ENOSPC) << ": "
+           << static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize
+           << " bytes free, the next step needs about " << bytes;
+    else if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && !e &&
+             now + bytes > static_cast<std::uintmax_t>(limit.rlim_cur))
+      text << std::strerror(EFBIG) << ": the file-size limit (ulimit -f) is "
+           << static_cast<std::uintmax_t>(limit.rlim_cur) << " bytes, the file has " << now
+           << " and the next step needs about " << bytes << " more";
+    shortfall = text.str();
+  }
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(
+      comm, shortfall.empty(), path_,
+      "the next step cannot be written (" + shortfall +
+          "); the run cannot go on. Free space on the disk (or raise the file-size limit) and "
+          "continue from the last checkpoint with kiln INPUT.xml --restart; the steps written "
+          "before are kept");
 }
 
 void ParallelHdf5File::flush() const
