@@ -14,6 +14,7 @@
 #include <kiln/version.hpp>
 #include <mpi.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <new>
@@ -95,6 +96,9 @@ int main(int argc, char **argv)
   // orted daemon (Kiln spawns no processes), 0.1 s more (doc/user-guide.md, Start-up).
   for (const auto &[name, value] : kiln::open_mpi_defaults(std::getenv))
     setenv(name.c_str(), value.c_str(), 0);
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported like a full disk,
+  // instead of killing the run with SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
   Teuchos::GlobalMPISession session(&argc, &argv, nullptr);
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   try

@@ -235,6 +235,13 @@ Simulation::Ending Simulation::run()
                                                 "Kiln/Checkpoint/\"File Base\"");
   const bool fresh = restart_.empty();
   TimeStepper::State state = fresh ? start() : resume();
+  KILN_CHECK_INPUT(fresh || state.time < outputs_->end_time() * (1.0 - 1e-12), restart_,
+                   "the checkpoint's time, t = "
+                       << state.time << " s, is at or past the end of this run, the last output "
+                       << "time " << outputs_->end_time()
+                       << " s: there is nothing left to compute, and nothing was written. To go "
+                          "on, add later times to Kiln/Output/\"Times\" of "
+                       << input_path_);
   // A continued run's results start with the earlier run's, read before the new files open.
   const std::string earlier_results = fresh ? "" : earlier_results_file();
   open_results(!fresh && earlier_results.empty() ? restart_output_steps_ : 0);
@@ -254,6 +261,23 @@ Simulation::Ending Simulation::run()
   try
   {
     finished = stepper_->run(*solved_, *newton_, state, stop_times(state, checkpoints), observer);
+  }
+  catch (const WriteError &e)
+  {
+    // A file could not be written (a full disk, a file-size limit): nothing more is written,
+    // not even the results' status, so that no file complete before is touched; the results
+    // stay BASE.running.h5, readable up to the last complete step, and the last checkpoint
+    // that was verified stays the one to continue from.
+    const std::string last = observer.last_checkpoint_path();
+    const std::string base = outputs_->file_base();
+    const std::string running =
+        outputs_->writes_hdf5() ? base + ".running.h5" + (outputs_->writes_exodus() ? " and " : "")
+                                : "";
+    *out_ << "stopped by the error below at t = " << state.time << " s; the results up to the "
+          << "last complete output step are in " << running
+          << (outputs_->writes_exodus() ? base + ".running.exo" : "")
+          << (last.empty() ? std::string() : "; the last good checkpoint is " + last) << "\n";
+    throw;
   }
   catch (const RunError &e)
   {

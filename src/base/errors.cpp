@@ -87,4 +87,12 @@ void check_run_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
   if (first_failure(comm, local_ok, message, first))
     throw RunError(first);
 }
+
+void check_write_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
+                              const std::string &where, const std::string &message)
+{
+  std::string first;
+  if (first_failure(comm, local_ok, message, first))
+    throw WriteError(where.empty() ? first : where + ": " + first);
+}
 } // namespace kiln

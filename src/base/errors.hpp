@@ -35,6 +35,15 @@ public:
   explicit RunError(const std::string &message) : std::runtime_error(message) {}
 };
 
+/// A file of the run that cannot be written (a full disk, a file-size limit, an I/O error):
+/// a RunError (exit 2) after which the run writes nothing more; the files complete before it
+/// (the previous checkpoint) stay as they were. Raised alike on every rank.
+class WriteError : public RunError
+{
+public:
+  explicit WriteError(const std::string &message) : RunError(message) {}
+};
+
 /// A programmer error found by KILN_ASSERT.
 class InternalError : public std::logic_error
 {
@@ -65,6 +74,11 @@ void check_collectively(const Teuchos::Comm<int> &comm, bool local_ok, const std
 /// from the lowest rank where the check failed. Collective.
 void check_run_collectively(const Teuchos::Comm<int> &comm, bool local_ok,
                             const std::string &message);
+
+/// Throws the same WriteError, "where: message" with the message of the lowest rank that
+/// failed, on every rank if `local_ok` is false on any rank. Collective.
+void check_write_collectively(const Teuchos::Comm<int> &comm, bool local_ok,
+                              const std::string &where, const std::string &message);
 } // namespace kiln
 
 #define KILN_CHECK_INPUT(cond, where, msg)                                                         \

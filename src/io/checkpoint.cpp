@@ -2,14 +2,21 @@
 
 #include "base/errors.hpp"
 #include "base/hash.hpp"
+#include "io/hdf5_errors.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Import.hpp>
 #include <hdf5.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -23,12 +30,24 @@ namespace internal
 class H5
 {
 public:
-  H5(const hid_t id, herr_t (*close)(hid_t), const std::string &what) : id_(id), close_(close)
+  H5(const hid_t id, herr_t (*closer)(hid_t), const std::string &what) : id_(id), close_(closer)
   {
     if (id < 0)
-      throw std::runtime_error(what);
+      throw std::runtime_error(what + in_parentheses(hdf5_failure_reason()));
   }
-  ~H5() { close_(id_); }
+  ~H5()
+  {
+    if (id_ >= 0)
+      close_(id_);
+  }
+  /// Closes the object now; an error (`what` failed) if that fails.
+  void close(const std::string &what)
+  {
+    const hid_t id = id_;
+    id_ = -1;
+    if (close_(id) < 0)
+      throw std::runtime_error(what + in_parentheses(hdf5_failure_reason()));
+  }
   H5(const H5 &) = delete;
   H5 &operator=(const H5 &) = delete;
   operator hid_t() const { return id_; }
@@ -41,7 +60,7 @@ private:
 void check(const herr_t status, const std::string &what)
 {
   if (status < 0)
-    throw std::runtime_error(what);
+    throw std::runtime_error(what + in_parentheses(hdf5_failure_reason()));
 }
 
 void write_attribute(const hid_t object, const std::string &name, const double value)
@@ -95,9 +114,17 @@ void write_array(const hid_t group, const std::string &name, const std::vector<T
   const H5 space(H5Screate_simple(columns > 1 ? 2 : 1, dims, nullptr), H5Sclose, "dataspace");
   const hid_t file_type = std::is_same_v<T, double> ? H5T_IEEE_F64LE : H5T_STD_I32LE;
   const hid_t memory_type = std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT;
-  const H5 d(
-      H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-      H5Dclose, "dataset " + name);
+  // A Fletcher32 checksum of the data (read_checkpoint refuses a flipped bit); the filter needs
+  // a chunked layout: one chunk of at most 2^20 rows.
+  const H5 dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "dataset properties");
+  if (!values.empty())
+  {
+    const hsize_t chunk[2] = {std::min<hsize_t>(dims[0], hsize_t{1} << 20), columns};
+    check(H5Pset_chunk(dcpl, columns > 1 ? 2 : 1, chunk), "chunking dataset " + name);
+    check(H5Pset_fletcher32(dcpl), "checksum of dataset " + name);
+  }
+  const H5 d(H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+             H5Dclose, "dataset " + name);
   check(H5Dwrite(d, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "dataset " + name);
 }
 
@@ -199,6 +226,100 @@ std::vector<double> read_row(const hid_t group, const std::string &name, const i
                              all.begin() + static_cast<std::ptrdiff_t>((row + 1) * dims[1]));
 }
 
+/// Whether every value of `vectors` is a finite number.
+bool all_finite(const std::vector<const std::vector<double> *> &vectors)
+{
+  for (const auto *v : vectors)
+    for (const double value : *v)
+      if (!std::isfinite(value))
+        return false;
+  return true;
+}
+
+/// Writes `bytes` to `path` and makes them durable (fsync): an error naming the system's
+/// reason (e.g. "No space left on device", "File too large") if any of it fails.
+void write_file(const std::string &path, const std::vector<char> &bytes)
+{
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0)
+    throw std::runtime_error(std::string("cannot create the file (") + std::strerror(errno) + ")");
+  std::size_t written = 0;
+  int error_number = 0;
+  while (written < bytes.size() && error_number == 0)
+  {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno != EINTR)
+      error_number = errno;
+    else if (n > 0)
+      written += static_cast<std::size_t>(n);
+  }
+  if (error_number == 0 && ::fsync(fd) != 0)
+    error_number = errno;
+  if (::close(fd) != 0 && error_number == 0)
+    error_number = errno;
+  if (error_number != 0)
+    throw std::runtime_error(std::string("writing the file failed (") +
+                             std::strerror(error_number) + ")");
+}
+
+/// The largest time or step a checkpoint may hold [s]: 10^15 s, 30 million years.
+constexpr double largest_time = 1e15;
+
+/// An error naming the first scalar of `state` (or `output_steps`) out of its range: times and
+/// steps finite and in [0, largest_time], counts >= 0.
+void check_ranges(const TimeStepper::State &state, const int output_steps)
+{
+  const std::pair<const char *, double> times[] = {{"time", state.time},
+                                                   {"next_step", state.next_step},
+                                                   {"last_step", state.last_step},
+                                                   {"step_before", state.step_before}};
+  for (const auto &[name, value] : times)
+    if (!std::isfinite(value) || value < 0.0 || value > largest_time)
+    {
+      std::ostringstream m;
+      m << "its attribute state/" << name << " = " << value
+        << " is out of range (a finite number in [0, " << largest_time
+        << "] s is expected): a damaged checkpoint";
+      throw std::runtime_error(m.str());
+    }
+  const TimeStepper::Statistics &t = state.statistics;
+  const std::pair<const char *, int> counts[] = {{"accepted", state.accepted},
+                                                 {"attempts", state.attempts},
+                                                 {"steps", t.steps},
+                                                 {"error_rejections", t.error_rejections},
+                                                 {"newton_failures", t.newton_failures},
+                                                 {"newton_iterations", t.newton_iterations},
+                                                 {"linear_iterations", t.linear_iterations},
+                                                 {"output_steps", output_steps}};
+  for (const auto &[name, value] : counts)
+    if (value < 0)
+      throw std::runtime_error("its attribute state/" + std::string(name) + " = " +
+                               std::to_string(value) +
+                               " is negative (a count >= 0 is expected): a damaged checkpoint");
+}
+
+/// Reads the checkpoint just written at `path` back (every checksum of its state checked) and
+/// compares it with what was written: an error if anything differs.
+void verify_checkpoint(const std::string &path, const double time,
+                       const std::vector<const std::vector<double> *> &states)
+{
+  const H5 file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                "reading the file back failed");
+  const H5 s(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "reading group state back");
+  const char *const names[] = {"x", "x_1", "x_2"};
+  for (std::size_t v = 0; v < states.size(); ++v)
+  {
+    const std::vector<double> read = read_array<double>(s, names[v], states[v]->size());
+    if (!read.empty() &&
+        std::memcmp(read.data(), states[v]->data(), read.size() * sizeof(double)) != 0)
+      throw std::runtime_error(std::string("dataset state/") + names[v] +
+                               " read back differs from what was written");
+  }
+  const double read_time = read_attribute<double>(s, "time");
+  if (std::memcmp(&read_time, &time, sizeof time) != 0)
+    throw std::runtime_error("attribute state/time read back differs from what was written");
+}
+
 const char *const physics_blocks[] = {"Mesh", "Material", "Thermal", "Mechanics"};
 } // namespace internal
 
@@ -275,15 +396,28 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
   int origin_length = 0;
   const std::vector<double> origins =
       gather_records(info.preconditioner_origin, comm, origin_length);
+  std::ostringstream time;
+  time << state.time;
+  check_run_collectively(
+      comm, all_finite({&x, &x_1, &x_2}) && std::isfinite(state.time),
+      path + ": the state at t = " + time.str() +
+          " s holds values that are not finite numbers (NaN or Inf); it is not written as a "
+          "checkpoint, and the checkpoints written before are kept");
+  quiet_hdf5_errors();
   std::string error;
   if (comm.getRank() == 0)
   {
     const std::string tmp = path + ".tmp";
     try
     {
+      // Built in memory (HDF5's core driver, no backing store) and written to disk by
+      // write_file(): HDF5 itself never meets a full disk, whose failed close would leave the
+      // file open in the library (and MPI_Finalize crashing in HDF5's clean-up).
+      const H5 fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access properties");
+      check(H5Pset_fapl_core(fapl, std::size_t{1} << 20, false), "the in-memory file");
+      H5 file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose,
+              "cannot create the file");
       {
-        const H5 file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-                      "cannot create the file");
         write_attribute(file, "format", std::string("kiln checkpoint"));
         write_attribute(file, "format_version", checkpoint_format_version);
         write_attribute(file, "kiln_version", info.kiln_version);
@@ -339,6 +473,16 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                       static_cast<hsize_t>(origin_length));
         }
       }
+      check(H5Fflush(file, H5F_SCOPE_LOCAL), "flushing the file");
+      const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+      if (size < 0)
+        throw std::runtime_error("the file's image" + in_parentheses(hdf5_failure_reason()));
+      std::vector<char> image(static_cast<std::size_t>(size));
+      if (H5Fget_file_image(file, image.data(), image.size()) != size)
+        throw std::runtime_error("the file's image" + in_parentheses(hdf5_failure_reason()));
+      file.close("closing the file");
+      write_file(tmp, image);
+      verify_checkpoint(tmp, state.time, {&x, &x_1, &x_2});
       std::filesystem::rename(tmp, path);
     }
     catch (const std::exception &e)
@@ -348,10 +492,11 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
       error = e.what();
     }
   }
-  check_collectively(comm, error.empty(), path,
-                     "cannot write the checkpoint (" + error +
-                         "); check that its folder exists and is writable (Kiln/Checkpoint/"
-                         "\"File Base\")");
+  check_write_collectively(comm, error.empty(), path,
+                           "cannot write the checkpoint: " + error +
+                               "; nothing was put in its place. Check that its folder exists and "
+                               "is writable (Kiln/Checkpoint/\"File Base\"), that the disk is "
+                               "not full and that no file-size limit (ulimit -f) stops it");
 }
 
 Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
@@ -420,13 +565,22 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
     if (n % static_cast<std::size_t>(std::max(f.n_nodes, 1)) != 0)
       throw std::runtime_error("its " + std::to_string(f.n_nodes) +
                                " nodes do not fit this run's " + std::to_string(n) + " unknowns");
+    check_ranges(state, c.info.output_steps);
     x = read_array<double>(s, "x", n);
     x_1 = read_array<double>(s, "x_1", n);
     x_2 = read_array<double>(s, "x_2", n);
+    if (!all_finite({&x, &x_1, &x_2}))
+      throw std::runtime_error("its state (state/x, x_1 or x_2) holds values that are not finite "
+                               "numbers (NaN or Inf): a damaged checkpoint");
 
     const H5 contact(H5Gopen2(file, "contact", H5P_DEFAULT), H5Gclose, "group contact");
     c.info.active = read_array<int>(contact, "active", f.n_pairs);
     c.info.traction = read_array<double>(contact, "gap_normal_traction", f.n_pairs);
+    for (std::size_t i = 0; i < c.info.active.size(); ++i)
+      if ((c.info.active[i] != 0 && c.info.active[i] != 1) || !std::isfinite(c.info.traction[i]))
+        throw std::runtime_error("its contact state of gap pair " + std::to_string(i) +
+                                 " is out of range (active not 0 or 1, or a traction that is not "
+                                 "a finite number): a damaged checkpoint");
     if (H5Lexists(file, "solver", H5P_DEFAULT) > 0)
     {
       const H5 solver(H5Gopen2(file, "solver", H5P_DEFAULT), H5Gclose, "group solver");

@@ -51,6 +51,9 @@ struct Hdf5XdmfWriter::Impl
   internal::H5Handle step_group;
   internal::H5Handle gap_step_group;
   bool in_step = false;
+  /// The file's size after the last step (or the mesh), and the largest growth of a step [bytes].
+  std::uintmax_t size_before_step = 0;
+  std::uintmax_t largest_step = 0;
 };
 
 Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_path,
@@ -245,6 +248,9 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
     }
   }
   impl_->file.flush();
+  impl_->size_before_step = impl_->file.size();
+  // Before the first step, a guess: a step's fields take about a quarter of the mesh's bytes.
+  impl_->largest_step = impl_->size_before_step / 4;
   impl_->index.write();
 }
 
@@ -254,6 +260,8 @@ void Hdf5XdmfWriter::begin_step(const double time, const int cycle, const double
 {
   Impl &m = *impl_;
   internal::check_begin_step(m.in_step);
+  // Room for twice the largest step so far (the mesh before the first), and the metadata.
+  m.file.reserve(2 * m.largest_step + (std::uintmax_t{64} << 10));
   m.step_group = m.file.create_group("steps/" + internal::step_group_name(m.index.n_steps()));
   if (m.gap.n_points() > 0)
     m.gap_step_group =
@@ -294,6 +302,9 @@ void Hdf5XdmfWriter::end_step()
   m.in_step = false;
   m.write_pending_history();
   m.file.flush();
+  const std::uintmax_t size = m.file.size();
+  m.largest_step = std::max(m.largest_step, size - std::min(size, m.size_before_step));
+  m.size_before_step = size;
   m.index.write();
 }
 

@@ -1,8 +1,19 @@
 #include "io/parallel_hdf5_file.hpp"
 
+#include "base/errors.hpp"
 #include "io/collective_checks.hpp"
+#include "io/hdf5_errors.hpp"
+
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
 
 namespace kiln
 {
@@ -52,6 +63,7 @@ OwnedRows::OwnedRows(const std::vector<int> &owned, const int n_rows_of_all)
 ParallelHdf5File::ParallelHdf5File(const MPI_Comm comm, const std::string &path)
     : comm_(comm), path_(path)
 {
+  quiet_hdf5_errors();
   fapl_ = H5Handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_fapl_mpio(fapl_.get(), comm, MPI_INFO_NULL);
   // Metadata (groups, attributes, dataset headers) is written collectively too.
@@ -72,9 +84,16 @@ ParallelHdf5File::ParallelHdf5File(const MPI_Comm comm, const std::string &path)
 
 void ParallelHdf5File::check_io(const bool local_ok, const std::string &what) const
 {
-  check_input_collectively(comm_, local_ok, path_,
-                           what + " failed; check that the disk is not full and that the file is "
-                                  "not removed or opened by another program while Kiln runs");
+  // Read before any other HDF5 call clears the error stack.
+  const std::string reason = local_ok ? "" : hdf5_failure_reason();
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(
+      comm, local_ok, path_,
+      what + " failed" + in_parentheses(reason) +
+          "; the run cannot go on. Check that the disk is not full, that no file-size limit "
+          "(ulimit -f) stops the file and that it is not removed or opened by another program "
+          "while Kiln runs; the steps written before are kept (continue from the last "
+          "checkpoint with kiln INPUT.xml --restart)");
 }
 
 H5Handle ParallelHdf5File::create_group(const std::string &name) const
@@ -83,6 +102,49 @@ H5Handle ParallelHdf5File::create_group(const std::string &name) const
                  H5Gclose);
   check_io(group.valid(), "creating group /" + name);
   return group;
+}
+
+std::uintmax_t ParallelHdf5File::size() const
+{
+  std::error_code e;
+  std::uint64_t bytes = std::filesystem::file_size(path_, e);
+  if (e)
+    bytes = 0;
+  MPI_Bcast(&bytes, 1, MPI_UINT64_T, 0, comm_);
+  return bytes;
+}
+
+void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
+{
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  std::string shortfall;
+  if (rank == 0)
+  {
+    std::ostringstream text;
+    struct statvfs disk = {};
+    struct rlimit limit = {};
+    std::error_code e;
+    const std::uintmax_t now = std::filesystem::file_size(path_, e);
+    if (statvfs(directory_of(path_).c_str(), &disk) == 0 &&
+        static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize < bytes)
+      text << std::strerror(ENOSPC) << ": "
+           << static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize
+           << " bytes free, the next step needs about " << bytes;
+    else if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && !e &&
+             now + bytes > static_cast<std::uintmax_t>(limit.rlim_cur))
+      text << std::strerror(EFBIG) << ": the file-size limit (ulimit -f) is "
+           << static_cast<std::uintmax_t>(limit.rlim_cur) << " bytes, the file has " << now
+           << " and the next step needs about " << bytes << " more";
+    shortfall = text.str();
+  }
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(
+      comm, shortfall.empty(), path_,
+      "the next step cannot be written (" + shortfall +
+          "); the run cannot go on. Free space on the disk (or raise the file-size limit) and "
+          "continue from the last checkpoint with kiln INPUT.xml --restart; the steps written "
+          "before are kept");
 }
 
 void ParallelHdf5File::flush() const
@@ -100,9 +162,16 @@ H5Handle ParallelHdf5File::open_dataset(const hid_t location, const std::string 
 void ParallelHdf5File::close()
 {
   const bool ok = !file_.valid() || H5Fclose(file_.release()) >= 0;
-  check_io(ok, "closing the file");
+  const std::string reason = ok ? "" : hdf5_failure_reason();
+  // The property lists go whatever the outcome: nothing of the file stays open for
+  // MPI_Finalize to trip on.
   dxpl_.reset();
   fapl_.reset();
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(comm, ok, path_,
+                           "closing the file failed" + in_parentheses(reason) +
+                               "; check that the disk is not full and that no file-size limit "
+                               "(ulimit -f) stops the file");
 }
 
 void ParallelHdf5File::write_rows(const hid_t location, const std::string &name,

@@ -71,6 +71,13 @@ public:
   H5Handle open_dataset(hid_t location, const std::string &name) const;
   /// The file itself, as a location (for root attributes).
   hid_t root() const { return file_.get(); }
+  /// A WriteError (on every rank) naming the system's reason ("No space left on device",
+  /// "File too large") unless the file's disk has `bytes` free and the file-size limit
+  /// (ulimit -f) lets it grow by as much: checked before a step is written, because HDF5 cannot
+  /// close a parallel file cleanly after a write failed on some ranks only.
+  void reserve(std::uintmax_t bytes) const;
+  /// The file's size on disk now [bytes] (rank 0's view, on every rank).
+  std::uintmax_t size() const;
   /// Flushes everything written so far to disk.
   void flush() const;
   /// Closes the file (every handle on it must be closed); nothing can be written after.

@@ -3,7 +3,13 @@
 #include "io/collective_checks.hpp"
 #include "io/field_catalog.hpp"
 
+#include "base/errors.hpp"
+
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -212,6 +218,7 @@ std::string XdmfIndex::text() const
 void XdmfIndex::write() const
 {
   bool ok = true;
+  int error_number = 0;
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
   if (rank == 0)
@@ -224,12 +231,16 @@ void XdmfIndex::write() const
       ok = static_cast<bool>(out);
     }
     ok = ok && std::rename(temporary.c_str(), xmf_path_.c_str()) == 0;
+    error_number = ok ? 0 : errno;
     if (!ok)
       std::remove(temporary.c_str());
   }
-  check_input_collectively(comm_, ok, xmf_path_,
-                           "cannot write the XDMF file; check that its folder is writable and the "
-                           "disk is not full");
+  const std::string reason = error_number != 0 ? std::strerror(error_number) : "an I/O error";
+  const Teuchos::MpiComm<int> comm(comm_);
+  check_write_collectively(comm, ok, xmf_path_,
+                           "cannot write the XDMF file (" + reason +
+                               "); check that its folder is writable, that the disk is not full "
+                               "and that no file-size limit (ulimit -f) stops it");
 }
 } // namespace internal
 } // namespace kiln

@@ -16,11 +16,14 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
+using testing::AllOf;
 using testing::HasSubstr;
 
 namespace
@@ -164,4 +167,166 @@ TEST(Checkpoint, ForeignDamagedAndOtherRunsAreRefusedOnEveryRank)
   EXPECT_THAT(message(path, kiln::RunFingerprint::of(f.mesh, f.dofs.layout(), other)),
               HasSubstr("cannot continue this run from the checkpoint: Kiln/\"Physics\" differs"));
   f.comm->barrier(); // every rank got here: none hung
+}
+
+namespace
+{
+/// A copy of `good` at `path` (rank 0), changed by `change` on the opened file.
+void damaged_copy(const std::string &good, const std::string &path,
+                  const std::function<void(hid_t)> &change)
+{
+  std::filesystem::copy_file(good, path, std::filesystem::copy_options::overwrite_existing);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  change(file);
+  ASSERT_GE(H5Fclose(file), 0);
+}
+
+void set_attribute(const hid_t file, const char *name, const double value)
+{
+  const hid_t group = H5Gopen2(file, "state", H5P_DEFAULT);
+  const hid_t a = H5Aopen(group, name, H5P_DEFAULT);
+  ASSERT_GE(a, 0);
+  const hid_t type = H5Aget_type(a);
+  const int as_int = static_cast<int>(value);
+  const herr_t status = H5Tget_class(type) == H5T_FLOAT ? H5Awrite(a, H5T_NATIVE_DOUBLE, &value)
+                                                        : H5Awrite(a, H5T_NATIVE_INT, &as_int);
+  if (status < 0)
+    H5Eprint2(H5E_DEFAULT, stderr);
+  EXPECT_GE(status, 0) << name;
+  H5Tclose(type);
+  H5Aclose(a);
+  H5Gclose(group);
+}
+} // namespace
+
+TEST(Checkpoint, DamagedStateOrScalarsAreRefused)
+{
+  Fixture f;
+  const std::string good = f.folder + "/good.h5";
+  const std::size_t n_pairs = static_cast<std::size_t>(f.fingerprint.n_pairs);
+  kiln::write_checkpoint(good, f.state(),
+                         {"1",
+                          "now",
+                          "deck.xml",
+                          "",
+                          0,
+                          std::vector<int>(n_pairs, 1),
+                          std::vector<double>(n_pairs, 2.5e6),
+                          {}},
+                         f.fingerprint, *f.comm);
+  const double nan = std::nan("");
+  if (f.comm->getRank() == 0)
+  {
+    // One bit of the stored state flipped (the Fletcher32 checksum sees it).
+    haddr_t offset = HADDR_UNDEF;
+    damaged_copy(good, f.folder + "/flipped.h5",
+                 [&](const hid_t file)
+                 {
+                   // The dataset is one chunk (Fletcher32 needs a chunked layout).
+                   const hid_t d = H5Dopen2(file, "state/x_1", H5P_DEFAULT);
+                   const hid_t space = H5Dget_space(d);
+                   hsize_t chunk_offset[2] = {0, 0}, size = 0;
+                   unsigned mask = 0;
+                   H5Dget_chunk_info(d, space, 0, chunk_offset, &mask, &offset, &size);
+                   H5Sclose(space);
+                   H5Dclose(d);
+                 });
+    ASSERT_NE(offset, HADDR_UNDEF);
+    {
+      std::fstream io(f.folder + "/flipped.h5", std::ios::in | std::ios::out | std::ios::binary);
+      const auto at = static_cast<std::streamoff>(offset + 20);
+      char byte = 0;
+      io.seekg(at);
+      io.read(&byte, 1);
+      byte = static_cast<char>(byte ^ 0x04);
+      io.seekp(at);
+      io.write(&byte, 1);
+      ASSERT_TRUE(io.good());
+    }
+    // A NaN written through HDF5 (the checksum is then right).
+    damaged_copy(good, f.folder + "/nan.h5",
+                 [&](const hid_t file)
+                 {
+                   const hid_t d = H5Dopen2(file, "state/x", H5P_DEFAULT);
+                   const hid_t space = H5Dget_space(d);
+                   std::vector<double> x(
+                       static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+                   H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, x.data());
+                   x[7] = nan;
+                   H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, x.data());
+                   H5Sclose(space);
+                   H5Dclose(d);
+                 });
+    damaged_copy(good, f.folder + "/time_nan.h5",
+                 [&](const hid_t file) { set_attribute(file, "time", nan); });
+    damaged_copy(good, f.folder + "/time_huge.h5",
+                 [](const hid_t file) { set_attribute(file, "time", 1e300); });
+    damaged_copy(good, f.folder + "/negative_step.h5",
+                 [](const hid_t file) { set_attribute(file, "last_step", -1.0); });
+    damaged_copy(good, f.folder + "/negative_steps.h5",
+                 [](const hid_t file) { set_attribute(file, "steps", -4.0); });
+  }
+  f.comm->barrier();
+  const auto map = f.dofs.owned_dof_map();
+  const auto message = [&](const std::string &name)
+  {
+    return kiln_test::input_error_message(
+        [&] { kiln::read_checkpoint(f.folder + "/" + name, f.fingerprint, map, *f.comm); });
+  };
+  EXPECT_THAT(message("flipped.h5"),
+              AllOf(HasSubstr("flipped.h5: cannot read the checkpoint: dataset x_1"),
+                    HasSubstr("Fletcher32")));
+  EXPECT_THAT(message("nan.h5"),
+              HasSubstr("nan.h5: cannot read the checkpoint: its state (state/x, x_1 or x_2) "
+                        "holds values that are not finite numbers"));
+  EXPECT_THAT(message("time_nan.h5"), HasSubstr("its attribute state/time = nan is out of range"));
+  EXPECT_THAT(message("time_huge.h5"),
+              HasSubstr("its attribute state/time = 1e+300 is out of range (a finite number in "
+                        "[0, 1e+15] s is expected): a damaged checkpoint"));
+  EXPECT_THAT(message("negative_step.h5"), HasSubstr("its attribute state/last_step = -1"));
+  EXPECT_THAT(message("negative_steps.h5"),
+              HasSubstr("its attribute state/steps = -4 is negative"));
+  EXPECT_NO_THROW(kiln::read_checkpoint(good, f.fingerprint, map, *f.comm));
+  f.comm->barrier();
+}
+
+TEST(Checkpoint, NonFiniteStateIsNotWritten)
+{
+  Fixture f;
+  kiln::TimeStepper::State s = f.state();
+  if (f.comm->getRank() == f.comm->getSize() - 1 && s.x->getLocalLength() > 0)
+    s.x->getDataNonConst()[0] = std::nan("");
+  const std::string path = f.folder + "/nan_state.h5";
+  try
+  {
+    kiln::write_checkpoint(path, s, {"1", "now", "deck.xml", "", 0, {}, {}, {}}, f.fingerprint,
+                           *f.comm);
+    ADD_FAILURE() << "a NaN state was written";
+  }
+  catch (const kiln::RunError &e)
+  {
+    EXPECT_THAT(e.what(), HasSubstr("nan_state.h5: the state at t = 53 s holds values that are "
+                                    "not finite numbers (NaN or Inf); it is not written"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  f.comm->barrier();
+}
+
+TEST(Checkpoint, UnwritableFolderIsAWriteError)
+{
+  Fixture f;
+  try
+  {
+    kiln::write_checkpoint(f.folder + "/no/such/folder/c.h5", f.state(),
+                           {"1", "now", "deck.xml", "", 0, {}, {}, {}}, f.fingerprint, *f.comm);
+    ADD_FAILURE() << "no error";
+  }
+  catch (const kiln::WriteError &e)
+  {
+    EXPECT_THAT(e.what(), HasSubstr("c.h5: cannot write the checkpoint: cannot create the file "
+                                    "(No such file or directory); nothing was put in its place"));
+  }
+  f.comm->barrier();
 }

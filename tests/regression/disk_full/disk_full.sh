@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Writing when the disk is full or a file may not grow (issue 33), for real: on a small tmpfs
+# mounted here (CI runs as root; skipped with a message where mount is not permitted) and
+# under ulimit -f. Each case runs steps.xml (six steps, an output step and a checkpoint after
+# each) in ./disk_full-<case> of the build tree and checks: exit status 2 (every rank: mpirun
+# passes the ranks' status on), one "kiln: error:" line naming the file and the system's
+# reason, no HDF5 diagnostic stack, no crash (signal, core dump), the last checkpoint written
+# before readable, and a restart from it that completes.
+# usage: disk_full.sh CASE NP KILN MPIEXEC
+#   checkpoint   the checkpoints' folder is a tmpfs with room for two of them
+#   results      the results' folder is a tmpfs smaller than the results
+#   ulimit       a file-size limit (on the ranks) smaller than the results file
+set -uo pipefail
+case=$1 np=$2 kiln=$3 mpiexec=$4
+here=$(dirname "$(realpath "$0")")
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+dir=$PWD/disk_full-$case
+mountpoint -q "$dir/small" 2>/dev/null && umount "$dir/small"
+rm -rf "$dir"
+mkdir -p "$dir/small" "$dir/big"
+cd "$dir" || exit 1
+fail() { echo "disk_full.sh $case: $*"; exit 1; }
+cleanup() { mountpoint -q "$dir/small" && umount "$dir/small"; }
+trap cleanup EXIT
+ulimit -c unlimited 2>/dev/null
+mount_small() { # SIZE: a tmpfs of SIZE at ./small
+  if ! mount -t tmpfs -o "size=$1" tmpfs small 2>mount.err; then
+    echo "disk_full.sh $case: SKIPPED: cannot mount a tmpfs here ($(cat mount.err)); run as root"
+    exit 0
+  fi
+}
+deck() { # OUTPUT_BASE CHECKPOINT_BASE: steps.xml with these file bases, as run.xml
+  sed "s|<ParameterList name=\"Output\">|&\n    <Parameter name=\"File Base\" type=\"string\" value=\"$1\"/>|;
+       s|<Parameter name=\"Every Steps\" type=\"int\" value=\"1\"/>|&\n    <Parameter name=\"File Base\" type=\"string\" value=\"$2\"/>|" \
+    "$here/steps.xml" > run.xml
+}
+check_failure() { # FILE REASON: the run failed as it should, naming FILE and REASON
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
+  grep -q "kiln: error: $1.*$2" run.log || { cat run.log; fail "no error naming $1 and '$2'"; }
+  grep -Eq 'HDF5-DIAG|Segmentation|signal|MPI_ABORT|internal error' run.log &&
+    { cat run.log; fail "HDF5's stack, a crash or an abort in the log"; }
+  ls core* 2>/dev/null && fail "a core dump"
+  true
+}
+restart_from() { # CHECKPOINT STEP: it is readable, and a restart from it completes
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart "$1" > restart.log 2>&1 ||
+    { cat restart.log; fail "the restart from $1 failed"; }
+  grep -q "restart from $1: t = $2 s after step $2" restart.log || { cat restart.log; fail "restart log"; }
+}
+
+case $case in
+checkpoint)
+  # A checkpoint takes 49 kB: room for two (a hard link for the latest takes none).
+  mount_small 124k
+  deck big/steps small/steps
+  "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
+  check_failure "small/steps-000003.h5: cannot write the checkpoint" "No space left on device"
+  grep -q "the last good checkpoint is small/steps-000002.h5" run.log || fail "no last good checkpoint"
+  [ ! -e small/steps-000003.h5 ] && [ ! -e small/steps-000003.h5.tmp ] || fail "a partial checkpoint left"
+  [ small/steps.h5 -ef small/steps-000002.h5 ] || fail "the latest link does not name step 2"
+  restart_from small/steps.h5 2
+  ;;
+results)
+  # The results take 230 kB; the mesh and the first steps fit.
+  mount_small 256k
+  deck small/steps big/steps
+  "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
+  check_failure "small/steps.running.h5" "No space left on device"
+  restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+ulimit)
+  deck big/steps big/steps
+  # The limit on Kiln's processes only (mpiexec's own files are not limited): 250 KiB, more
+  # than a checkpoint, less than the results.
+  "$mpiexec" -np "$np" bash -c "ulimit -f 250 && exec $kiln run.xml" > run.log 2>&1; rc=$?
+  check_failure "big/steps.running.h5" "File too large"
+  restart_from big/steps.h5 "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+*) fail "unknown case" ;;
+esac
+echo "disk_full.sh $case: exit 2 on every rank, one message, the previous checkpoint kept and continued"
