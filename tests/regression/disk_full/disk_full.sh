@@ -10,6 +10,7 @@
 #   checkpoint   the checkpoints' folder is a tmpfs with room for two of them
 #   results      the results' folder is a tmpfs smaller than the results
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
+#   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -78,6 +79,20 @@ ulimit)
   "$mpiexec" -np "$np" bash -c "ulimit -f 250 && exec $kiln run.xml" > run.log 2>&1; rc=$?
   check_failure "big/steps.running.h5" "File too large"
   restart_from big/ckpt.h5 "$(ls big/ckpt-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+restart_end)
+  # A restart from the checkpoint at the end time (6 s): nothing to compute, nothing written.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  before=$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > run.log 2>&1; rc=$?
+  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
+  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
+  grep -q "kiln: error: results/steps.checkpoint.h5: the checkpoint's time, t = 6 s, is at or past the end of this run, the last output time 6 s: there is nothing left to compute, and nothing was written" run.log ||
+    { cat run.log; fail "no message saying the checkpoint is at the end"; }
+  [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
+    fail "the results folder changed"
+  echo "disk_full.sh $case: refused with exit 1, nothing written"
+  exit 0
   ;;
 *) fail "unknown case" ;;
 esac
