@@ -79,6 +79,19 @@ int NodalConstraintValues::at(const int node)
   return constraints_.add_value(name_, [g, x](const double t) { return g.value(t, x); });
 }
 
+std::vector<Point> condition_node_points(const BoundaryConditionInput &input)
+{
+  std::vector<Point> points;
+  for (const int id : input.side_sets)
+  {
+    const SideSet &set = *input.mesh.find_side_set(id);
+    for (int s = 0; s < set.n_sides(); ++s)
+      for (const int i : hex_face_nodes[set.faces[s]])
+        points.push_back(input.mesh.coordinates[input.mesh.connectivity[set.cells[s]][i]]);
+  }
+  return points;
+}
+
 TimeFunction required_time_function(const BoundaryConditionInput &input, const std::string &name,
                                     const std::string &example)
 {
@@ -93,15 +106,7 @@ TimeFunction required_time_function(const BoundaryConditionInput &input, const s
   {
     // The formula at every node of the condition's faces at t = 0: finite, or an InputError
     // at --check rather than a NaN in the first step.
-    std::vector<Point> points;
-    for (const int id : input.side_sets)
-    {
-      const SideSet &set = *input.mesh.find_side_set(id);
-      for (int s = 0; s < set.n_sides(); ++s)
-        for (const int i : hex_face_nodes[set.faces[s]])
-          points.push_back(input.mesh.coordinates[input.mesh.connectivity[set.cells[s]][i]]);
-    }
-    f.check_finite(points, 0.0, input.path + "/" + name);
+    f.check_finite(condition_node_points(input), 0.0, input.path + "/" + name);
   }
   return f;
 }

@@ -100,6 +100,10 @@ private:
   int shared_ = -1; ///< the one value of a function constant in space
 };
 
+/// The positions of the nodes of a condition's faces (a node on several faces once per face):
+/// where a formula of its values is checked at set-up.
+std::vector<Point> condition_node_points(const BoundaryConditionInput &input);
+
 /// The time function `name` of a condition, which its Type requires: InputError naming
 /// it, with an example sublist whose value is `example`, if the input lacks it.
 TimeFunction required_time_function(const BoundaryConditionInput &input, const std::string &name,

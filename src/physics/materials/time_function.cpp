@@ -60,11 +60,7 @@ TimeFunction::TimeFunction(const Teuchos::ParameterList &p, const std::string &w
                           << "; for a sudden change use Type \"Table\" with two close times");
   }
   else if (type == "Expression")
-  {
-    kind_ = Kind::expression;
-    expression_ = std::make_shared<const Expression>(p.get<std::string>("Expression"),
-                                                     where + "/\"Expression\"");
-  }
+    *this = expression(p.get<std::string>("Expression"), where + "/\"Expression\"");
   else
   {
     kind_ = Kind::table;
@@ -74,6 +70,14 @@ TimeFunction::TimeFunction(const Teuchos::ParameterList &p, const std::string &w
     table_ = PiecewiseLinear({times.begin(), times.end()}, {values.begin(), values.end()},
                              {where, "Times", "Values", ""});
   }
+}
+
+TimeFunction TimeFunction::expression(const std::string &text, const std::string &where)
+{
+  TimeFunction f;
+  f.kind_ = Kind::expression;
+  f.expression_ = std::make_shared<const Expression>(text, where);
+  return f;
 }
 
 TimeFunction TimeFunction::constant(const double value)

@@ -36,6 +36,9 @@ public:
   TimeFunction() = default;
   /// f = value [unit of the quantity].
   static TimeFunction constant(double value);
+  /// f = the formula `text` in x, y, z, t; `where` names it in messages (InputError if it
+  /// cannot be read).
+  static TimeFunction expression(const std::string &text, const std::string &where);
 
   /// f(t) [unit of the quantity: K for a temperature]; t in [s]. Not for a function that
   /// varies in space.

@@ -36,23 +36,11 @@ TractionCondition::TractionCondition(const BoundaryConditionInput &input) : Boun
     const auto &texts = input.params.get<Teuchos::Array<std::string>>("Traction Expressions");
     KILN_CHECK_INPUT(texts.size() == 3, where,
                      "must have 3 formulas (tx, ty, tz) [Pa], has " << texts.size());
-    std::vector<Point> points;
-    for (const int id : side_sets())
-    {
-      const SideSet &set = *input.mesh.find_side_set(id);
-      for (int s = 0; s < set.n_sides(); ++s)
-        for (const int i : hex_face_nodes[set.faces[s]])
-          points.push_back(input.mesh.coordinates[input.mesh.connectivity[set.cells[s]][i]]);
-    }
+    const std::vector<Point> points = condition_node_points(input);
     for (std::size_t d = 0; d < 3; ++d)
     {
-      Teuchos::ParameterList f;
-      f.set("Type", "Expression");
-      f.set("Expression", texts[d]);
-      Teuchos::ParameterList valid = TimeFunction::valid_parameters();
-      f.validateParametersAndSetDefaults(valid);
       const std::string component = where + "[" + "xyz"[d] + "]";
-      formulas_.emplace_back(f, component);
+      formulas_.push_back(TimeFunction::expression(texts[d], component));
       formulas_.back().check_finite(points, 0.0, component);
     }
     return;
