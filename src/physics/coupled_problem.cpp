@@ -37,9 +37,13 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
   const Teuchos::ParameterList &contact = mechanics.sublist("Contact");
   if (dofs.layout().contact && mechanics_ && !mesh.gap_pairs.empty())
-    interface_ = std::make_unique<ContactInterface>(mesh, dofs, constraints_, modulus,
-                                                    contact.get<double>("Complementarity Scale"),
-                                                    where + "/Mechanics/Contact");
+  {
+    interface_ = std::make_unique<ContactInterface>(mesh, dofs, modulus,
+                                                    contact.get<double>("Complementarity Scale"));
+    interfaces_.push_back(interface_kinds().create(contact.get<std::string>("Kind"), *interface_,
+                                                   dofs, constraints_, contact,
+                                                   where + "/Mechanics/Contact"));
+  }
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
   if (mechanics_)
@@ -56,9 +60,12 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
   assembler_ = std::make_unique<Assembler>(mesh, dofs, couplings);
-  if (interface_)
-    contact_ =
-        std::make_unique<NormalContact>(*interface_, dofs, *assembler_, constraints_, contact);
+  if (!interfaces_.empty())
+  {
+    x_decided_ = Teuchos::rcp(new Vector(dofs.owned_dof_map()));
+    F_decided_ = Teuchos::rcp(new Vector(dofs.owned_dof_map()));
+    r_overlap_ = assembler_->make_overlap_vector();
+  }
   fields_ = std::make_unique<NodalFields>(dofs, *assembler_, constraints_,
                                           material.reference_temperature());
   hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus);
@@ -89,7 +96,13 @@ CoupledProblem::~CoupledProblem() = default;
 void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
                                         const std::string &where)
 {
-  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, interface_ != nullptr);
+  std::vector<FreeMotions::HeldDirection> held;
+  for (const auto &strategy : interfaces_)
+  {
+    const auto h = strategy->held_directions(true);
+    held.insert(held.end(), h.begin(), h.end());
+  }
+  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held);
   const FreeMotions &free = *free_;
   if (free.empty())
     return;
@@ -111,26 +124,23 @@ void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
 
 void CoupledProblem::set_log(Teuchos::RCP<Teuchos::FancyOStream> out)
 {
-  if (contact_)
-    contact_->monitor().set_log(std::move(out));
+  for (const auto &strategy : interfaces_)
+    strategy->set_log(out);
 }
 
 void CoupledProblem::set_time_derivative(const double time, const double a, const Vector &b)
 {
   fields_->set_time_derivative(time, a, b);
   constraints_.set_time(time);
-  if (contact_)
-  {
-    contact_->invalidate();
-    contact_->monitor().start_step();
-  }
+  decided_ = false;
+  for (const auto &strategy : interfaces_)
+    strategy->start_step();
 }
 
 void CoupledProblem::freeze_temperature(const Vector *x)
 {
   constraints_.hold_temperature(x);
-  if (contact_)
-    contact_->invalidate();
+  decided_ = false;
 }
 
 void CoupledProblem::initial_condition(const double time, Vector &x) const
@@ -159,19 +169,40 @@ void CoupledProblem::prepare(const Vector &x)
   fields_->update(*x_overlap_);
 }
 
+bool CoupledProblem::decided_at(const Vector &x) const
+{
+  int same = decided_ ? 1 : 0;
+  if (same == 1)
+  {
+    const auto a = x.getData(), b = x_decided_->getData();
+    same = std::equal(a.begin(), a.end(), b.begin()) ? 1 : 0;
+  }
+  int everywhere = 0;
+  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_MIN, same,
+                     Teuchos::outArg(everywhere));
+  return everywhere == 1;
+}
+
 void CoupledProblem::decide(const Vector &x)
 {
   prepare(x);
-  if (contact_->decided_at(x))
+  if (decided_at(x))
     return;
-  // The pressure of every pair comes from the assembled rows without contact.
+  // The multipliers of every pair come from the assembled rows without interface terms; each
+  // strategy reads them and writes the rows of its pairs.
   assemble(residual_work_.get(), nullptr);
-  contact_->decide(x, *residual_work_, [this](const int node) { return fields_->u(node); });
+  assembler_->gather(*residual_work_, *r_overlap_);
+  const auto u = [this](const int node) { return fields_->u(node); };
+  for (const auto &strategy : interfaces_)
+    strategy->decide(*assembler_, *r_overlap_, *residual_work_, u);
+  Tpetra::deep_copy(*x_decided_, x);
+  Tpetra::deep_copy(*F_decided_, *residual_work_);
+  decided_ = true;
 }
 
 void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
 {
-  if (!contact_)
+  if (interfaces_.empty())
   {
     prepare(x);
     assemble(f, J);
@@ -179,11 +210,11 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
   }
   decide(x);
   if (f != nullptr)
-    Tpetra::deep_copy(*f, contact_->residual());
+    Tpetra::deep_copy(*f, *F_decided_);
   if (J != nullptr)
   {
     assemble(nullptr, J);
-    contact_->jacobian_evaluated();
+    jacobian_seen();
   }
 }
 
@@ -192,10 +223,11 @@ std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
   if (!terms_->constant_jacobian())
     return {};
   std::vector<double> d{fields_->a(), constraints_.holds_temperature() ? 1.0 : 0.0};
-  if (contact_)
-  {
+  if (!interfaces_.empty())
     decide(x);
-    const std::vector<double> c = contact_->jacobian_dependencies();
+  for (const auto &strategy : interfaces_)
+  {
+    const std::vector<double> c = strategy->jacobian_dependencies();
     d.insert(d.end(), c.begin(), c.end());
   }
   return d;
@@ -203,7 +235,8 @@ std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
 
 bool CoupledProblem::jacobian_with(const std::vector<double> &smooth, const Vector &x, Matrix &J)
 {
-  if (!terms_->constant_jacobian() || smooth.size() != 1 || (contact_ && !contact_->decided_at(x)))
+  if (!terms_->constant_jacobian() || smooth.size() != 1 ||
+      (!interfaces_.empty() && !decided_at(x)))
     return false;
   const double a = fields_->a();
   fields_->set_a(smooth[0]);
@@ -216,10 +249,21 @@ bool CoupledProblem::jacobian_with(const std::vector<double> &smooth, const Vect
 
 void CoupledProblem::jacobian_kept(const Vector &x)
 {
-  if (!contact_)
+  if (interfaces_.empty())
     return;
   decide(x);
-  contact_->jacobian_evaluated();
+  jacobian_seen();
+}
+
+void CoupledProblem::jacobian_seen()
+{
+  // Each strategy sees the Jacobian; one that changes its law (a fallback after an active-set
+  // cycle) has the next state decided anew.
+  bool changed = false;
+  for (const auto &strategy : interfaces_)
+    changed = strategy->jacobian_evaluated() || changed;
+  if (changed)
+    decided_ = false;
 }
 
 void CoupledProblem::assemble(Vector *f, Matrix *J)
@@ -233,45 +277,66 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
                    [this](const std::vector<int> &nodes, LocalSystem &local)
                    { add_local(nodes, local); });
   constraints_.add_rows(*x_overlap_, *assembler_, jacobian);
-  if (contact_ && jacobian)
-    contact_->add_pair_terms(*assembler_);
+  if (jacobian)
+    for (const auto &strategy : interfaces_)
+      strategy->add_terms(*assembler_);
   assembler_->finish(f, J);
+}
+
+std::optional<std::pair<std::vector<int>, LocalSystem>>
+CoupledProblem::with_twins(const std::vector<int> &nodes, const LocalSystem &local) const
+{
+  std::vector<int> extended_nodes = assembler_->with_twins(nodes);
+  if (extended_nodes.size() == nodes.size())
+    return std::nullopt;
+  const int F = local.n_fields();
+  LocalSystem extended(static_cast<int>(extended_nodes.size()), F, local.has_jacobian());
+  const int m = local.size();
+  for (int i = 0; i < m; ++i)
+  {
+    extended.residual(i % F, i / F) = local.residual_values()[i];
+    if (local.has_jacobian())
+      for (int j = 0; j < m; ++j)
+        extended.jacobian(i % F, i / F, j % F, j / F) =
+            local.jacobian_values()[static_cast<std::size_t>(i) * m + j];
+  }
+  return std::make_pair(std::move(extended_nodes), std::move(extended));
 }
 
 void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local)
 {
-  if (contact_)
-    if (auto extended = contact_->with_twins(nodes, local))
+  if (!interfaces_.empty())
+    if (auto extended = with_twins(nodes, local))
     {
       add_local(extended->first, extended->second);
       return;
     }
   constraints_.distribute(nodes, local);
-  if (contact_ && local.has_jacobian())
-    contact_->combine_rows(nodes, local);
+  if (local.has_jacobian())
+    for (const auto &strategy : interfaces_)
+      strategy->combine_rows(nodes, local);
   assembler_->add(assembler_->node_lids(nodes), local);
 }
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
-  if (!contact_)
+  if (interfaces_.empty())
     return;
   decide(x);
-  contact_->monitor().step_accepted(time, contact_->active());
+  for (const auto &strategy : interfaces_)
+    strategy->step_accepted(time);
   check_open_gap(time);
 }
 
 void CoupledProblem::check_open_gap(const double time)
 {
-  std::vector<FreeMotions::HoldingPair> holding;
-  const auto &owned = interface_->owned_pairs();
-  for (std::size_t i = 0; i < owned.size(); ++i)
-    if (contact_->active()[i])
-    {
-      const ContactInterface::Pair &pair = interface_->pairs()[owned[i]];
-      holding.push_back({pair.a, pair.b, pair.normal});
-    }
-  const std::string free = free_->more_free_with(holding);
+  std::vector<FreeMotions::HeldDirection> held;
+  for (const auto &strategy : interfaces_)
+  {
+    const auto h = strategy->held_directions(false);
+    held.insert(held.end(), h.begin(), h.end());
+  }
+  const std::string free = free_->more_free_with(held);
   if (free.empty())
     return;
   std::ostringstream message;
@@ -287,11 +352,16 @@ void CoupledProblem::check_open_gap(const double time)
 int CoupledProblem::resume(const double time, const Vector &x)
 {
   constraints_.set_time(time);
-  if (!contact_)
+  if (interfaces_.empty())
     return 0;
   decide(x);
-  contact_->monitor().resume(contact_->active());
-  return contact_->monitor().count(contact_->active());
+  int active = 0;
+  for (const auto &strategy : interfaces_)
+  {
+    strategy->resume();
+    active += strategy->count_active();
+  }
+  return active;
 }
 
 std::vector<double> CoupledProblem::gap_heat_flux(const Vector &x)
@@ -319,10 +389,11 @@ std::vector<double> CoupledProblem::gap_heat_flux(const Vector &x)
 StateSummary CoupledProblem::summary(const Vector &x)
 {
   StateSummary s;
-  if (contact_)
+  if (!interfaces_.empty())
   {
     decide(x);
-    summarize_contact(*interface_, *contact_, *fields_, *dofs_.owned_dof_map()->getComm(), s);
+    // Today one interface: its figures are the summary's.
+    summarize_contact(*interfaces_.front(), *fields_, *dofs_.owned_dof_map()->getComm(), s);
   }
   else
     prepare(x);
@@ -334,21 +405,25 @@ StateSummary CoupledProblem::summary(const Vector &x)
 
 int CoupledProblem::n_active_pairs(const Vector &x)
 {
-  if (!contact_)
+  if (interfaces_.empty())
     return 0;
   decide(x);
-  return contact_->monitor().count(contact_->active());
+  int active = 0;
+  for (const auto &strategy : interfaces_)
+    active += strategy->count_active();
+  return active;
 }
 
 CoupledProblem::ContactOutput CoupledProblem::contact_output(const Vector &x)
 {
-  if (!contact_)
+  if (interfaces_.empty())
   {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return {std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(mesh_.n_nodes(), nan)};
   }
   decide(x);
-  return contact_->node_values();
+  // Today one interface: its fields are the gap's.
+  return interfaces_.front()->node_values();
 }
 
 std::vector<double> CoupledProblem::node_temperatures(const Vector &x)

@@ -3,7 +3,7 @@
 /// residual and one Jacobian, as a TransientProblem for the Newton solver and the time
 /// stepper.
 #include "contact/contact_interface.hpp"
-#include "contact/normal_contact.hpp"
+#include "contact/interface_strategy.hpp"
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -27,12 +27,13 @@ namespace kiln
 {
 /// F(x) = 0 for the unknowns of the DofManager's layout: temperature, displacement or both
 /// (4 per node: T, then u_x, u_y, u_z). It owns the pieces and runs, for each evaluation,
-///   gather x -> fields at x~ (NodalFields, NodalConstraints) -> contact decides (once per x)
-///   -> terms per cell, boundary face, gap face (ResidualTerms) -> distribute (frames,
-///   constraints: NodalConstraints; contact rows: NormalContact) -> add (Assembler);
-///   constraint rows; contact pair terms.
+///   gather x -> fields at x~ (NodalFields, NodalConstraints) -> the interfaces decide (once
+///   per x) -> terms per cell, boundary face, gap face (ResidualTerms) -> distribute (frames,
+///   constraints: NodalConstraints; interface rows: each InterfaceStrategy) -> add
+///   (Assembler); constraint rows; the interfaces' terms.
 /// The terms and their Jacobians are the kernels' (ThermalPhysics, MechanicalPhysics); the
-/// constraints are NodalConstraints'; contact is NormalContact's (doc/architecture.md).
+/// constraints are NodalConstraints'; the gap's conditions are its interface strategies'
+/// (the kinds of interface_kinds(); doc/architecture.md).
 class CoupledProblem final : public TransientProblem
 {
 public:
@@ -65,7 +66,7 @@ public:
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
   /// whether the temperature is held (freeze_temperature()) and the contact decision's
-  /// (NormalContact::jacobian_dependencies()); otherwise none.
+  /// (InterfaceStrategy::jacobian_dependencies()); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
   /// a, the first of the dependencies.
   std::size_t smooth_dependencies() const override { return 1; }
@@ -98,7 +99,7 @@ public:
   std::vector<ElasticityKernel::CellAverages> cell_averages(const Vector &x);
   /// Contact per mesh node, on every rank: the normal traction across the gap (-p, negative
   /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap.
-  using ContactOutput = NormalContact::NodeValues;
+  using ContactOutput = InterfaceStrategy::NodeValues;
   ContactOutput contact_output(const Vector &x);
   /// The heat flux across the gap at x per mesh node, on every rank: at the nodes of side a,
   /// the heat their gap-face terms carry to side b divided by the pair's area, the same at
@@ -109,7 +110,7 @@ public:
   /// Pairs in contact at x (global), and of all pairs.
   int n_active_pairs(const Vector &x);
   int n_pairs() const { return interface_ ? interface_->n_pairs() : 0; }
-  bool has_contact() const { return contact_ != nullptr; }
+  bool has_contact() const { return !interfaces_.empty(); }
   /// The scale c of the displacement unknowns (the solver sees x / c; doc/mechanics.md).
   double displacement_scale() const { return hints_->displacement_scale(); }
   const NodalConstraints &constraints() const { return constraints_; }
@@ -123,8 +124,17 @@ private:
   void check_open_gap(double time);
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
-  /// With contact: the assembled rows at x and the decision, unless taken at x already.
+  /// With interfaces: the assembled rows at x and their decisions, unless taken at x already.
   void decide(const Vector &x);
+  /// A Jacobian was evaluated from the last decision (InterfaceStrategy::jacobian_evaluated()).
+  void jacobian_seen();
+  /// Whether the interfaces decided at x (and nothing has changed since). Collective.
+  bool decided_at(const Vector &x) const;
+  /// With interfaces, a local system that holds a gap node holds its twin: `nodes` with the
+  /// twins it lacks appended and `local` extended alike (their rows and columns zero), or
+  /// nothing if it lacks none.
+  std::optional<std::pair<std::vector<int>, LocalSystem>>
+  with_twins(const std::vector<int> &nodes, const LocalSystem &local) const;
   /// One assembly of f and/or J at the prepared state (with J and contact: combined rows).
   void assemble(Vector *f, Matrix *J);
   /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it.
@@ -138,7 +148,12 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::unique_ptr<ContactInterface> interface_;
   std::unique_ptr<Assembler> assembler_;
-  std::unique_ptr<NormalContact> contact_;
+  /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
+  std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;
+  bool decided_ = false;
+  Teuchos::RCP<Vector> x_decided_; ///< the x it was taken at
+  Teuchos::RCP<Vector> F_decided_; ///< F(x)
+  Teuchos::RCP<Vector> r_overlap_; ///< the assembled rows without interface terms (overlap)
   std::unique_ptr<NodalFields> fields_;
   std::unique_ptr<SolverHints> hints_;
   std::unique_ptr<ResidualTerms> terms_;

@@ -59,10 +59,10 @@ void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                      Teuchos::outArg(summary.max_displacement));
 }
 
-void summarize_contact(const ContactInterface &interface, const NormalContact &contact,
-                       const NodalFields &fields, const Teuchos::Comm<int> &comm,
-                       StateSummary &summary)
+void summarize_contact(const InterfaceStrategy &contact, const NodalFields &fields,
+                       const Teuchos::Comm<int> &comm, StateSummary &summary)
 {
+  const ContactInterface &interface = contact.interface();
   const auto &owned = interface.owned_pairs();
   double sums[3] = {0.0, 0.0, 0.0}; // in contact, area, force
   double extremes[2] = {-std::numeric_limits<double>::infinity(),

@@ -1,8 +1,7 @@
 #pragma once
 /// A state's figures for a time history: temperature extremes and mean, thermal energy,
 /// largest displacement, contact area and force, gap opening.
-#include "contact/contact_interface.hpp"
-#include "contact/normal_contact.hpp"
+#include "contact/interface_strategy.hpp"
 #include "discretization/dof_manager.hpp"
 #include "physics/nodal_fields.hpp"
 
@@ -32,7 +31,6 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
 void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                             StateSummary &summary);
 /// The contact figures of the decision at `fields`' state. Collective.
-void summarize_contact(const ContactInterface &interface, const NormalContact &contact,
-                       const NodalFields &fields, const Teuchos::Comm<int> &comm,
-                       StateSummary &summary);
+void summarize_contact(const InterfaceStrategy &contact, const NodalFields &fields,
+                       const Teuchos::Comm<int> &comm, StateSummary &summary);
 } // namespace kiln

@@ -114,7 +114,8 @@ RigidMotion unit_motion(RigidMotion motion)
 } // namespace
 
 FreeMotions::FreeMotions(const Mesh &mesh, const DofManager &dofs,
-                         const NodalConstraints &constraints, const bool contact)
+                         const NodalConstraints &constraints,
+                         const std::vector<HeldDirection> &held)
     : mesh_(mesh), dofs_(dofs), constraints_(constraints), conditions_({}), finder_({})
 {
   const MeshBodies bodies = mesh_bodies(mesh);
@@ -122,17 +123,13 @@ FreeMotions::FreeMotions(const Mesh &mesh, const DofManager &dofs,
   BodyGeometry geometry = body_geometry(mesh, dofs, body_, bodies.count);
   summary_ = std::move(geometry.summary);
   conditions_ = FreeMotionFinder(std::move(geometry.bodies));
-  const int rank = dofs.owned_dof_map()->getComm()->getRank();
   for (const int n : dofs.owned_nodes())
     if (body_[n] >= 0)
       for (const NodalConstraints::Direction &d : constraints.directions(n))
         conditions_.add_direction(body_[n], mesh.coordinates[n], d.n);
   finder_ = conditions_;
-  if (contact)
-    for (const GapPair &pair : mesh.gap_pairs)
-      if (dofs.node_owner()[pair.node_a] == rank)
-        finder_.add_gap(body_[pair.node_a], body_[pair.node_b], mesh.coordinates[pair.node_a],
-                        pair.normal);
+  for (const HeldDirection &h : held)
+    finder_.add_gap(body_[h.a], body_[h.b], mesh.coordinates[h.a], h.direction);
   for (const RigidMotion &m : finder_.find(*dofs.owned_dof_map()->getComm()))
     motions_.push_back(unit_motion(m));
 }
@@ -145,11 +142,11 @@ std::vector<std::string> FreeMotions::names() const
   return names;
 }
 
-std::string FreeMotions::more_free_with(const std::vector<HoldingPair> &holding) const
+std::string FreeMotions::more_free_with(const std::vector<HeldDirection> &held) const
 {
   FreeMotionFinder finder = conditions_;
-  for (const HoldingPair &pair : holding)
-    finder.add_gap(body_[pair.a], body_[pair.b], mesh_.coordinates[pair.a], pair.normal);
+  for (const HeldDirection &h : held)
+    finder.add_gap(body_[h.a], body_[h.b], mesh_.coordinates[h.a], h.direction);
   const std::vector<RigidMotion> motions = finder.find(*dofs_.owned_dof_map()->getComm());
   return motions.size() > motions_.size() ? description(motions) : "";
 }

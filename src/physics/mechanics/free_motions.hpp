@@ -1,6 +1,7 @@
 #pragma once
 /// The rigid motions the mechanical conditions leave free, body by body (doc/mechanics.md,
 /// "Free motions").
+#include "contact/interface_strategy.hpp"
 #include "discretization/dof_manager.hpp"
 #include "discretization/nodal_constraints.hpp"
 #include "mesh/mesh.hpp"
@@ -16,16 +17,19 @@ namespace kiln
 /// The free rigid motions of the displacement: the bodies are the mesh's connected parts after
 /// the gap split (mesh_bodies()); each constrained displacement direction of a node
 /// (NodalConstraints::directions(): rollers, prescribed normal motions, components) holds its
-/// body along it, and with contact each gap pair holds the two bodies together along its
-/// normal (nothing tangential: contact is frictionless). Tractions, pressures and body forces
-/// hold nothing. Each rank adds the constraints of its owned nodes (and the pairs whose node a
-/// it owns); the sums are reduced over the ranks (FreeMotionFinder). Collective.
+/// body along it, and each gap pair holds the two bodies together along the directions its
+/// interface kind holds (InterfaceStrategy::held_directions(): the normal for contact, which
+/// is frictionless; every direction for a bonded gap). Tractions, pressures and body forces
+/// hold nothing. Each rank adds the constraints of its owned nodes (and its share of the
+/// pairs); the sums are reduced over the ranks (FreeMotionFinder). Collective.
 class FreeMotions
 {
 public:
-  /// `constraints` is closed. `contact`: the gap pairs hold their normal.
+  using HeldDirection = InterfaceStrategy::HeldDirection;
+  /// `constraints` is closed. `held`: this rank's share of the directions the gap pairs can
+  /// hold (none without an interface).
   FreeMotions(const Mesh &mesh, const DofManager &dofs, const NodalConstraints &constraints,
-              bool contact);
+              const std::vector<HeldDirection> &held);
 
   bool empty() const { return motions_.empty(); }
   int size() const { return static_cast<int>(motions_.size()); }
@@ -35,18 +39,11 @@ public:
   /// and (1, 1, 1)): translation along z; ...".
   std::string description() const { return description(motions_); }
 
-  /// A gap pair (mesh nodes a and b) that holds the two sides along its normal n.
-  struct HoldingPair
-  {
-    int a = -1;
-    int b = -1;
-    Point normal{};
-  };
-  /// With contact: the free motions, as description() gives them, when only the pairs
-  /// `holding` hold (this rank's share, each pair on one rank: those in contact), or "" if
-  /// they leave no more free than all the pairs do (the set-up's motions). An open gap can
-  /// leave a body that only contact holds free. Collective.
-  std::string more_free_with(const std::vector<HoldingPair> &holding) const;
+  /// With an interface: the free motions, as description() gives them, when only `held`
+  /// holds (this rank's share, each pair on one rank: those in contact), or "" if they leave
+  /// no more free than all the pairs do (the set-up's motions). An open gap can leave a body
+  /// that only contact holds free. Collective.
+  std::string more_free_with(const std::vector<HeldDirection> &held) const;
   /// The motions in the unknowns of the DofManager's layout, one column each: T = 0 and
   /// û = Q^T r(x) at each owned node (the nodal frames of `constraints`), with r of unit
   /// translation or unit rotation: so that v.F is the net force [N] along a free translation

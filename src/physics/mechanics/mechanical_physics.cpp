@@ -2,7 +2,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
-#include "contact/normal_contact.hpp"
+#include "contact/interface_parameters.hpp"
 #include "physics/mechanics/mechanical_conditions.hpp"
 
 #include <Teuchos_Array.hpp>
@@ -50,8 +50,9 @@ Teuchos::ParameterList MechanicalPhysics::valid_parameters()
         "r); a load with a net force or moment along a free motion is then an error of the "
         "run [-]",
         choice_validator({"Error", "Minimum Norm"}));
-  p.set("Contact", NormalContact::valid_parameters(),
-        "frictionless contact across the gap (Kiln/Mesh/\"Gap Side Set\"); doc/contact.md");
+  p.set("Contact", interface_parameters(),
+        "the interface across the gap (Kiln/Mesh/\"Gap Side Set\"): frictionless contact, "
+        "sliding or bonded; doc/contact.md");
   return p;
 }
 
@@ -71,5 +72,6 @@ MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
                    where + "/Contact",
                    "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
                    "it or name the side set to split at");
+  check_interface_parameters(mechanics.sublist("Contact"), where + "/Contact");
 }
 } // namespace kiln

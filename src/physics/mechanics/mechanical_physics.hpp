@@ -16,7 +16,7 @@ namespace kiln
 {
 /// Small-strain thermo-elasticity (doc/mechanics.md): the elasticity kernel of every cell with
 /// the body force rho g + f, and the mechanical boundary conditions
-/// (mechanical_conditions()). The "Contact" sublist is NormalContact's.
+/// (mechanical_conditions()). The "Contact" sublist is the interface's (interface_parameters()).
 class MechanicalPhysics
 {
 public:

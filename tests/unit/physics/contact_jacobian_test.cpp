@@ -107,9 +107,10 @@ Teuchos::ParameterList thermal_block(const Conductance model, const double T_1)
 }
 
 /// The Mechanics block: rollers on 1, 3, 5, the normal displacement u_2 of face 2, a pressure
-/// on 4; contact with the given function and scale.
+/// on 4; contact with the given function and scale (or the interface `kind`, "Sliding" or
+/// "Bonded", when it is not "Contact").
 Teuchos::ParameterList mechanics_block(const std::string &function, const double scale,
-                                       const double u_2)
+                                       const double u_2, const std::string &kind = "Contact")
 {
   Teuchos::ParameterList mechanics;
   Teuchos::ParameterList &bcs = mechanics.sublist("Boundary Conditions");
@@ -126,7 +127,9 @@ Teuchos::ParameterList mechanics_block(const std::string &function, const double
   pressure.set("Pressure", constant_function(1.0e6));
   Teuchos::ParameterList &contact = mechanics.sublist("Contact");
   contact.set("Enabled", true);
-  contact.set("Complementarity Function", function);
+  contact.set("Kind", kind);
+  if (kind == "Contact")
+    contact.set("Complementarity Function", function);
   contact.set("Complementarity Scale", scale);
   return mechanics;
 }
@@ -639,4 +642,79 @@ TEST(ContactJacobian, FrozenTemperatureWithContact)
   d.T_b = 303.0;
   d.opening = -2.0e-6;
   run_case("closed, temperature frozen", d, "Min", 1.0, Conductance::contact_dependent, 16, true);
+}
+
+/// The tied kinds: every pair holds (its rows combined, A c g on each tied axis) in any state;
+/// "Sliding" ties the normal axis, "Bonded" every axis the pair's nodes leave free (at gap
+/// nodes on faces 3 and 5, the roller takes one). The states are the tilted one of
+/// Fischer-Burmeister, half of whose pairs are open under "Contact", and a closed one with
+/// the contact-dependent conductance (its dh/dg and dh/dp terms).
+void run_tied_case(const std::string &name, const std::string &kind, const Design &design,
+                   const Conductance model)
+{
+  Fixture s;
+  const Teuchos::ParameterList thermal = thermal_block(model, design.T_a);
+  auto problem = s.problem(thermal, mechanics_block("", 0.5, 0.5 * design.opening, kind));
+  ASSERT_EQ(problem->n_pairs(), 16);
+  s.set_time(*problem, design);
+  Vector x = s.state(*problem, design);
+  const JacobianCheck check = check_jacobian(s, *problem, x, 16, name);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_LE(check.max_relative[k], tolerance) << name << ", block " << block_names[k];
+  EXPECT_GT(check.max_J[2], 0.0);
+  EXPECT_GT(check.max_J[3], 0.0);
+  // Every pair holds, open or closed.
+  const kiln::CoupledProblem::ContactOutput out = problem->contact_output(x);
+  for (const kiln::GapPair &pair : s.mesh.gap_pairs)
+    EXPECT_EQ(out.active[pair.node_a], 1.0) << name << ": pair of node " << pair.node_a;
+}
+
+TEST(ContactJacobian, SlidingTilted)
+{
+  Design d;
+  d.T_a = 304.0;
+  d.T_b = 306.0;
+  d.opening = 5.0e-7;
+  d.tilt = 5.0e-4;
+  run_tied_case("tilted (Sliding)", "Sliding", d, Conductance::constant);
+}
+
+TEST(ContactJacobian, BondedTilted)
+{
+  Design d;
+  d.T_a = 304.0;
+  d.T_b = 306.0;
+  d.opening = 5.0e-7;
+  d.tilt = 5.0e-4;
+  run_tied_case("tilted (Bonded)", "Bonded", d, Conductance::constant);
+}
+
+TEST(ContactJacobian, BondedClosedContactDependentConductance)
+{
+  Design d;
+  d.T_a = 312.0;
+  d.T_b = 303.0;
+  d.opening = -2.0e-6;
+  run_tied_case("closed, Contact Dependent conductance (Bonded)", "Bonded", d,
+                Conductance::contact_dependent);
+}
+
+TEST(ContactJacobian, BondedTiesMoreThanSliding)
+{
+  // With random tangential displacements, the bonded rows (A c t.(u_b - u_a) on the tangent
+  // axes) differ from the sliding ones (the sides' own rows there); the normal rows agree.
+  Design d;
+  d.opening = 5.0e-7;
+  Fixture s;
+  const Teuchos::ParameterList thermal = thermal_block(Conductance::constant, d.T_a);
+  auto sliding = s.problem(thermal, mechanics_block("", 0.5, 0.5 * d.opening, "Sliding"));
+  auto bonded = s.problem(thermal, mechanics_block("", 0.5, 0.5 * d.opening, "Bonded"));
+  s.set_time(*sliding, d);
+  s.set_time(*bonded, d);
+  const Vector x = s.state(*sliding, d);
+  Vector f_sliding(sliding->solution_map()), f_bonded(bonded->solution_map());
+  sliding->evaluate(x, &f_sliding, nullptr);
+  bonded->evaluate(x, &f_bonded, nullptr);
+  f_bonded.update(-1.0, f_sliding, 1.0);
+  EXPECT_GT(f_bonded.normInf(), 1e-6 * f_sliding.normInf());
 }
