@@ -132,9 +132,9 @@ void Simulation::setup()
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 1 mesh"));
     const MeshFactory factory(params_.sublist("Mesh"), input_path_ + ": Kiln/Mesh", mesh_file_);
     mesh_ = factory.build();
-    if (factory.gap_side_set() != 0)
-      split_gap(mesh_, factory.gap_side_set(),
-                parameter_path(input_path_, "Kiln/Mesh", "Gap Side Set"));
+    if (!factory.gap_side_sets().empty())
+      split_gaps(mesh_, factory.gap_side_sets(),
+                 parameter_path(input_path_, "Kiln/Mesh", factory.gap_parameter()));
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
@@ -542,13 +542,18 @@ void Simulation::print_header() const
   for (const auto &[id, b] : blocks)
     out << "  block " << id << ": " << b.first << " cells, "
         << std::count(b.second.begin(), b.second.end(), 1) << " nodes\n";
-  if (mesh_.gap_side_set != 0)
+  for (std::size_t g = 0; g < mesh_.gap_side_sets.size(); ++g)
   {
     double area = 0.0;
+    std::size_t pairs = 0;
     for (const auto &p : mesh_.gap_pairs)
-      area += p.area;
-    out << "  gap at side set " << mesh_.gap_side_set << ": " << mesh_.gap_pairs.size()
-        << " node pairs, area " << area << " m^2\n";
+      if (p.gap == static_cast<int>(g))
+      {
+        area += p.area;
+        ++pairs;
+      }
+    out << "  gap at side set " << mesh_.gap_side_sets[g] << ": " << pairs << " node pairs, area "
+        << area << " m^2\n";
   }
 
   const int n_ranks = comm_->getSize();
@@ -588,7 +593,7 @@ void Simulation::write_mesh(const std::string &path) const
   {
     try
     {
-      write_exodus_mesh(mesh, path, factory.gap_side_set());
+      write_exodus_mesh(mesh, path, factory.gap_side_sets());
     }
     catch (const InputError &e)
     {

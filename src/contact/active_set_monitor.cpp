@@ -50,15 +50,16 @@ void ActiveSetMonitor::jacobian_evaluated(const std::vector<char> &active)
   {
     const int n_active = count(active);
     if (!out_.is_null())
-      *out_ << "  contact, Newton iteration " << jacobians_ << ": " << closed << " pairs closed, "
-            << opened << " opened; " << n_active << " of " << n_pairs_ << " in contact\n";
+      *out_ << "  contact" << gap_name_ << ", Newton iteration " << jacobians_ << ": " << closed
+            << " pairs closed, " << opened << " opened; " << n_active << " of " << n_pairs_
+            << " in contact\n";
   }
   const int repeated = history_.record(active, *comm_);
   if (repeated > 0 && !fallback_)
   {
     fallback_ = true;
     if (!out_.is_null())
-      *out_ << "  contact: the active set of Newton iteration " << repeated
+      *out_ << "  contact" << gap_name_ << ": the active set of Newton iteration " << repeated
             << " came back at iteration " << jacobians_
             << " (a cycle); this step goes on with the Fischer-Burmeister function\n";
   }
@@ -77,8 +78,8 @@ void ActiveSetMonitor::step_accepted(const double time, const std::vector<char> 
   const int n_active = count(active);
   if (n_active != accepted_active_ && !out_.is_null())
   {
-    *out_ << "contact at t = " << time << " s: " << n_active << " of " << n_pairs_
-          << " gap pairs in contact (was " << accepted_active_ << ")"
+    *out_ << "contact" << gap_name_ << " at t = " << time << " s: " << n_active << " of "
+          << n_pairs_ << " gap pairs in contact (was " << accepted_active_ << ")"
           << (n_active == n_pairs_ && accepted_active_ < n_pairs_ ? ": the gap has closed"
               : n_active == 0 && accepted_active_ > 0             ? ": the gap has opened"
                                                                   : "")

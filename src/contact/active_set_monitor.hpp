@@ -7,6 +7,7 @@
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include <string>
 #include <vector>
 
 namespace kiln
@@ -20,6 +21,8 @@ public:
 
   /// Log lines go to `out` (nothing is logged without one).
   void set_log(Teuchos::RCP<Teuchos::FancyOStream> out) { out_ = std::move(out); }
+  /// Names the gap in the log lines ("contact (gap side set 12)"), where there are several.
+  void set_gap_name(std::string name) { gap_name_ = std::move(name); }
   /// A new step's Newton solve begins: no history, no fallback.
   void start_step();
   /// The active set at a Jacobian evaluation: logs what changed since the last one; a set of
@@ -40,6 +43,7 @@ public:
 private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
+  std::string gap_name_; ///< "" with one gap
   int n_pairs_;
   ActiveSetHistory history_; ///< the sets at this step's Jacobians
   std::vector<char> last_;   ///< the set at the last Jacobian (or accepted step)

@@ -50,6 +50,18 @@ void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::str
                                                 << " has its displacement fully prescribed; "
                                                    "remove the condition there or set "
                                                    "\"Enabled\" = false");
+      // Where gaps cross, each pair of the node claims its own normal: they must be
+      // perpendicular there for each to be an axis of the node's frame.
+      const double along = dot(constraints.frame_axis_so_far(node, slot), pair.normal);
+      const Point &x = mesh_points[node];
+      KILN_CHECK_INPUT(1.0 - along <= 1e-12, where,
+                       "cannot hold: gap node "
+                           << node << " at (" << x[0] << ", " << x[1] << ", " << x[2]
+                           << ") is on gaps whose normals there are not perpendicular (the "
+                              "normal of its pair with node "
+                           << (node == pair.a ? pair.b : pair.a) << " leans by " << std::acos(along)
+                           << " rad from the plane of the others); Kiln holds crossing gaps at "
+                              "right angles: mesh them so, or make them one gap side set");
       (node == pair.a ? axis.slot_a : axis.slot_b) = slot;
     }
     first_axis_.push_back(axes_.size());
@@ -170,25 +182,36 @@ void CondensedPairs::combine_rows(const std::vector<int> &nodes, LocalSystem &lo
   const auto &pairs = interface_.pairs();
   for (int i = 0; i < n_local; ++i)
   {
-    const int k = interface_.pair_of_node(nodes[i]);
-    if (k < 0 || nodes[i] != pairs[k].a)
-      continue;
-    int j = -1;
-    for (std::size_t l = first_axis_[k]; l < first_axis_[k + 1]; ++l)
+    const auto [begin, end] = interface_.pairs_of_node_a(nodes[i]);
+    for (const int *pair = begin; pair != end; ++pair)
     {
-      if (!value_[l].combined)
-        continue;
-      if (j < 0)
-        j = static_cast<int>(std::find(nodes.begin(), nodes.end(), pairs[k].b) - nodes.begin());
-      KILN_ASSERT(j < n_local, "a local system lacks the twin of node " << nodes[i]);
-      const std::size_t ia = local.index(u_slot_ + axes_[l].slot_a, i);
-      const std::size_t ib = local.index(u_slot_ + axes_[l].slot_b, j);
-      const double w = 0.5 * value_[l].dC_dP;
-      for (int c = 0; c < m; ++c)
+      const int k = *pair;
+      int j = -1;
+      for (std::size_t l = first_axis_[k]; l < first_axis_[k + 1]; ++l)
       {
-        const double va = jac[ia * m + c], vb = jac[ib * m + c];
-        jac[ib * m + c] = w * (vb - va);
-        jac[ia * m + c] = va + vb - jac[ib * m + c];
+        if (!value_[l].combined)
+          continue;
+        if (j < 0)
+          j = static_cast<int>(std::find(nodes.begin(), nodes.end(), pairs[k].b) - nodes.begin());
+        const std::size_t ia = local.index(u_slot_ + axes_[l].slot_a, i);
+        if (j == n_local)
+        {
+          // Node a is itself a twin that joined the system (where gaps cross, its own twins
+          // do not): its rows here are zero, and so are its partner's.
+          KILN_ASSERT(std::all_of(jac.begin() + static_cast<long>(ia * m),
+                                  jac.begin() + static_cast<long>((ia + 1) * m),
+                                  [](const double v) { return v == 0.0; }),
+                      "a local system lacks the twin of node " << nodes[i]);
+          continue;
+        }
+        const std::size_t ib = local.index(u_slot_ + axes_[l].slot_b, j);
+        const double w = 0.5 * value_[l].dC_dP;
+        for (int c = 0; c < m; ++c)
+        {
+          const double va = jac[ia * m + c], vb = jac[ib * m + c];
+          jac[ib * m + c] = w * (vb - va);
+          jac[ia * m + c] = va + vb - jac[ib * m + c];
+        }
       }
     }
   }

@@ -3,14 +3,15 @@
 #include "discretization/dof_manager.hpp"
 #include "mesh/mesh.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace kiln
 {
-/// One pair (a, b) per gap node of side a and its twin (Mesh::gap_pairs), with the normal n
-/// from a to b and the area A (∫φ_a over side a's gap faces). The pair belongs to the rank
-/// that owns node b. The interface kinds (InterfaceStrategy) claim their axes in the nodes'
-/// frames and decide the pairs' conditions.
+/// The pairs (a, b) of one gap (Mesh::gap_pairs whose `gap` it is), with the normal n from a
+/// to b and the area A (∫φ_a over side a's gap faces). The pair belongs to the rank that owns
+/// node b. The interface kinds (InterfaceStrategy) claim their axes in the nodes' frames and
+/// decide the pairs' conditions.
 class ContactInterface
 {
 public:
@@ -22,21 +23,28 @@ public:
     Point normal{};     ///< n, from a to b
   };
 
-  /// `modulus` is lambda + 2G [Pa], `scale` the input's "Complementarity Scale".
-  ContactInterface(const Mesh &mesh, const DofManager &dofs, double modulus, double scale);
+  /// The pairs of gap `gap` (an index into Mesh::gap_side_sets). `modulus` is lambda + 2G
+  /// [Pa], `scale` the input's "Complementarity Scale".
+  ContactInterface(const Mesh &mesh, const DofManager &dofs, int gap, double modulus, double scale);
 
   const Mesh &mesh() const { return mesh_; }
   const std::vector<Pair> &pairs() const { return pairs_; }
   int n_pairs() const { return static_cast<int>(pairs_.size()); }
   /// The pairs whose node b this rank owns, increasing.
   const std::vector<int> &owned_pairs() const { return owned_pairs_; }
-  /// The pair of a gap node (either side), or -1.
-  int pair_of_node(const int node) const { return pair_of_node_[node]; }
+  int gap() const { return gap_; }
+  /// The pairs whose node a is `node` (several where gaps cross), as [begin, end).
+  std::pair<const int *, const int *> pairs_of_node_a(const int node) const
+  {
+    return {pairs_of_a_.data() + offsets_[node], pairs_of_a_.data() + offsets_[node + 1]};
+  }
 
 private:
   const Mesh &mesh_;
+  int gap_;
   std::vector<Pair> pairs_;
   std::vector<int> owned_pairs_;
-  std::vector<int> pair_of_node_;
+  std::vector<int> offsets_;    ///< per mesh node, into pairs_of_a_ (CSR)
+  std::vector<int> pairs_of_a_; ///< the pairs of each node a, increasing
 };
 } // namespace kiln

@@ -34,6 +34,10 @@ NormalContact::NormalContact(const ContactInterface &interface, const DofManager
 {
   claim_normals(constraints, where);
   finish_claims();
+  const Mesh &mesh = interface.mesh();
+  if (mesh.gap_side_sets.size() > 1)
+    monitor_.set_gap_name(" (gap side set " + std::to_string(mesh.gap_side_sets[interface.gap()]) +
+                          ")");
 }
 
 ComplementarityFunction::Value NormalContact::law(bool, const double P, const double cg) const

@@ -430,9 +430,10 @@ std::vector<int> Assembler::with_twins(std::vector<int> nodes) const
   const std::size_t n = nodes.size();
   for (std::size_t i = 0; i < n; ++i)
   {
-    const int t = dofs_.twin(nodes[i]);
-    if (t >= 0 && std::find(nodes.begin(), nodes.end(), t) == nodes.end())
-      nodes.push_back(t);
+    const auto [begin, end] = dofs_.twins(nodes[i]);
+    for (const int *t = begin; t != end; ++t)
+      if (std::find(nodes.begin(), nodes.end(), *t) == nodes.end())
+        nodes.push_back(*t);
   }
   return nodes;
 }

@@ -43,13 +43,24 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
         for (const int n : mesh.connectivity[face.cell_b])
           touched[n] = 1;
     }
-  twin_.assign(mesh.n_nodes(), -1);
+  twin_offsets_.assign(mesh.n_nodes() + 1, 0);
   for (const GapPair &p : mesh.gap_pairs)
   {
-    twin_[p.node_a] = p.node_b;
-    twin_[p.node_b] = p.node_a;
+    ++twin_offsets_[p.node_a + 1];
+    ++twin_offsets_[p.node_b + 1];
   }
-  // With contact, a local system that holds a gap node holds its twin too.
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    twin_offsets_[n + 1] += twin_offsets_[n];
+  twin_nodes_.resize(twin_offsets_.back());
+  {
+    std::vector<int> next(twin_offsets_.begin(), twin_offsets_.end() - 1);
+    for (const GapPair &p : mesh.gap_pairs)
+    {
+      twin_nodes_[next[p.node_a]++] = p.node_b;
+      twin_nodes_[next[p.node_b]++] = p.node_a;
+    }
+  }
+  // With contact, a local system that holds a gap node holds its twins too.
   if (layout_.contact)
   {
     const std::vector<char> touched_before = touched;

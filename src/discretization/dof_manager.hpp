@@ -17,6 +17,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -80,8 +81,12 @@ public:
   {
     return static_cast<GO>(n_node_fields_) * node + slot;
   }
-  /// The twin of node n across the gap, or -1 (every gap node has one).
-  int twin(const int node) const { return twin_[node]; }
+  /// The twins of node n: the nodes it is paired with across the gaps (one on a single gap,
+  /// more where gaps cross; none off the gaps), as [begin, end).
+  std::pair<const int *, const int *> twins(const int node) const
+  {
+    return {twin_nodes_.data() + twin_offsets_[node], twin_nodes_.data() + twin_offsets_[node + 1]};
+  }
 
   Teuchos::RCP<const Map> owned_node_map() const { return owned_node_map_; }
   Teuchos::RCP<const Map> overlap_node_map() const { return overlap_node_map_; }
@@ -101,7 +106,8 @@ private:
   std::vector<int> owned_cells_;
   std::vector<int> owned_nodes_;
   std::vector<int> overlap_nodes_;
-  std::vector<int> twin_;
+  std::vector<int> twin_offsets_; ///< per mesh node, into twin_nodes_ (CSR)
+  std::vector<int> twin_nodes_;
   std::vector<int> node_owner_;
   Teuchos::RCP<const Map> owned_node_map_;
   Teuchos::RCP<const Map> overlap_node_map_;

@@ -76,6 +76,12 @@ int NodalConstraints::add_free_axis(const int node, const Point &n)
   return static_cast<int>(frame.basis.size()) - 1;
 }
 
+const Point &NodalConstraints::frame_axis_so_far(const int node, const int slot) const
+{
+  KILN_ASSERT(!closed_ && has_frame(node), "frame_axis_so_far() after close() or without a frame");
+  return frames_[frame_of_node_[node]].basis.at(slot);
+}
+
 void NodalConstraints::close(const double conductivity, const double modulus)
 {
   for (Frame &frame : frames_)

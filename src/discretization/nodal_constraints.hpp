@@ -65,6 +65,9 @@ public:
   /// its constrained directions) right after them. Returns the slot of that unknown among the
   /// node's displacement unknowns, or -1 if n lies in the span of the constrained directions.
   int add_free_axis(int node, const Point &n);
+  /// Before close(): axis `slot` of the node's frame so far (its constrained directions and
+  /// free axes, orthonormal); `slot` was returned by add_free_axis().
+  const Point &frame_axis_so_far(int node, int slot) const;
   /// Completes every frame with the coordinate axes and sets the scales of the constraint
   /// rows, s = c ∫|∇φ_i|^2 dΩ with c the conductivity k [W/(m K)] for a temperature and the
   /// modulus lambda + 2G [Pa] for a displacement.

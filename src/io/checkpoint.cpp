@@ -330,7 +330,8 @@ RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
   f.n_nodes = mesh.n_nodes();
   f.n_cells = mesh.n_cells();
   f.n_pairs = static_cast<int>(mesh.gap_pairs.size());
-  f.gap_side_set = mesh.gap_side_set;
+  // The first gap's side set (0: none); the mesh's counts tell several gaps apart.
+  f.gap_side_set = mesh.gap_side_sets.empty() ? 0 : mesh.gap_side_sets.front();
   std::vector<double> coordinates;
   for (const Point &x : mesh.coordinates)
     coordinates.insert(coordinates.end(), x.begin(), x.end());

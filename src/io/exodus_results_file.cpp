@@ -30,7 +30,7 @@ ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
                    "choose another output path");
   try
   {
-    layout_ = exodus_layout(mesh, mesh.gap_side_set);
+    layout_ = exodus_layout(mesh, mesh.gap_side_sets);
     put_exodus_mesh(exo_, path_, mesh, layout_, "Kiln results", ExodusVariables::max_name_length,
                     &cell_rank);
     check_exodus_write(ex_update(exo_), path_, "flushing the file");

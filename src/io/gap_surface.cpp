@@ -1,5 +1,7 @@
 #include "io/gap_surface.hpp"
 
+#include "mesh/hex_geometry.hpp"
+
 #include <cmath>
 #include <map>
 
@@ -9,12 +11,13 @@ namespace internal
 {
 GapSurface::GapSurface(const Mesh &mesh)
 {
-  std::map<int, std::int64_t> point_of_twin; // a node of side a may have several twins
+  // A node may be in several pairs (where gaps cross): a point per pair.
+  std::map<std::pair<int, int>, std::int64_t> point_of_pair;
   Point normal{0.0, 0.0, 0.0}, centroid{0.0, 0.0, 0.0};
   double total_area = 0.0;
   for (const GapPair &pair : mesh.gap_pairs)
   {
-    point_of_twin[pair.node_b] = static_cast<std::int64_t>(points.size());
+    point_of_pair[{pair.node_a, pair.node_b}] = static_cast<std::int64_t>(points.size());
     points.push_back(mesh.coordinates[pair.node_a]);
     node_a.push_back(pair.node_a);
     node_b.push_back(pair.node_b);
@@ -30,7 +33,8 @@ GapSurface::GapSurface(const Mesh &mesh)
   {
     std::array<std::int64_t, 4> quad{};
     for (int i = 0; i < 4; ++i)
-      quad[i] = point_of_twin.at(face.node_b[i]);
+      quad[i] = point_of_pair.at(
+          {mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]], face.node_b[i]});
     quads.push_back(quad);
   }
   if (points.empty())

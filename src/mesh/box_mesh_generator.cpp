@@ -9,6 +9,7 @@
 
 #include <limits>
 #include <string>
+#include <tuple>
 
 namespace kiln
 {
@@ -31,6 +32,7 @@ Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
 }
 
 BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::string &where)
+    : where_(where)
 {
   const auto &size = p.get<Teuchos::Array<double>>("Size");
   const auto &cells = p.get<Teuchos::Array<int>>("Cells");
@@ -77,9 +79,15 @@ long long BoxMeshGenerator::n_nodes() const
   return (cells_[0] + 1LL) * (cells_[1] + 1LL) * (cells_[2] + 1LL);
 }
 
-Mesh BoxMeshGenerator::generate() const
+Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
 {
   const int nx = cells_[0], ny = cells_[1], nz = cells_[2];
+  KILN_CHECK_INPUT(!mid_y || ny % 2 == 0, where_ + "/\"Cells\"",
+                   "has " << ny << " cells along y: side set 11 (the plane y = 0) needs an even "
+                          << "number; use " << ny + 1);
+  KILN_CHECK_INPUT(!mid_z || nz % 2 == 0, where_ + "/\"Cells\"",
+                   "has " << nz << " cells along z: side set 12 (the plane z = 0) needs an even "
+                          << "number; use " << nz + 1);
   const auto node = [&](const int i, const int j, const int k)
   { return i + (nx + 1) * (j + (ny + 1) * k); };
   const auto A = rotation_matrix(phi_, theta_);
@@ -144,6 +152,31 @@ Mesh BoxMeshGenerator::generate() const
         }
   for (const auto &[cell, face] : gap_sides_b)
     add_side(gap, cell, face);
+  // The mid-planes y = 0 and z = 0 on request: the lower side's faces, then the upper's.
+  for (const auto &[wanted, id, axis, name] :
+       {std::tuple{mid_y, 11, 1, "mid_y"}, std::tuple{mid_z, 12, 2, "mid_z"}})
+  {
+    if (!wanted)
+      continue;
+    SideSet set;
+    set.id = id;
+    set.name = name;
+    const int n = cells_[axis];
+    // Local faces: y+ 2, y- 0, z+ 5, z- 4.
+    const int upper_face = axis == 1 ? 2 : 5, lower_face = axis == 1 ? 0 : 4;
+    for (int side = 0; side < 2; ++side)
+      for (int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto &nodes = mesh.connectivity[c];
+        const int index =
+            axis == 1 ? nodes[0] / (nx + 1) % (ny + 1) : nodes[0] / ((nx + 1) * (ny + 1));
+        if (side == 0 && index == n / 2 - 1)
+          add_side(set, c, upper_face);
+        if (side == 1 && index == n / 2)
+          add_side(set, c, lower_face);
+      }
+    mesh.side_sets.push_back(std::move(set));
+  }
   return mesh;
 }
 } // namespace kiln

@@ -4,8 +4,9 @@
 /// Side sets as in the contact-box spec: 1 x = -Lx/2, 2 x = +Lx/2, 3 y = -Ly/2,
 /// 4 y = +Ly/2, 5 z = -Lz/2, 6 z = +Lz/2, 10 the plane x = 0 listed from both
 /// sides (block 1 first); named x_min, x_max, y_min, y_max, z_min, z_max (in the box's own
-/// frame) and gap. Cells are numbered block 1 first, each block in
-/// x-fastest order; nodes in x-fastest order.
+/// frame) and gap. On request the mid-planes y = 0 (side set 11, mid_y) and z = 0 (12,
+/// mid_z), each listed from its lower side first, for gaps that cross. Cells are numbered
+/// block 1 first, each block in x-fastest order; nodes in x-fastest order.
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -18,7 +19,9 @@ public:
   static Teuchos::ParameterList valid_parameters();
   /// `params` must be validated; `where` names it in messages.
   BoxMeshGenerator(const Teuchos::ParameterList &params, const std::string &where);
-  Mesh generate() const;
+  /// With `mid_y`, `mid_z`: side sets 11 and 12 as well (InputError naming `where` if the
+  /// count of cells along that axis is odd).
+  Mesh generate(bool mid_y = false, bool mid_z = false) const;
   /// The counts generate() makes, without making them (the gap split adds the nodes of the
   /// plane x = 0 once more).
   long long n_cells() const;
@@ -30,5 +33,6 @@ private:
   double phi_;
   double theta_;
   std::array<double, 3> translation_;
+  std::string where_;
 };
 } // namespace kiln

@@ -22,15 +22,16 @@ Mesh read_exodus_mesh(const std::string &path, double scale);
 
 /// Writes `mesh` (nodes, blocks in increasing id order, side sets, and one node set per
 /// side set with the nodes of its faces) as an Exodus II file, overwriting `path`, with
-/// the names of exodus_layout(mesh, gap_side_set), a QA record (kiln, version, date)
+/// the names of exodus_layout(mesh, gap_side_sets), a QA record (kiln, version, date)
 /// and the info record exodus_metres_record. Cells of a block are written in
 /// increasing cell order; reading the file back gives the same mesh when its
 /// cells are already grouped by block in increasing id order.
-/// `gap_side_set`: the side set named "gap" (0: none); the mesh before the split does not
-/// know it yet (mesh.gap_side_set is 0), so the caller passes it.
+/// `gap_side_sets`: the gaps' side sets (the first named "gap"); the mesh before the split
+/// does not know them yet (mesh.gap_side_sets is empty), so the caller passes them.
 /// Throws InputError naming the path when the file cannot be created.
-void write_exodus_mesh(const Mesh &mesh, const std::string &path, int gap_side_set);
-/// The same with gap_side_set = mesh.gap_side_set.
+void write_exodus_mesh(const Mesh &mesh, const std::string &path,
+                       const std::vector<int> &gap_side_sets);
+/// The same with mesh.gap_side_sets.
 void write_exodus_mesh(const Mesh &mesh, const std::string &path);
 
 /// The node and element counts of the Exodus file at `path`, from its netCDF header alone
@@ -68,8 +69,9 @@ struct ExodusLayout
   std::vector<std::string> side_set_names;      ///< per mesh.side_sets entry
   std::vector<std::vector<int>> side_set_nodes; ///< per side set, its face nodes, increasing
 };
-/// `gap_side_set`: the id of the side set named "gap" (0: none).
-ExodusLayout exodus_layout(const Mesh &mesh, int gap_side_set);
+/// `gap_side_sets`: the ids of the gaps' side sets: the first is named "gap", the others
+/// "gap_<id>".
+ExodusLayout exodus_layout(const Mesh &mesh, const std::vector<int> &gap_side_sets);
 
 namespace internal
 {

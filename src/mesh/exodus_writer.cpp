@@ -126,8 +126,16 @@ void put_records(const int exo, const std::string &path)
 } // namespace
 } // namespace internal
 
-ExodusLayout exodus_layout(const Mesh &mesh, const int gap_side_set)
+ExodusLayout exodus_layout(const Mesh &mesh, const std::vector<int> &gap_side_sets)
 {
+  const auto gap_name = [&](const int id) -> std::string
+  {
+    if (!gap_side_sets.empty() && id == gap_side_sets.front())
+      return "gap";
+    return std::find(gap_side_sets.begin(), gap_side_sets.end(), id) != gap_side_sets.end()
+               ? "gap_" + std::to_string(id)
+               : "";
+  };
   ExodusLayout layout;
   std::map<int, std::vector<int>> cells_of_block;
   for (int c = 0; c < mesh.n_cells(); ++c)
@@ -140,14 +148,16 @@ ExodusLayout exodus_layout(const Mesh &mesh, const int gap_side_set)
   }
 
   std::set<std::string> taken;
-  if (mesh.find_side_set(gap_side_set) != nullptr)
-    taken.insert("gap");
+  for (const int id : gap_side_sets)
+    if (mesh.find_side_set(id) != nullptr)
+      taken.insert(gap_name(id));
   for (const SideSet &set : mesh.side_sets)
   {
-    std::string name = set.id == gap_side_set ? "gap"
-                       : set.name.empty()     ? "sideset_" + std::to_string(set.id)
-                                              : set.name;
-    if (set.id != gap_side_set && !taken.insert(name).second)
+    const bool gap = !gap_name(set.id).empty();
+    std::string name = gap                ? gap_name(set.id)
+                       : set.name.empty() ? "sideset_" + std::to_string(set.id)
+                                          : set.name;
+    if (!gap && !taken.insert(name).second)
     {
       name += "_" + std::to_string(set.id);
       taken.insert(name);
@@ -226,7 +236,8 @@ void put_exodus_mesh(const int exo, const std::string &path, const Mesh &mesh,
 }
 } // namespace internal
 
-void write_exodus_mesh(const Mesh &mesh, const std::string &path, const int gap_side_set)
+void write_exodus_mesh(const Mesh &mesh, const std::string &path,
+                       const std::vector<int> &gap_side_sets)
 {
   int comp_ws = sizeof(double), io_ws = sizeof(double);
   const int id = ex_create(path.c_str(), EX_CLOBBER, &comp_ws, &io_ws);
@@ -235,13 +246,13 @@ void write_exodus_mesh(const Mesh &mesh, const std::string &path, const int gap_
                                                   << "\": check that its folder exists and is "
                                                      "writable");
   internal::ExodusFile file(id);
-  internal::put_exodus_mesh(id, path, mesh, exodus_layout(mesh, gap_side_set), "Kiln mesh",
+  internal::put_exodus_mesh(id, path, mesh, exodus_layout(mesh, gap_side_sets), "Kiln mesh",
                             MAX_NAME_LENGTH, nullptr);
   internal::check_exodus_write(file.close(), path, "closing the file");
 }
 
 void write_exodus_mesh(const Mesh &mesh, const std::string &path)
 {
-  write_exodus_mesh(mesh, path, mesh.gap_side_set);
+  write_exodus_mesh(mesh, path, mesh.gap_side_sets);
 }
 } // namespace kiln

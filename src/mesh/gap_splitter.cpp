@@ -115,97 +115,123 @@ void check_not_unmerged(const Mesh &mesh, const SideSet &side_set, const std::st
 }
 } // namespace internal
 
-void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
+void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::string &where)
 {
-  const SideSet *side_set = mesh.find_side_set(side_set_id);
-  if (side_set == nullptr)
-  {
-    std::string present;
-    for (const auto &s : mesh.side_sets)
-      present += (present.empty() ? "" : ", ") + std::to_string(s.id);
-    KILN_CHECK_INPUT(false, where,
-                     "side set " << side_set_id << " is not in the mesh (side sets present: "
-                                 << (present.empty() ? "none" : present)
-                                 << "); set it to the id of the side set that cuts the mesh, "
-                                    "or to 0 for no gap");
-  }
-
   const auto faces = internal::face_cells(mesh);
-  std::set<FaceKey> cut;
-  for (int s = 0; s < side_set->n_sides(); ++s)
+  std::map<FaceKey, int> cut; // face -> its gap (index into side_set_ids)
+  for (std::size_t g = 0; g < side_set_ids.size(); ++g)
   {
-    const auto key = mesh.face_key(side_set->cells[s], side_set->faces[s]);
-    if (faces.at(key).size() == 2)
-      cut.insert(key);
+    const int side_set_id = side_set_ids[g];
+    KILN_CHECK_INPUT(std::find(side_set_ids.begin(), side_set_ids.begin() + static_cast<long>(g),
+                               side_set_id) == side_set_ids.begin() + static_cast<long>(g),
+                     where, "lists side set " << side_set_id << " twice; list each gap once");
+    const SideSet *side_set = mesh.find_side_set(side_set_id);
+    if (side_set == nullptr)
+    {
+      std::string present;
+      for (const auto &s : mesh.side_sets)
+        present += (present.empty() ? "" : ", ") + std::to_string(s.id);
+      KILN_CHECK_INPUT(false, where,
+                       "side set " << side_set_id << " is not in the mesh (side sets present: "
+                                   << (present.empty() ? "none" : present)
+                                   << "); set it to the id of the side set that cuts the mesh, "
+                                      "or to 0 for no gap");
+    }
+    int interior = 0;
+    for (int s = 0; s < side_set->n_sides(); ++s)
+    {
+      const auto key = mesh.face_key(side_set->cells[s], side_set->faces[s]);
+      if (faces.at(key).size() != 2)
+        continue;
+      ++interior;
+      const auto [it, added] = cut.emplace(key, static_cast<int>(g));
+      KILN_CHECK_INPUT(added || it->second == static_cast<int>(g), where,
+                       "side sets " << side_set_ids[it->second] << " and " << side_set_id
+                                    << " share a face (of cells " << faces.at(key)[0].first + 1
+                                    << " and " << faces.at(key)[1].first + 1
+                                    << "); a face belongs to one gap: remove it from one of them");
+    }
+    if (interior == 0)
+      internal::check_not_unmerged(mesh, *side_set, where);
+    KILN_CHECK_INPUT(interior > 0, where,
+                     "side set " << side_set_id
+                                 << " has no interior face, so it cannot split the mesh into a "
+                                    "gap; name a side set between two parts of the mesh");
   }
-  if (cut.empty())
-    internal::check_not_unmerged(mesh, *side_set, where);
-  KILN_CHECK_INPUT(!cut.empty(), where,
-                   "side set " << side_set_id
-                               << " has no interior face, so it cannot split the mesh into a "
-                                  "gap; name a side set between two parts of the mesh");
 
-  const std::vector<int> part = internal::cell_parts(mesh, faces, cut);
-  for (const auto &key : cut)
+  std::set<FaceKey> cut_faces;
+  for (const auto &entry : cut)
+    cut_faces.insert(entry.first);
+  const std::vector<int> part = internal::cell_parts(mesh, faces, cut_faces);
+  for (const auto &[key, g] : cut)
   {
     const auto &cells = faces.at(key);
     KILN_CHECK_INPUT(part[cells[0].first] != part[cells[1].first], where,
-                     "side set " << side_set_id << " does not cut the mesh: cells "
+                     "side set " << side_set_ids[g] << " does not cut the mesh: cells "
                                  << cells[0].first + 1 << " and " << cells[1].first + 1
-                                 << " on its two sides stay connected around its edge; the "
+                                 << " on its two sides stay connected around its edge; a "
                                     "gap side set must separate the mesh into parts");
   }
 
   // The parts around each node of the cut faces.
   std::map<int, std::set<int>> node_parts;
-  for (const auto &key : cut)
-    for (const int n : key)
+  for (const auto &entry : cut)
+    for (const int n : entry.first)
       node_parts[n];
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (const int n : mesh.connectivity[c])
       if (auto it = node_parts.find(n); it != node_parts.end())
         it->second.insert(part[c]);
 
-  // Twins: node_a stays with the lowest part; every other part gets its own twin.
+  // Copies: the node stays with its lowest part; every other part gets a copy of its own.
   const int n_original = mesh.n_nodes();
   mesh.parent_node.resize(n_original);
   std::iota(mesh.parent_node.begin(), mesh.parent_node.end(), 0);
-  std::map<std::pair<int, int>, int> twin; // (node, part) -> twin node
-  std::map<int, int> pair_of_twin;
+  std::map<std::pair<int, int>, int> copy; // (original node, part) -> its node in that part
   for (const auto &[n, parts] : node_parts)
+  {
+    copy[{n, *parts.begin()}] = n;
     for (auto p = std::next(parts.begin()); p != parts.end(); ++p)
     {
-      const int t = mesh.n_nodes();
+      copy[{n, *p}] = mesh.n_nodes();
       mesh.coordinates.push_back(mesh.coordinates[n]);
       mesh.parent_node.push_back(n);
-      twin[{n, *p}] = t;
-      pair_of_twin[t] = static_cast<int>(mesh.gap_pairs.size());
-      mesh.gap_pairs.push_back(GapPair{n, t, 0.0, {0.0, 0.0, 0.0}});
     }
+  }
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (int &n : mesh.connectivity[c])
-      if (auto it = twin.find({n, part[c]}); it != twin.end())
+      if (auto it = copy.find({n, part[c]}); it != copy.end())
         n = it->second;
 
-  // Area and normal of each pair, from its cut faces seen from side a.
-  std::vector<Point> area_vector(mesh.gap_pairs.size(), Point{0.0, 0.0, 0.0});
-  for (const auto &key : cut)
+  // A pair per two copies that a cut face separates: its area and normal from those faces,
+  // seen from side a.
+  std::map<std::pair<int, int>, int> pair_index; // (node_a, node_b) -> pair
+  std::vector<Point> area_vector;
+  for (const auto &[key, g] : cut)
   {
     auto side_a = faces.at(key)[0], side_b = faces.at(key)[1];
     if (part[side_a.first] > part[side_b.first])
       std::swap(side_a, side_b);
     const auto areas = quad_nodal_areas(face_nodes(mesh, side_a.first, side_a.second));
-    GapFace gap_face{side_a.first, side_a.second, side_b.first, side_b.second, {-1, -1, -1, -1}};
+    GapFace gap_face{side_a.first, side_a.second, side_b.first, side_b.second, {-1, -1, -1, -1}, g};
     for (int i = 0; i < 4; ++i)
     {
-      const int n = mesh.connectivity[side_a.first][hex_face_nodes[side_a.second][i]];
-      const auto t = twin.find({n, part[side_b.first]});
-      KILN_CHECK_INPUT(t != twin.end(), where,
-                       "more than two parts of the mesh meet at node "
-                           << mesh.parent_node[n] + 1 << " of side set " << side_set_id
-                           << "; Kiln splits a gap between two parts at each node");
-      const int k = pair_of_twin.at(t->second);
-      gap_face.node_b[i] = t->second;
+      const int a = mesh.connectivity[side_a.first][hex_face_nodes[side_a.second][i]];
+      const int b = copy.at({mesh.parent_node[a], part[side_b.first]});
+      const auto [it, added] =
+          pair_index.emplace(std::make_pair(a, b), static_cast<int>(mesh.gap_pairs.size()));
+      if (added)
+      {
+        mesh.gap_pairs.push_back(GapPair{a, b, 0.0, {0.0, 0.0, 0.0}, g});
+        area_vector.push_back(Point{0.0, 0.0, 0.0});
+      }
+      const int k = it->second;
+      KILN_CHECK_INPUT(mesh.gap_pairs[k].gap == g, where,
+                       "side sets " << side_set_ids[mesh.gap_pairs[k].gap] << " and "
+                                    << side_set_ids[g] << " both separate the same two parts "
+                                    << "of the mesh at node " << mesh.parent_node[a] + 1
+                                    << "; make them one gap side set");
+      gap_face.node_b[i] = b;
       mesh.gap_pairs[k].area += areas.area[i];
       for (int d = 0; d < 3; ++d)
         area_vector[k][d] += areas.area_vector[i][d];
@@ -220,6 +246,17 @@ void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
     for (int d = 0; d < 3; ++d)
       mesh.gap_pairs[k].normal[d] = a[d] / length;
   }
-  mesh.gap_side_set = side_set_id;
+  // In increasing (node_a, node_b) order, as pair_index is; the faces refer to nodes only.
+  std::vector<GapPair> sorted;
+  sorted.reserve(mesh.gap_pairs.size());
+  for (const auto &entry : pair_index)
+    sorted.push_back(mesh.gap_pairs[entry.second]);
+  mesh.gap_pairs = std::move(sorted);
+  mesh.gap_side_sets = side_set_ids;
+}
+
+void split_gap(Mesh &mesh, const int side_set_id, const std::string &where)
+{
+  split_gaps(mesh, {side_set_id}, where);
 }
 } // namespace kiln

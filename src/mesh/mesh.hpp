@@ -5,6 +5,7 @@
 /// ranks. Twin nodes made by the gap split are appended after the original
 /// nodes, so an input mesh keeps its numbering.
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -37,16 +38,20 @@ struct SideSet
   int n_sides() const { return static_cast<int>(cells.size()); }
 };
 
-/// A node pair across a split gap: node_a on side a, its twin node_b on side b.
-/// `normal` is the area-weighted unit normal of side a's faces at node_a
-/// (pointing from a to b); `area` is the node's share of the gap area,
-/// integral of its shape function over the adjacent gap faces of side a.
+/// A node pair across a split gap: node_a on side a, its twin node_b on side b (the copies
+/// of one original node in the two parts of the mesh that the pair's faces separate; side a
+/// is the part ranked first). `normal` is the area-weighted unit normal of the side-a faces
+/// between the two parts at node_a (pointing from a to b); `area` is the node's share of
+/// their area, the integral of its shape function over them. `gap`: the index of the gap
+/// side set in Mesh::gap_side_sets. A node where gaps cross has a copy per part and is in a
+/// pair with each copy it faces.
 struct GapPair
 {
   int node_a = -1;
   int node_b = -1;
   double area = 0.0;
   Point normal{0.0, 0.0, 0.0};
+  int gap = 0;
 };
 
 /// A cut face of the gap seen from side a, with the twins of its nodes:
@@ -58,6 +63,7 @@ struct GapFace
   int cell_b = -1;
   int face_b = -1;
   std::array<int, 4> node_b{-1, -1, -1, -1};
+  int gap = 0; ///< the index of its side set in Mesh::gap_side_sets
 };
 
 /// A cell face by its node ids in increasing order: two cells share a face exactly when
@@ -71,13 +77,18 @@ struct Mesh
   std::vector<int> block_id;                    ///< per cell, the element block id
   std::vector<SideSet> side_sets;               ///< in increasing id order
 
-  // Filled by split_gap():
-  int gap_side_set = 0;           ///< id of the side set the mesh was split at (0: none)
-  std::vector<GapPair> gap_pairs; ///< in increasing node_a order
+  // Filled by split_gaps():
+  std::vector<int> gap_side_sets; ///< ids of the side sets the mesh was split at (none: empty)
+  std::vector<GapPair> gap_pairs; ///< in increasing (node_a, node_b) order
   std::vector<GapFace> gap_faces; ///< the cut faces, seen from side a
   std::vector<int> parent_node;   ///< per node: the original node it copies (itself if not a twin)
 
   int n_nodes() const { return static_cast<int>(coordinates.size()); }
+  /// Whether side set `id` is one the mesh was split at.
+  bool is_gap_side_set(const int id) const
+  {
+    return std::find(gap_side_sets.begin(), gap_side_sets.end(), id) != gap_side_sets.end();
+  }
   int n_cells() const { return static_cast<int>(connectivity.size()); }
   /// The side set with this id, or nullptr.
   const SideSet *find_side_set(int id) const;

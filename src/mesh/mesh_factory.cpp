@@ -7,6 +7,7 @@
 #include "mesh/exodus_io.hpp"
 #include "mesh/mesh_checks.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -21,8 +22,13 @@ Teuchos::ParameterList MeshFactory::valid_parameters()
         choice_validator({"Box", "Exodus"}));
   p.set("Gap Side Set", 10,
         "id of the interior side set at which the mesh is split into a gap of zero width; "
-        "0 for no gap [-]",
+        "0 for no gap (for several gaps, \"Gap Side Sets\") [-]",
         nonnegative_int_validator());
+  p.set("Gap Side Sets", Teuchos::Array<int>(),
+        "ids of the interior side sets at which the mesh is split into gaps, which may cross "
+        "(the box's 10, 11 and 12 are its mid-planes normal to x, y and z); a node where k "
+        "parts meet gets a copy per part. Given, it replaces \"Gap Side Set\" (give one of "
+        "the two) [-]");
   p.set("Partition", "METIS",
         "how the cells are shared among the MPI ranks: \"METIS\" (k-way, balanced, few cut "
         "faces); \"By Block\": the element blocks in increasing id go to the ranks in order, "
@@ -50,7 +56,24 @@ MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string
   type_ = mesh_file.empty() ? params.get<std::string>("Type") : "Exodus";
   exodus_file_ = mesh_file.empty() ? params.sublist("Exodus").get<std::string>("File") : mesh_file;
   scale_ = params.sublist("Exodus").get<double>("Coordinate Scale");
-  gap_side_set_ = params.get<int>("Gap Side Set");
+  const auto &gap_sets = params.get<Teuchos::Array<int>>("Gap Side Sets");
+  if (!gap_sets.empty())
+  {
+    KILN_CHECK_INPUT(!given_in_input(params, "Gap Side Set"), where_ + "/\"Gap Side Sets\"",
+                     "is given with \"Gap Side Set\"; give one of the two (\"Gap Side Sets\" "
+                     "for several gaps)");
+    for (const int id : gap_sets)
+      KILN_CHECK_INPUT(id > 0, where_ + "/\"Gap Side Sets\"",
+                       "lists " << id << "; side set ids are positive");
+    gap_side_sets_.assign(gap_sets.begin(), gap_sets.end());
+    gap_parameter_ = "Gap Side Sets";
+  }
+  else
+  {
+    if (params.get<int>("Gap Side Set") != 0)
+      gap_side_sets_.push_back(params.get<int>("Gap Side Set"));
+    gap_parameter_ = "Gap Side Set";
+  }
   if (!mesh_file.empty() && params.get<std::string>("Type") == "Box")
   {
     const auto &cells = params.sublist("Box").get<Teuchos::Array<int>>("Cells");
@@ -80,7 +103,11 @@ Mesh MeshFactory::build() const
                                       << std::filesystem::current_path().string() << ")");
   Mesh mesh;
   if (type_ == "Box")
-    mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate();
+  {
+    const auto wants = [&](const int id)
+    { return std::find(gap_side_sets_.begin(), gap_side_sets_.end(), id) != gap_side_sets_.end(); };
+    mesh = BoxMeshGenerator(params_.sublist("Box"), where_ + "/Box").generate(wants(11), wants(12));
+  }
   else
   {
     // Kiln writes metres; a scale meant for a Cubit file in cm would shrink such a file.
@@ -113,8 +140,13 @@ MeshFactory::Counts MeshFactory::counts() const
     const BoxMeshGenerator box(params_.sublist("Box"), where_ + "/Box"); // checks the counts
     const auto &cells = params_.sublist("Box").get<Teuchos::Array<int>>("Cells");
     c.cells = box.n_cells();
-    // The split at the plane x = 0 (the box's interior side set) gives its nodes twins.
-    c.nodes = box.n_nodes() + (gap_side_set_ != 0 ? (cells[1] + 1LL) * (cells[2] + 1LL) : 0LL);
+    // The split at a mid-plane (the box's interior side sets 10, 11, 12) gives its nodes
+    // copies (where planes cross, more: an estimate).
+    c.nodes = box.n_nodes();
+    for (const int id : gap_side_sets_)
+      for (int d = 0; d < 3; ++d)
+        if (id == 10 + d)
+          c.nodes += (cells[(d + 1) % 3] + 1LL) * (cells[(d + 2) % 3] + 1LL);
     c.source = where_ + "/Box/\"Cells\" = {" + std::to_string(cells[0]) + ", " +
                std::to_string(cells[1]) + ", " + std::to_string(cells[2]) + "}";
     return c;

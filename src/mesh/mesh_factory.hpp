@@ -29,8 +29,9 @@ public:
     std::string source; ///< what sets them, for messages: `where/Box/"Cells" = {...}` or the file
   };
   Counts counts() const;
-  /// The side set to split at (0: none).
-  int gap_side_set() const { return gap_side_set_; }
+  /// The side sets to split at (none: empty), and the parameter that gives them.
+  const std::vector<int> &gap_side_sets() const { return gap_side_sets_; }
+  const std::string &gap_parameter() const { return gap_parameter_; }
   /// A one-line description ("box 4 x 4 x 4" or the Exodus file name).
   std::string description() const;
 
@@ -40,6 +41,7 @@ private:
   std::string type_;
   std::string exodus_file_;
   double scale_;
-  int gap_side_set_;
+  std::vector<int> gap_side_sets_;
+  std::string gap_parameter_;
 };
 } // namespace kiln

@@ -35,12 +35,12 @@ std::vector<int> read_boundary_side_sets(const Teuchos::ParameterList &p, const 
                    "e.g. <Parameter name=\"Side Sets\" type=\"Array(int)\" value=\"{1, 2}\"/>");
   std::ostringstream available;
   for (const auto &s : mesh.side_sets)
-    if (s.id != mesh.gap_side_set)
+    if (!mesh.is_gap_side_set(s.id))
       available << (available.tellp() > 0 ? ", " : "") << s.id;
   std::vector<int> result;
   for (const int id : ids)
   {
-    KILN_CHECK_INPUT(id != mesh.gap_side_set || id == 0, path + "/\"Side Sets\"",
+    KILN_CHECK_INPUT(!mesh.is_gap_side_set(id), path + "/\"Side Sets\"",
                      "side set " << id << " is the gap; " << gap_note
                                  << ". Boundary side sets of this mesh: " << available.str());
     KILN_CHECK_INPUT(mesh.find_side_set(id) != nullptr, path + "/\"Side Sets\"",

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -36,14 +37,21 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
         condition->add_constraints(mesh, constraints_);
   const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
   const Teuchos::ParameterList &contact = mechanics.sublist("Contact");
-  if (dofs.layout().contact && mechanics_ && !mesh.gap_pairs.empty())
-  {
-    interface_ = std::make_unique<ContactInterface>(mesh, dofs, modulus,
-                                                    contact.get<double>("Complementarity Scale"));
-    interfaces_.push_back(interface_kinds().create(contact.get<std::string>("Kind"), *interface_,
-                                                   dofs, constraints_, contact,
-                                                   where + "/Mechanics/Contact"));
-  }
+  // One interface per gap, each of the input's Kind.
+  if (dofs.layout().contact && mechanics_)
+    for (std::size_t g = 0; g < mesh.gap_side_sets.size(); ++g)
+    {
+      pairings_.push_back(std::make_unique<ContactInterface>(
+          mesh, dofs, static_cast<int>(g), modulus, contact.get<double>("Complementarity Scale")));
+      if (pairings_.back()->n_pairs() == 0)
+      {
+        pairings_.pop_back();
+        continue;
+      }
+      interfaces_.push_back(interface_kinds().create(contact.get<std::string>("Kind"),
+                                                     *pairings_.back(), dofs, constraints_, contact,
+                                                     where + "/Mechanics/Contact"));
+    }
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
   if (mechanics_)
@@ -55,7 +63,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   if (gap != nullptr)
     couplings.gap_face_nodes = [&mesh, gap](const int k)
     { return gap->nodes(mesh, mesh.gap_faces[k]); };
-  couplings.twins = interface_ != nullptr;
+  couplings.twins = !interfaces_.empty();
   // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
@@ -115,9 +123,9 @@ void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
           << " (Type \"Normal Displacement\" or \"Displacement\" on a face of the body), or "
              "set Kiln/Mechanics/\"Free Motions\" = \"Minimum Norm\" for the displacement "
              "with no component in them (doc/mechanics.md, \"Free motions\")"
-          << (interface_ ? "; contact across the gap holds the two sides together along "
-                           "its normal only"
-                         : ""));
+          << (interfaces_.empty() ? ""
+                                  : "; contact across the gap holds the two sides together along "
+                                    "its normal only"));
   free_motions_ = free.basis();
   free_motion_names_ = free.names();
 }
@@ -305,12 +313,19 @@ CoupledProblem::with_twins(const std::vector<int> &nodes, const LocalSystem &loc
 
 void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local)
 {
+  // The twins of the system's own nodes join it (once: not the twins' twins, as the
+  // Assembler's coupling blocks).
   if (!interfaces_.empty())
     if (auto extended = with_twins(nodes, local))
     {
-      add_local(extended->first, extended->second);
+      distribute_and_add(extended->first, extended->second);
       return;
     }
+  distribute_and_add(nodes, local);
+}
+
+void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSystem &local)
+{
   constraints_.distribute(nodes, local);
   if (local.has_jacobian())
     for (const auto &strategy : interfaces_)
@@ -392,8 +407,10 @@ StateSummary CoupledProblem::summary(const Vector &x)
   if (!interfaces_.empty())
   {
     decide(x);
-    // Today one interface: its figures are the summary's.
-    summarize_contact(*interfaces_.front(), *fields_, *dofs_.owned_dof_map()->getComm(), s);
+    std::vector<const InterfaceStrategy *> strategies;
+    for (const auto &strategy : interfaces_)
+      strategies.push_back(strategy.get());
+    summarize_contact(strategies, *fields_, *dofs_.owned_dof_map()->getComm(), s);
   }
   else
     prepare(x);
@@ -401,6 +418,14 @@ StateSummary CoupledProblem::summary(const Vector &x)
     summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction().heat_capacity(), s);
   summarize_displacement(dofs_, *fields_, s);
   return s;
+}
+
+int CoupledProblem::n_pairs() const
+{
+  int n = 0;
+  for (const auto &pairing : pairings_)
+    n += pairing->n_pairs();
+  return n;
 }
 
 int CoupledProblem::n_active_pairs(const Vector &x)
@@ -422,8 +447,19 @@ CoupledProblem::ContactOutput CoupledProblem::contact_output(const Vector &x)
     return {std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(mesh_.n_nodes(), nan)};
   }
   decide(x);
-  // Today one interface: its fields are the gap's.
-  return interfaces_.front()->node_values();
+  // A node on several gaps shows its pair of the first (the gaps in the input's order).
+  ContactOutput out = interfaces_.front()->node_values();
+  for (std::size_t i = 1; i < interfaces_.size(); ++i)
+  {
+    const ContactOutput more = interfaces_[i]->node_values();
+    for (std::size_t n = 0; n < out.traction.size(); ++n)
+      if (std::isnan(out.traction[n]))
+      {
+        out.traction[n] = more.traction[n];
+        out.active[n] = more.active[n];
+      }
+  }
+  return out;
 }
 
 std::vector<double> CoupledProblem::node_temperatures(const Vector &x)

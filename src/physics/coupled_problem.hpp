@@ -109,7 +109,7 @@ public:
   StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.
   int n_active_pairs(const Vector &x);
-  int n_pairs() const { return interface_ ? interface_->n_pairs() : 0; }
+  int n_pairs() const;
   bool has_contact() const { return !interfaces_.empty(); }
   /// The scale c of the displacement unknowns (the solver sees x / c; doc/mechanics.md).
   double displacement_scale() const { return hints_->displacement_scale(); }
@@ -137,8 +137,10 @@ private:
   with_twins(const std::vector<int> &nodes, const LocalSystem &local) const;
   /// One assembly of f and/or J at the prepared state (with J and contact: combined rows).
   void assemble(Vector *f, Matrix *J);
-  /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it.
+  /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it, with
+  /// the twins of its gap nodes.
   void add_local(const std::vector<int> &nodes, LocalSystem &local);
+  void distribute_and_add(const std::vector<int> &nodes, LocalSystem &local);
 
   const Mesh &mesh_;
   const DofManager &dofs_;
@@ -146,7 +148,7 @@ private:
   NodalConstraints constraints_;
   std::optional<ThermalPhysics> thermal_;
   std::optional<MechanicalPhysics> mechanics_;
-  std::unique_ptr<ContactInterface> interface_;
+  std::vector<std::unique_ptr<ContactInterface>> pairings_; ///< per gap with pairs
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;

@@ -59,36 +59,42 @@ void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                      Teuchos::outArg(summary.max_displacement));
 }
 
-void summarize_contact(const InterfaceStrategy &contact, const NodalFields &fields,
-                       const Teuchos::Comm<int> &comm, StateSummary &summary)
+void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
+                       const NodalFields &fields, const Teuchos::Comm<int> &comm,
+                       StateSummary &summary)
 {
-  const ContactInterface &interface = contact.interface();
-  const auto &owned = interface.owned_pairs();
   double sums[3] = {0.0, 0.0, 0.0}; // in contact, area, force
   double extremes[2] = {-std::numeric_limits<double>::infinity(),
                         -std::numeric_limits<double>::infinity()}; // g, -g
-  for (std::size_t i = 0; i < owned.size(); ++i)
+  int n_pairs = 0;
+  for (const InterfaceStrategy *contact : interfaces)
   {
-    const ContactInterface::Pair &pair = interface.pairs()[owned[i]];
-    const double g = gap_opening(pair.normal, fields.u(pair.a), fields.u(pair.b));
-    extremes[0] = std::max(extremes[0], g);
-    extremes[1] = std::max(extremes[1], -g);
-    if (contact.active()[i])
+    const ContactInterface &interface = contact->interface();
+    n_pairs += interface.n_pairs();
+    const auto &owned = interface.owned_pairs();
+    for (std::size_t i = 0; i < owned.size(); ++i)
     {
-      sums[0] += 1.0;
-      sums[1] += pair.area;
-      sums[2] += pair.area * contact.pressure()[i];
+      const ContactInterface::Pair &pair = interface.pairs()[owned[i]];
+      const double g = gap_opening(pair.normal, fields.u(pair.a), fields.u(pair.b));
+      extremes[0] = std::max(extremes[0], g);
+      extremes[1] = std::max(extremes[1], -g);
+      if (contact->active()[i])
+      {
+        sums[0] += 1.0;
+        sums[1] += pair.area;
+        sums[2] += pair.area * contact->pressure()[i];
+      }
     }
   }
   double totals[3] = {0.0, 0.0, 0.0}, maxima[2] = {0.0, 0.0};
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, sums, totals);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, extremes, maxima);
-  summary.n_pairs = interface.n_pairs();
+  summary.n_pairs = n_pairs;
   summary.n_active = static_cast<int>(totals[0]);
   summary.contact_area = totals[1];
   summary.normal_force = totals[2];
-  summary.max_opening = interface.n_pairs() > 0 ? maxima[0] : 0.0;
-  summary.max_penetration = interface.n_pairs() > 0 ? std::max(maxima[1], 0.0) : 0.0;
-  summary.min_opening = interface.n_pairs() > 0 ? -maxima[1] : 0.0;
+  summary.max_opening = n_pairs > 0 ? maxima[0] : 0.0;
+  summary.max_penetration = n_pairs > 0 ? std::max(maxima[1], 0.0) : 0.0;
+  summary.min_opening = n_pairs > 0 ? -maxima[1] : 0.0;
 }
 } // namespace kiln

@@ -31,6 +31,7 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
 void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                             StateSummary &summary);
 /// The contact figures of the decision at `fields`' state. Collective.
-void summarize_contact(const InterfaceStrategy &contact, const NodalFields &fields,
-                       const Teuchos::Comm<int> &comm, StateSummary &summary);
+void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
+                       const NodalFields &fields, const Teuchos::Comm<int> &comm,
+                       StateSummary &summary);
 } // namespace kiln

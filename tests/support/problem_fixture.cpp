@@ -7,6 +7,7 @@
 #include "mesh/metis_partitioner.hpp"
 #include "support/parameter_lists.hpp"
 
+#include <algorithm>
 #include <random>
 
 namespace kiln_test
@@ -31,7 +32,7 @@ kiln::Material TableMaterial::make()
 
 namespace
 {
-kiln::Mesh generate(const BoxShape &box)
+kiln::Mesh generate(const BoxShape &box, const bool mid_y = false, const bool mid_z = false)
 {
   Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
   p.set("Size", values({box.size[0], box.size[1], box.size[2]}));
@@ -39,9 +40,37 @@ kiln::Mesh generate(const BoxShape &box)
   p.set("Phi", box.phi);
   p.set("Theta", box.theta);
   p.set("Translation", values({box.shift[0], box.shift[1], box.shift[2]}));
-  return kiln::BoxMeshGenerator(p, "test/Box").generate();
+  return kiln::BoxMeshGenerator(p, "test/Box").generate(mid_y, mid_z);
 }
 } // namespace
+
+std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &problem)
+{
+  using LO = kiln::LO;
+  kiln::NonlinearProblem::Vector probe(problem.solution_map());
+  const std::vector<kiln::Point> u0 = problem.node_displacements(probe);
+  std::vector<std::array<kiln::Point, 3>> q(u0.size());
+  for (int k = 0; k < 3; ++k)
+  {
+    probe.putScalar(0.0);
+    for (std::size_t i = 0; i < q.size(); ++i)
+      probe.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), 1.0);
+    const std::vector<kiln::Point> u = problem.node_displacements(probe);
+    for (std::size_t i = 0; i < q.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        q[i][k][d] = u[i][d] - u0[i][d];
+  }
+  return q;
+}
+
+kiln::Mesh crossed_box(const BoxShape &box, const std::vector<int> &gap_side_sets)
+{
+  const auto has = [&](const int id)
+  { return std::find(gap_side_sets.begin(), gap_side_sets.end(), id) != gap_side_sets.end(); };
+  kiln::Mesh mesh = generate(box, has(11), has(12));
+  kiln::split_gaps(mesh, gap_side_sets, "test");
+  return mesh;
+}
 
 kiln::Mesh box_mesh(const BoxShape &box, const int gap_side_set)
 {

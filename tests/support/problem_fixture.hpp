@@ -43,6 +43,15 @@ struct BoxShape
 /// The box, split at side set `gap_side_set` (0: not split).
 kiln::Mesh box_mesh(const BoxShape &box, int gap_side_set);
 
+/// The frames of the owned nodes (DofManager::owned_nodes() order) of a Thermo-Elasticity
+/// problem: the physical direction of each displacement unknown, zero where it is
+/// constrained, read back through node_displacements(). Collective.
+std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &problem);
+
+/// The box split at several of its side sets 10, 11, 12 (its mid-planes x, y, z = 0), which
+/// cross.
+kiln::Mesh crossed_box(const BoxShape &box, const std::vector<int> &gap_side_sets);
+
 /// The box with its nodes off the six outer faces moved by up to `distortion` of a cell along
 /// each block axis (random, the same on every rank), so that the outer faces stay plane; with
 /// `plane_gap` the nodes of side set `gap_side_set` move within it only (the gap stays plane);

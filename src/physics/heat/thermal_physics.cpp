@@ -116,7 +116,7 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
                        "or set the model to \"Contact Dependent\"");
     gap_ = std::make_unique<GapConductanceKernel>(h);
   }
-  KILN_CHECK_INPUT(mesh.gap_side_set != 0 || !given_in_input(thermal, "Gap Conductance"),
+  KILN_CHECK_INPUT(!mesh.gap_side_sets.empty() || !given_in_input(thermal, "Gap Conductance"),
                    where + "/\"Gap Conductance\"",
                    "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
                    "it or name the side set to split at");

@@ -108,7 +108,7 @@ void expect_box(const Box &box)
   ASSERT_EQ(mesh.n_nodes(), (nx + 1) * (ny + 1) * (nz + 1));
   ASSERT_EQ(mesh.block_id.size(), static_cast<std::size_t>(nx * ny * nz));
   EXPECT_TRUE(mesh.gap_pairs.empty());
-  EXPECT_EQ(mesh.gap_side_set, 0);
+  EXPECT_TRUE(mesh.gap_side_sets.empty());
 
   // Every node lies in the box (in its own frame) on the grid.
   for (int n = 0; n < mesh.n_nodes(); ++n)

@@ -208,7 +208,7 @@ TEST(ExodusIo, WrittenMeshHasBlockAndSetNamesNodeSetsAndTheMetresRecord)
   Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "aligned-cube.exo", cm);
   mesh.side_sets.front().name = "left";
   const TempFile file("names");
-  kiln::write_exodus_mesh(mesh, file.path(), 10); // side set 10 is the gap
+  kiln::write_exodus_mesh(mesh, file.path(), {10}); // side set 10 is the gap
 
   int comp_ws = sizeof(double), io_ws = 0;
   float version = 0.0F;

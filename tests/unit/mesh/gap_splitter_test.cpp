@@ -64,7 +64,7 @@ void expect_split_contact_box(const Mesh &original, const Mesh &mesh)
   ASSERT_EQ(mesh.n_nodes(), 150);
   ASSERT_EQ(mesh.gap_pairs.size(), 25U);
   ASSERT_EQ(mesh.parent_node.size(), 150U);
-  EXPECT_EQ(mesh.gap_side_set, 10);
+  EXPECT_EQ(mesh.gap_side_sets, std::vector<int>{10});
   EXPECT_EQ(mesh.n_cells(), original.n_cells());
   EXPECT_EQ(mesh.block_id, original.block_id);
 

@@ -42,7 +42,7 @@ public:
   {
     mesh_ =
         kiln::BoxMeshGenerator(kiln::BoxMeshGenerator::valid_parameters(), "test/Box").generate();
-    kiln::write_exodus_mesh(mesh_, path_, 10);
+    kiln::write_exodus_mesh(mesh_, path_, {10});
   }
   ~WrittenBox() { std::remove(path_.c_str()); }
   WrittenBox(const WrittenBox &) = delete;
@@ -110,7 +110,7 @@ TEST(MeshFactory, CountsAreThoseOfTheMeshWithoutBuildingIt)
   const kiln::MeshFactory::Counts counts = factory.counts();
   kiln::Mesh mesh = factory.build();
   EXPECT_EQ(counts.cells, mesh.n_cells());
-  split_gap(mesh, factory.gap_side_set(), where);
+  split_gaps(mesh, factory.gap_side_sets(), where);
   EXPECT_EQ(counts.nodes, mesh.n_nodes());
   EXPECT_EQ(counts.source, where + "/Box/\"Cells\" = {4, 2, 6}");
   // An Exodus file's counts come from its header.

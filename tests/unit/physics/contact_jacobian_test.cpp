@@ -214,21 +214,7 @@ struct Fixture : ProblemFixture
     const auto map = problem.solution_map();
     const auto &owned = dofs.owned_nodes();
     // The frame: the physical direction of each displacement unknown (0 if constrained).
-    std::vector<std::array<Point, 3>> q(owned.size());
-    {
-      Vector probe(map);
-      const std::vector<Point> u0 = problem.node_displacements(probe);
-      for (int k = 0; k < 3; ++k)
-      {
-        probe.putScalar(0.0);
-        for (std::size_t i = 0; i < owned.size(); ++i)
-          probe.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), 1.0);
-        const std::vector<Point> u = problem.node_displacements(probe);
-        for (std::size_t i = 0; i < owned.size(); ++i)
-          for (int d = 0; d < 3; ++d)
-            q[i][k][d] = u[i][d] - u0[i][d];
-      }
-    }
+    const std::vector<std::array<Point, 3>> q = node_frames(problem);
     Vector x(map);
     problem.initial_condition(t_now, x);
     for (std::size_t i = 0; i < owned.size(); ++i)

@@ -1,0 +1,204 @@
+// Tests the Jacobian of CoupledProblem::evaluate where gaps cross, against central differences
+// of the residual: a rotated box of 2 x 2 x 2 cells held by rollers on its six faces and split
+// at its three mid-planes (side sets 10, 11, 12), so eight bodies of one cell each; the node
+// at the centre has eight copies, each in three pairs (one per gap), the mid-edge nodes four
+// copies in two pairs. Thermo-elastic with a constant gap conductance. States: each body
+// moved toward the centre by delta along every box axis and heated (every pair closed,
+// "Contact"), moved away and cooled (every pair open, "Contact"), and with random
+// displacements for the kinds that always hold ("Sliding", "Bonded"). Each block's entries
+// agree with the finite differences to 1e-7 of the largest in its row.
+// KILN_TEST_NP: 1 2 3
+#include "physics/coupled_problem.hpp"
+
+#include "mesh/hex_geometry.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/problem_fixture.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace kiln_test;
+using kiln::GO;
+using kiln::LO;
+using kiln::Point;
+using Vector = kiln::NonlinearProblem::Vector;
+using Matrix = kiln::NonlinearProblem::Matrix;
+
+constexpr double phi = 30.0, theta = -20.0;
+constexpr double tolerance = 1.0e-7;
+
+Teuchos::ParameterList thermal_block()
+{
+  Teuchos::ParameterList thermal;
+  thermal.set("Initial Temperature", 300.0);
+  thermal.set("Gap Conductance", 1.0e4);
+  Teuchos::ParameterList &cooled = thermal.sublist("Boundary Conditions").sublist("cooled");
+  cooled.set("Type", "Convection");
+  cooled.set("Side Sets", ids({1, 2, 3, 4, 5, 6}));
+  cooled.set("Coefficient", 50.0);
+  cooled.set("Ambient Temperature", constant_function(290.0));
+  return thermal;
+}
+
+Teuchos::ParameterList mechanics_block(const std::string &kind)
+{
+  Teuchos::ParameterList mechanics;
+  Teuchos::ParameterList &rollers = mechanics.sublist("Boundary Conditions").sublist("rollers");
+  rollers.set("Type", "Normal Displacement");
+  rollers.set("Side Sets", ids({1, 2, 3, 4, 5, 6}));
+  mechanics.sublist("Contact").set("Kind", kind);
+  return mechanics;
+}
+
+/// J against central differences; returns the largest difference relative to the row's
+/// scale in its block, over all ranks.
+double relative_error(ProblemFixture &s, kiln::CoupledProblem &problem, Vector &x,
+                      const int n_active)
+{
+  const auto map = problem.solution_map();
+  const GO n_global = s.dofs.n_global_dofs();
+  Vector f(map);
+  Matrix J(problem.jacobian_graph());
+  problem.evaluate(x, &f, &J);
+  EXPECT_EQ(problem.n_active_pairs(x), n_active);
+  const Dense rows = dense_rows(J, n_global);
+  int changes = 0;
+  const Dense fd = finite_difference_rows(
+      problem, x, [](const GO j) { return j % 4 == 0 ? 1.0e-3 : 1.0e-9; },
+      [&](const Vector &perturbed) { changes += problem.n_active_pairs(perturbed) != n_active; });
+  EXPECT_EQ(changes, 0) << "perturbations changed the pairs in contact";
+  double worst = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    const GO gi = map->getGlobalElement(static_cast<LO>(i));
+    std::array<double, 4> scale{};
+    for (GO j = 0; j < n_global; ++j)
+    {
+      const int k = thermo_mechanical_block(gi, j);
+      scale[k] = std::max({scale[k], std::abs(rows[i][j]), std::abs(fd[i][j])});
+    }
+    for (GO j = 0; j < n_global; ++j)
+    {
+      const double d = std::abs(rows[i][j] - fd[i][j]);
+      if (d > 0.0)
+        worst = std::max(worst, d / scale[thermo_mechanical_block(gi, j)]);
+    }
+  }
+  double global = 0.0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global));
+  return global;
+}
+
+/// x: T at each node, u of each node's body moved by `delta` toward (< 0: away from) the centre
+/// along each box axis, plus random displacements up to `noise` [m]; put in the nodes' frames.
+Vector state(ProblemFixture &s, kiln::CoupledProblem &problem, const double T, const double delta,
+             const double noise)
+{
+  const auto map = problem.solution_map();
+  const auto &owned = s.dofs.owned_nodes();
+  const std::vector<std::array<Point, 3>> q = node_frames(problem);
+  const auto A = kiln::rotation_matrix(phi, theta);
+  std::mt19937 random(11u);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Point> jitter(s.mesh.n_nodes());
+  for (Point &p : jitter)
+    for (double &v : p)
+      v = noise * unit(random);
+  Vector x(map);
+  problem.initial_condition(0.0, x);
+  for (std::size_t i = 0; i < owned.size(); ++i)
+  {
+    const int n = owned[i];
+    x.replaceLocalValue(static_cast<LO>(4 * i), T);
+    // The body of node n: the side of the centre its cell lies on, along each box axis.
+    int cell = 0;
+    while (std::find(s.mesh.connectivity[cell].begin(), s.mesh.connectivity[cell].end(), n) ==
+           s.mesh.connectivity[cell].end())
+      ++cell;
+    Point centroid{};
+    for (const int m : s.mesh.connectivity[cell])
+      for (int d = 0; d < 3; ++d)
+        centroid[d] += s.mesh.coordinates[m][d] / 8.0;
+    Point u = jitter[n];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      double along = 0.0;
+      for (int d = 0; d < 3; ++d)
+        along += A[d][axis] * centroid[d];
+      for (int d = 0; d < 3; ++d)
+        u[d] -= delta * (along > 0.0 ? 1.0 : -1.0) * A[d][axis];
+    }
+    for (int k = 0; k < 3; ++k)
+      if (std::sqrt(kiln::dot(q[i][k], q[i][k])) > 0.5)
+        x.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), kiln::dot(q[i][k], u));
+  }
+  return x;
+}
+
+struct Crossed : ProblemFixture
+{
+  Crossed()
+      : ProblemFixture(crossed_box({{0.02, 0.02, 0.02}, {2, 2, 2}, phi, theta}, {10, 11, 12}),
+                       kiln::DofLayout{true, true, true})
+  {
+  }
+};
+
+TEST(CrossingGapsJacobian, MeshHasEightBodiesAndThreePairsAtTheCentre)
+{
+  Crossed s;
+  EXPECT_EQ(s.mesh.n_nodes(), 64);         // eight cells with nodes of their own
+  EXPECT_EQ(s.mesh.gap_pairs.size(), 48U); // 16 per gap: four faces of 4 nodes
+  // The centre: eight copies, each in three pairs, one per gap.
+  std::vector<int> pairs_of(s.mesh.n_nodes(), 0);
+  for (const kiln::GapPair &p : s.mesh.gap_pairs)
+  {
+    ++pairs_of[p.node_a];
+    ++pairs_of[p.node_b];
+  }
+  int centre_copies = 0;
+  for (int n = 0; n < s.mesh.n_nodes(); ++n)
+    if (std::sqrt(kiln::dot(s.mesh.coordinates[n], s.mesh.coordinates[n])) < 1e-12)
+    {
+      ++centre_copies;
+      EXPECT_EQ(pairs_of[n], 3) << "centre copy " << n;
+    }
+  EXPECT_EQ(centre_copies, 8);
+}
+
+TEST(CrossingGapsJacobian, ContactAllClosed)
+{
+  Crossed s;
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  Vector x = state(s, *problem, 340.0, 2.0e-7, 1.0e-9);
+  EXPECT_LE(relative_error(s, *problem, x, 48), tolerance);
+}
+
+TEST(CrossingGapsJacobian, ContactAllOpen)
+{
+  Crossed s;
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  Vector x = state(s, *problem, 285.0, -2.0e-7, 1.0e-9);
+  EXPECT_LE(relative_error(s, *problem, x, 0), tolerance);
+}
+
+TEST(CrossingGapsJacobian, SlidingAndBonded)
+{
+  for (const std::string kind : {"Sliding", "Bonded"})
+  {
+    Crossed s;
+    auto problem = s.problem(thermal_block(), mechanics_block(kind));
+    Vector x = state(s, *problem, 310.0, 1.0e-7, 3.0e-8);
+    EXPECT_LE(relative_error(s, *problem, x, 48), tolerance) << kind;
+  }
+}
+} // namespace
