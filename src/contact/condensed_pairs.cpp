@@ -18,6 +18,32 @@ CondensedPairs::CondensedPairs(const ContactInterface &interface, const DofManag
 {
 }
 
+void CondensedPairs::check_alike(const NodalConstraints &constraints,
+                                 const ContactInterface::Pair &pair, const std::string &where)
+{
+  const auto da = constraints.directions(pair.a), db = constraints.directions(pair.b);
+  bool alike = da.size() == db.size();
+  for (std::size_t i = 0; alike && i < da.size(); ++i)
+    alike = std::abs(dot(da[i].axis, db[i].axis)) > 1.0 - 1e-12;
+  if (alike)
+    return;
+  const auto names = [&](const std::vector<NodalConstraints::Direction> &directions)
+  {
+    std::string text;
+    for (const auto &d : directions)
+      text += (text.empty() ? "\"" : ", \"") + constraints.value_name(d.value) + "\"";
+    return text.empty() ? std::string("none") : text;
+  };
+  const Point &x = interface_.mesh().coordinates[pair.a];
+  KILN_CHECK_INPUT(false, where,
+                   "cannot pair gap nodes "
+                       << pair.a << " and " << pair.b << " at (" << x[0] << ", " << x[1] << ", "
+                       << x[2] << "): the displacement conditions hold them in different "
+                       << "directions (conditions " << names(da) << " at one, " << names(db)
+                       << " at the other), so the pair is over-determined. Apply the conditions "
+                          "to the faces of both sides of the gap alike");
+}
+
 void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::string &where)
 {
   const auto &mesh_points = interface_.mesh().coordinates;
@@ -27,44 +53,45 @@ void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::str
   for (std::size_t k = 0; k < pairs.size(); ++k)
   {
     const ContactInterface::Pair &pair = pairs[k];
+    first_axis_.push_back(axes_.size());
+    check_alike(constraints, pair, where);
+    // The component of the normal that the conditions leave free: the conditions' directions
+    // first, contact on the rest (doc/contact.md, "Conditions at gap nodes").
+    Point free = pair.normal;
+    for (const NodalConstraints::Direction &d : constraints.directions(pair.a))
+    {
+      const double along = dot(free, d.axis);
+      for (int i = 0; i < 3; ++i)
+        free[i] -= along * d.axis[i];
+    }
+    const double length = std::sqrt(dot(free, free));
+    if (length <= 1e-6)
+      continue; // held along the normal by its conditions: no contact there
+    for (double &v : free)
+      v /= length;
     Axis axis;
     axis.pair = static_cast<int>(k);
     axis.normal = true;
+    axis.leaning = length < 1.0 - 1e-12;
     for (const int node : {pair.a, pair.b})
     {
-      for (const NodalConstraints::Direction &d : constraints.directions(node))
-      {
-        const double cosine = dot(d.axis, pair.normal);
-        const Point &x = mesh_points[node];
-        KILN_CHECK_INPUT(std::abs(cosine) <= 1e-6, where,
-                         "cannot hold: the condition \""
-                             << constraints.value_name(d.value) << "\" constrains gap node " << node
-                             << " at (" << x[0] << ", " << x[1] << ", " << x[2]
-                             << ") in a direction at cos = " << cosine
-                             << " to the gap normal, which contact needs free. Apply it on faces "
-                                "perpendicular to the gap, or set \"Enabled\" = false");
-      }
       const int slot = constraints.add_free_axis(node, pair.normal);
-      KILN_CHECK_INPUT(slot >= 0, where,
-                       "cannot hold: gap node " << node
-                                                << " has its displacement fully prescribed; "
-                                                   "remove the condition there or set "
-                                                   "\"Enabled\" = false");
       // Where gaps cross, each pair of the node claims its own normal: they must be
       // perpendicular there for each to be an axis of the node's frame.
-      const double along = dot(constraints.frame_axis_so_far(node, slot), pair.normal);
+      const double along = slot < 0 ? 0.0 : dot(constraints.frame_axis_so_far(node, slot), free);
       const Point &x = mesh_points[node];
       KILN_CHECK_INPUT(1.0 - along <= 1e-12, where,
                        "cannot hold: gap node "
                            << node << " at (" << x[0] << ", " << x[1] << ", " << x[2]
                            << ") is on gaps whose normals there are not perpendicular (the "
                               "normal of its pair with node "
-                           << (node == pair.a ? pair.b : pair.a) << " leans by " << std::acos(along)
-                           << " rad from the plane of the others); Kiln holds crossing gaps at "
-                              "right angles: mesh them so, or make them one gap side set");
+                           << (node == pair.a ? pair.b : pair.a) << " leans by "
+                           << std::acos(std::min(1.0, along))
+                           << " rad from the plane of the others' and its conditions'); Kiln "
+                              "holds crossing gaps at right angles: mesh them so, or make them "
+                              "one gap side set");
       (node == pair.a ? axis.slot_a : axis.slot_b) = slot;
     }
-    first_axis_.push_back(axes_.size());
     axes_.push_back(axis);
   }
   first_axis_.push_back(axes_.size());
@@ -72,7 +99,6 @@ void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::str
 
 void CondensedPairs::claim_free_axes(NodalConstraints &constraints, const std::string &where)
 {
-  const auto &points = interface_.mesh().coordinates;
   const auto &pairs = interface_.pairs();
   first_axis_.clear();
   axes_.clear();
@@ -81,21 +107,10 @@ void CondensedPairs::claim_free_axes(NodalConstraints &constraints, const std::s
     const ContactInterface::Pair &pair = pairs[k];
     first_axis_.push_back(axes_.size());
     // The two nodes must be constrained alike, so that their frames have the same axes.
-    const auto da = constraints.directions(pair.a), db = constraints.directions(pair.b);
-    bool alike = da.size() == db.size();
+    check_alike(constraints, pair, where);
     bool perpendicular = true;
-    for (std::size_t i = 0; alike && i < da.size(); ++i)
-    {
-      alike = std::abs(dot(da[i].axis, db[i].axis)) > 1.0 - 1e-12;
-      perpendicular = perpendicular && std::abs(dot(da[i].axis, pair.normal)) <= 1e-6;
-    }
-    const Point &x = points[pair.a];
-    KILN_CHECK_INPUT(alike, where,
-                     "cannot tie gap nodes " << pair.a << " and " << pair.b << " at (" << x[0]
-                                             << ", " << x[1] << ", " << x[2]
-                                             << "): the displacement conditions hold them in "
-                                                "different directions. Apply the conditions "
-                                                "to the faces of both sides of the gap alike");
+    for (const NodalConstraints::Direction &d : constraints.directions(pair.a))
+      perpendicular = perpendicular && std::abs(dot(d.axis, pair.normal)) <= 1e-6;
     // The normal first (n itself where the constraints are perpendicular to it), then the
     // coordinate axes, as NodalConstraints::close() completes a frame.
     std::array<Point, 4> candidates{pair.normal, Point{1, 0, 0}, Point{0, 1, 0}, Point{0, 0, 1}};
@@ -105,7 +120,7 @@ void CondensedPairs::claim_free_axes(NodalConstraints &constraints, const std::s
       const int slot_b = constraints.add_free_axis(pair.b, candidates[c]);
       KILN_ASSERT((slot_a < 0) == (slot_b < 0), "the frames of a tied pair differ");
       if (slot_a >= 0)
-        axes_.push_back({static_cast<int>(k), slot_a, slot_b, c == 0 && perpendicular});
+        axes_.push_back({static_cast<int>(k), slot_a, slot_b, c == 0, c == 0 && !perpendicular});
     }
   }
   first_axis_.push_back(axes_.size());
@@ -121,7 +136,8 @@ void CondensedPairs::finish_claims()
 Point CondensedPairs::direction(const std::size_t axis) const
 {
   const ContactInterface::Pair &pair = interface_.pairs()[axes_[axis].pair];
-  return axes_[axis].normal ? pair.normal : constraints_.axes(pair.a)[axes_[axis].slot_a];
+  const Axis &a = axes_[axis];
+  return a.normal && !a.leaning ? pair.normal : constraints_.axes(pair.a)[a.slot_a];
 }
 
 void CondensedPairs::decide(const Assembler &assembler, const Vector &r_overlap, Vector &R,

@@ -33,19 +33,27 @@ public:
 
 protected:
   /// An axis of a pair: the slot of d.u among the displacement unknowns of nodes a and b;
-  /// `normal`: d is the pair's normal n (else the axis of the nodes' frames).
+  /// `normal`: d is the pair's normal n, or with `leaning` the component of n its conditions
+  /// leave free (the axis of the nodes' frames); else another axis of the frames.
   struct Axis
   {
     int pair = -1;
     int slot_a = 0;
     int slot_b = 0;
     bool normal = false;
+    bool leaning = false;
   };
   CondensedPairs(const ContactInterface &interface, const DofManager &dofs,
                  const NodalConstraints &constraints);
-  /// Claims the gap normal of every pair (its first axis). Throws InputError (naming `where`)
-  /// when a constraint at a gap node is not perpendicular to the normal or fixes the node.
+  /// Claims the gap normal of every pair (its first axis): the component of the normal that
+  /// the nodes' displacement conditions leave free (none: the pair is held by them, and has
+  /// no axis). Throws InputError (naming `where`) when the two nodes are constrained in
+  /// different directions, or the normals of gaps that cross at a node are not perpendicular.
   void claim_normals(NodalConstraints &constraints, const std::string &where);
+  /// Throws InputError (naming `where`) unless the pair's two nodes have the same constrained
+  /// directions.
+  void check_alike(const NodalConstraints &constraints, const ContactInterface::Pair &pair,
+                   const std::string &where);
   /// Claims every axis the pair's nodes leave free: the normal, then the coordinate axes, as
   /// NodalConstraints::close() completes a frame. Throws InputError (naming `where`) when the
   /// two nodes of a pair are not constrained alike.

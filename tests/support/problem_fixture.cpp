@@ -5,7 +5,11 @@
 #include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "support/jacobian_check.hpp"
 #include "support/parameter_lists.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
@@ -61,6 +65,46 @@ std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &proble
         q[i][k][d] = u[i][d] - u0[i][d];
   }
   return q;
+}
+
+double jacobian_error(const ProblemFixture &s, kiln::CoupledProblem &problem,
+                      kiln::NonlinearProblem::Vector &x, const int n_active)
+{
+  using Vector = kiln::NonlinearProblem::Vector;
+  using Matrix = kiln::NonlinearProblem::Matrix;
+  using kiln::LO;
+  const auto map = problem.solution_map();
+  const GO n_global = s.dofs.n_global_dofs();
+  Vector f(map);
+  Matrix J(problem.jacobian_graph());
+  problem.evaluate(x, &f, &J);
+  EXPECT_EQ(problem.n_active_pairs(x), n_active);
+  const Dense rows = dense_rows(J, n_global);
+  int changes = 0;
+  const Dense fd = finite_difference_rows(
+      problem, x, [](const GO j) { return j % 4 == 0 ? 1.0e-3 : 1.0e-9; },
+      [&](const Vector &perturbed) { changes += problem.n_active_pairs(perturbed) != n_active; });
+  EXPECT_EQ(changes, 0) << "perturbations changed the pairs in contact";
+  double worst = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    const GO gi = map->getGlobalElement(static_cast<LO>(i));
+    std::array<double, 4> scale{};
+    for (GO j = 0; j < n_global; ++j)
+    {
+      const int k = thermo_mechanical_block(gi, j);
+      scale[k] = std::max({scale[k], std::abs(rows[i][j]), std::abs(fd[i][j])});
+    }
+    for (GO j = 0; j < n_global; ++j)
+    {
+      const double d = std::abs(rows[i][j] - fd[i][j]);
+      if (d > 0.0)
+        worst = std::max(worst, d / scale[thermo_mechanical_block(gi, j)]);
+    }
+  }
+  double global = 0.0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global));
+  return global;
 }
 
 kiln::Mesh crossed_box(const BoxShape &box, const std::vector<int> &gap_side_sets)

@@ -48,6 +48,13 @@ kiln::Mesh box_mesh(const BoxShape &box, int gap_side_set);
 /// constrained, read back through node_displacements(). Collective.
 std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &problem);
 
+/// The largest difference between J at x of a Thermo-Elasticity problem and its central
+/// differences (steps 1e-3 K, 1e-9 m), relative to the largest entry of its row in its block
+/// (T-T, T-u, u-T, u-u), over all ranks; expects `n_active` pairs in contact at x and at
+/// every perturbed state (gtest expectations). Collective.
+double jacobian_error(const struct ProblemFixture &s, kiln::CoupledProblem &problem,
+                      kiln::NonlinearProblem::Vector &x, int n_active);
+
 /// The box split at several of its side sets 10, 11, 12 (its mid-planes x, y, z = 0), which
 /// cross.
 kiln::Mesh crossed_box(const BoxShape &box, const std::vector<int> &gap_side_sets);

@@ -59,45 +59,6 @@ Teuchos::ParameterList mechanics_block(const std::string &kind)
   return mechanics;
 }
 
-/// J against central differences; returns the largest difference relative to the row's
-/// scale in its block, over all ranks.
-double relative_error(ProblemFixture &s, kiln::CoupledProblem &problem, Vector &x,
-                      const int n_active)
-{
-  const auto map = problem.solution_map();
-  const GO n_global = s.dofs.n_global_dofs();
-  Vector f(map);
-  Matrix J(problem.jacobian_graph());
-  problem.evaluate(x, &f, &J);
-  EXPECT_EQ(problem.n_active_pairs(x), n_active);
-  const Dense rows = dense_rows(J, n_global);
-  int changes = 0;
-  const Dense fd = finite_difference_rows(
-      problem, x, [](const GO j) { return j % 4 == 0 ? 1.0e-3 : 1.0e-9; },
-      [&](const Vector &perturbed) { changes += problem.n_active_pairs(perturbed) != n_active; });
-  EXPECT_EQ(changes, 0) << "perturbations changed the pairs in contact";
-  double worst = 0.0;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-  {
-    const GO gi = map->getGlobalElement(static_cast<LO>(i));
-    std::array<double, 4> scale{};
-    for (GO j = 0; j < n_global; ++j)
-    {
-      const int k = thermo_mechanical_block(gi, j);
-      scale[k] = std::max({scale[k], std::abs(rows[i][j]), std::abs(fd[i][j])});
-    }
-    for (GO j = 0; j < n_global; ++j)
-    {
-      const double d = std::abs(rows[i][j] - fd[i][j]);
-      if (d > 0.0)
-        worst = std::max(worst, d / scale[thermo_mechanical_block(gi, j)]);
-    }
-  }
-  double global = 0.0;
-  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global));
-  return global;
-}
-
 /// x: T at each node, u of each node's body moved by `delta` toward (< 0: away from) the centre
 /// along each box axis, plus random displacements up to `noise` [m]; put in the nodes' frames.
 Vector state(ProblemFixture &s, kiln::CoupledProblem &problem, const double T, const double delta,
@@ -180,7 +141,7 @@ TEST(CrossingGapsJacobian, ContactAllClosed)
   Crossed s;
   auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
   Vector x = state(s, *problem, 340.0, 2.0e-7, 1.0e-9);
-  EXPECT_LE(relative_error(s, *problem, x, 48), tolerance);
+  EXPECT_LE(jacobian_error(s, *problem, x, 48), tolerance);
 }
 
 TEST(CrossingGapsJacobian, ContactAllOpen)
@@ -188,7 +149,7 @@ TEST(CrossingGapsJacobian, ContactAllOpen)
   Crossed s;
   auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
   Vector x = state(s, *problem, 285.0, -2.0e-7, 1.0e-9);
-  EXPECT_LE(relative_error(s, *problem, x, 0), tolerance);
+  EXPECT_LE(jacobian_error(s, *problem, x, 0), tolerance);
 }
 
 TEST(CrossingGapsJacobian, SlidingAndBonded)
@@ -198,7 +159,7 @@ TEST(CrossingGapsJacobian, SlidingAndBonded)
     Crossed s;
     auto problem = s.problem(thermal_block(), mechanics_block(kind));
     Vector x = state(s, *problem, 310.0, 1.0e-7, 3.0e-8);
-    EXPECT_LE(relative_error(s, *problem, x, 48), tolerance) << kind;
+    EXPECT_LE(jacobian_error(s, *problem, x, 48), tolerance) << kind;
   }
 }
 } // namespace
