@@ -1,0 +1,119 @@
+"""Shared reading for the check modules of the Truchas decks (not a deck's module itself: no
+deck inputs/truchas/truchas_fields.xml exists, so the report never loads it as one).
+
+- kiln_steps(results): Kiln's output steps (time, node coordinates, cells, displacement,
+  temperature and, per cell, stress and strain in Kiln's order xx yy zz xy yz xz);
+- golden_series(path, n): Truchas' golden output series n (Simulations/MAIN/Series Data/
+  Series n; its mesh under Meshes/DEFAULT, connectivity 1-based), with its tensors reordered
+  from Truchas' xx yy zz xy xz yz into Kiln's order;
+- match(points, reference): for each reference point, the index of the equal point (the
+  meshes are matched by coordinates, never by index);
+- figure(...): one row of the report (doc/verification/truchas_section.py).
+"""
+import h5py
+import numpy as np
+
+# Truchas' tensor columns xx yy zz xy xz yz, taken in Kiln's order xx yy zz xy yz xz.
+TRUCHAS_TO_KILN = [0, 1, 2, 3, 5, 4]
+
+
+class Step:
+    """One output step of a Kiln run (SI units; stress and strain per cell)."""
+
+    def __init__(self, group, x, cells):
+        self.time = float(group.attrs["time"])
+        self.x = x
+        self.cells = cells
+        self.centroids = x[cells].mean(axis=1)
+        self.T = group["temperature"][...]
+        self.u = group["displacement"][...]
+        self.stress = group["stress"][...]
+        self.strain = group["strain"][...]
+        if group["stress"].attrs["components"].decode() != "xx,yy,zz,xy,yz,xz":
+            raise ValueError(f"{group.name}/stress: unexpected components "
+                             f"{group['stress'].attrs['components']}")
+
+
+def kiln_steps(results):
+    with h5py.File(results, "r") as h5:
+        x = h5["mesh/coordinates"][...]
+        cells = h5["mesh/connectivity"][...]
+        return [Step(h5["steps"][name], x, cells) for name in sorted(h5["steps"].keys())]
+
+
+class Series:
+    """One series of a Truchas golden output (cell tensors in Kiln's order)."""
+
+    def __init__(self, path, n):
+        with h5py.File(path, "r") as h5:
+            self.x = h5["Meshes/DEFAULT/Nodal Coordinates"][...]
+            mesh = h5["Meshes/DEFAULT/Element Connectivity"]
+            self.cells = mesh[...] - int(mesh.attrs.get("Offset", 1))
+            group = h5[f"Simulations/MAIN/Series Data/Series {n}"]
+            self.time = float(group.attrs["time"])
+            self.fields = {}
+            for name, data in group.items():
+                values = data[...]
+                if values.ndim == 2 and values.shape[1] == 6:
+                    values = values[:, TRUCHAS_TO_KILN]
+                self.fields[name] = values
+        self.centroids = self.x[self.cells].mean(axis=1)
+
+
+def golden_series(path, n):
+    return Series(path, n)
+
+
+def match(points, reference, tolerance=1e-9):
+    """Index into `points` of each point of `reference` (equal to `tolerance` times the
+    extent); an error if some reference point has no partner."""
+    scale = max(float(np.ptp(reference, axis=0).max()), 1.0)
+    d = np.linalg.norm(points[None, :, :] - reference[:, None, :], axis=2)
+    index = d.argmin(axis=1)
+    worst = float(d[np.arange(len(reference)), index].max())
+    if worst > tolerance * scale:
+        raise ValueError(f"the meshes differ: a point is {worst:g} from the nearest one")
+    return index
+
+
+def figure(quantity, kiln, tolerance_text, passed, golden=None, exact=None):
+    return {"quantity": quantity, "kiln": float(kiln), "tolerance": tolerance_text,
+            "passed": bool(passed), "golden": None if golden is None else float(golden),
+            "exact": None if exact is None else float(exact)}
+
+
+def uniform_state_figures(steps, temperature, strain, stress, u_exact, tolerance, where):
+    """Figures of a state that Q1 reproduces exactly (a uniform strain and stress, a linear
+    displacement), at every output step: the largest error of the cell strains, of the cell
+    stresses relative to `stress`' scale and of the nodal displacement relative to its
+    scale, each against `tolerance` (round-off); and the temperature, uniform and constant
+    (insulated), against `temperature`. strain, stress: 6 components in Kiln's
+    order; u_exact(x) -> the exact displacement at the points x; where: the deck's name for
+    the rows."""
+    rows = []
+    for step in steps:
+        t = f"t = {step.time:g} s"
+        exact_u = u_exact(step.x)
+        u_scale = max(float(np.abs(exact_u).max()), 1.0)
+        s_scale = max(float(np.abs(stress).max()), 1.0)
+        e_scale = max(float(np.abs(strain).max()), 1.0)
+        err_u = float(np.abs(step.u - exact_u).max()) / u_scale
+        err_e = float(np.abs(step.strain - np.asarray(strain)).max()) / e_scale
+        err_s = float(np.abs(step.stress - np.asarray(stress)).max()) / s_scale
+        text = f"<= {tolerance:g} (round-off: Q1 holds the exact state)"
+        err_T = float(np.abs(step.T - temperature).max()) / temperature
+        rows += [
+            figure(f"max |T - {temperature:g} K| / {temperature:g} K at the nodes, {t}", err_T,
+                   text, err_T <= tolerance, exact=0.0),
+            figure(f"max |u - u_exact| / {u_scale:g} m at the nodes, {t}", err_u, text,
+                   err_u <= tolerance, exact=0.0),
+            figure(f"max |eps - eps_exact| / {e_scale:g} over the cells and components, {t}",
+                   err_e, text, err_e <= tolerance, exact=0.0),
+            figure(f"max |sigma - sigma_exact| / {s_scale:g} Pa over the cells and "
+                   f"components, {t}", err_s, text, err_s <= tolerance, exact=0.0),
+        ]
+    times = [step.time for step in steps]
+    if times != [0.0, 1.0]:
+        rows.append(figure(f"{where}: output times {times}, expected [0, 1]", len(times),
+                           "the outputs of the Truchas input", False))
+    return rows
