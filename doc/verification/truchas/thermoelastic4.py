@@ -33,5 +33,6 @@ BETA = 3 * 2e10 + 2 * 1e10  # (3 lambda + 2 G) alpha, alpha = 1/K
 def figures(results, deck):
     steps = tf.kiln_steps(results)
     stress = [-BETA, -BETA, -BETA, 0, 0, 0]
-    return tf.uniform_state_figures(steps, 2.0, [0] * 6, stress, lambda x: np.zeros_like(x),
+    return tf.uniform_state_figures(steps, 2.0, [0] * 6, stress, BETA,
+                                    lambda x: np.zeros_like(x),
                                     TOLERANCE, "thermoelastic4")

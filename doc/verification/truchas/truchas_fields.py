@@ -82,7 +82,8 @@ def figure(quantity, kiln, tolerance_text, passed, golden=None, exact=None):
             "exact": None if exact is None else float(exact)}
 
 
-def uniform_state_figures(steps, temperature, strain, stress, u_exact, tolerance, where):
+def uniform_state_figures(steps, temperature, strain, stress, stress_scale, u_exact, tolerance,
+                          where):
     """Figures of a state that Q1 reproduces exactly (a uniform strain and stress, a linear
     displacement), at every output step: the largest error of the cell strains, of the cell
     stresses relative to `stress`' scale and of the nodal displacement relative to its
@@ -95,7 +96,7 @@ def uniform_state_figures(steps, temperature, strain, stress, u_exact, tolerance
         t = f"t = {step.time:g} s"
         exact_u = u_exact(step.x)
         u_scale = max(float(np.abs(exact_u).max()), 1.0)
-        s_scale = max(float(np.abs(stress).max()), 1.0)
+        s_scale = stress_scale
         e_scale = max(float(np.abs(strain).max()), 1.0)
         err_u = float(np.abs(step.u - exact_u).max()) / u_scale
         err_e = float(np.abs(step.strain - np.asarray(strain)).max()) / e_scale
@@ -117,3 +118,22 @@ def uniform_state_figures(steps, temperature, strain, stress, u_exact, tolerance
         rows.append(figure(f"{where}: output times {times}, expected [0, 1]", len(times),
                            "the outputs of the Truchas input", False))
     return rows
+
+
+def free_expansion_figures(results, normal, point, beta, tolerance, where):
+    """thermoelastic1..3: T = 2 K, T_ref = 1 K, alpha = 1/K, insulated; free expansion, eps =
+    I, sigma = 0, held at most by a roller on the plane through `point` with unit `normal`
+    (None: not held). The displacement is x - q up to the rigid motions the conditions leave
+    free; Kiln's Minimum Norm picks the one with no component in them (sum over the nodes of
+    u . r = 0), which is u = x - q with q the nodes' centroid projected onto the roller's
+    plane (the centroid itself without a roller): its translations along the free directions
+    sum to zero, and sum (x - q) . (w x (x - c)) = (c - q) . (w x sum (x - c)) = 0 for any
+    rotation w about an axis through the centroid c."""
+    steps = kiln_steps(results)
+    centroid = steps[0].x.mean(axis=0)
+    q = centroid
+    if normal is not None:
+        normal = np.asarray(normal, dtype=float)
+        q = centroid - np.dot(centroid - np.asarray(point), normal) * normal
+    return uniform_state_figures(steps, 2.0, [1, 1, 1, 0, 0, 0], [0] * 6, beta,
+                                 lambda x: x - q, tolerance, where)
