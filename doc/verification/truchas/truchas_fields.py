@@ -25,7 +25,7 @@ class Step:
         self.x = x
         self.cells = cells
         self.centroids = x[cells].mean(axis=1)
-        self.T = group["temperature"][...]
+        self.T = group["temperature"][...] if "temperature" in group else None
         self.u = group["displacement"][...]
         self.stress = group["stress"][...]
         self.strain = group["strain"][...]
