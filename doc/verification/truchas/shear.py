@@ -59,29 +59,13 @@ def golden_path():
     return Path(__file__).resolve().parents[3].parent / "shared" / "truchas-tests" / GOLDEN
 
 
-def face_mean(x, u):
-    """The mean of u over the face x = 1 of the unit cube: the trapezoidal weights of its
-    nodes on their (y, z) grid, exact for the Q1 field's trace."""
-    on = np.abs(x[:, 0] - 1.0) < 1e-9
-    weights = np.ones(int(on.sum()))
-    for axis in (1, 2):
-        v = np.round(x[on, axis], 12)
-        grid = np.unique(v)
-        h = np.diff(grid)
-        w = np.zeros(len(grid))
-        w[:-1] += h / 2
-        w[1:] += h / 2
-        weights *= w[np.searchsorted(grid, v)]
-    return (weights[:, None] * u[on]).sum(axis=0) / weights.sum()
-
-
 def figures(results, deck):
     step = tf.kiln_steps(results)[-1]
     golden = tf.golden_series(golden_path(), 2)
     nodes = tf.match(step.x, golden.x)
     u_gold = golden.fields["Displacement"]
-    kiln = float(face_mean(step.x, step.u)[1])
-    gold = float(face_mean(golden.x, u_gold)[1])
+    kiln = float(tf.face_mean(step.x, step.u)[1])
+    gold = float(tf.face_mean(golden.x, u_gold)[1])
     diff = float(np.abs(step.u[nodes] - u_gold).max())
     passed = (1 - SHARE) * REFINED <= kiln <= REFINED and step.time == 1.0
     return [tf.figure(

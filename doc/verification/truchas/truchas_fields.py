@@ -137,3 +137,19 @@ def free_expansion_figures(results, normal, point, beta, tolerance, where):
         q = centroid - np.dot(centroid - np.asarray(point), normal) * normal
     return uniform_state_figures(steps, 2.0, [1, 1, 1, 0, 0, 0], [0] * 6, beta,
                                  lambda x: x - q, tolerance, where)
+
+
+def face_mean(x, u, at=1.0):
+    """The mean of the nodal field u over the face x = `at` of a box mesh: the trapezoidal
+    weights of its nodes on their (y, z) grid, exact for a Q1 field's trace."""
+    on = np.abs(x[:, 0] - at) < 1e-9
+    weights = np.ones(int(on.sum()))
+    for axis in (1, 2):
+        v = np.round(x[on, axis], 12)
+        grid = np.unique(v)
+        h = np.diff(grid)
+        w = np.zeros(len(grid))
+        w[:-1] += h / 2
+        w[1:] += h / 2
+        weights *= w[np.searchsorted(grid, v)]
+    return (weights[:, None] * u[on]).sum(axis=0) / weights.sum()
