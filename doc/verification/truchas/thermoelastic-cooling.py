@@ -19,10 +19,12 @@ alpha = 1/K, lambda 2e10 Pa, G 1e10 Pa, rollers at x = 0, y = 0, z = 0.
   1.1 Pa), i.e. zero at the test's tolerances. The golden is not: its cell temperatures are
   up to 2.6e-5 K above 300 K, its displacement up to 1.14e-5 m and its stress up to
   5.3e5 Pa, 11 and 106 times the test's tolerances. That is Truchas' time error (84 steps
-  under rel_temp_tol 1e-3, the last 0.042 s; its spatial discretisation decays the slowest
-  mode as fast as the exact one to within a few per cent of the exponent, which leaves
-  ~1e-10 K, not 1e-5 K). Kiln's end state (Maximum Step 0.01 s, see the deck) is at 6e-9 K,
-  1.9e-9 m, 63 Pa: within the tolerances of the exact state, and 1.1e-5 m and 5.3e5 Pa from
+  under rel_temp_tol 1e-3, the last 0.042 s), not its space discretisation: the
+  cell-centred operator on these 4^3 cells decays the slowest mode at 3 x 9.37 = 28.1 /s
+  (exact 3 pi^2 = 29.6 /s), which leaves 6e-11 K at t = 1 s, and the golden's cell
+  temperatures at t = 1 s are that mode, T - 300 = 3.3e-5 K sin(pi x) sin(pi y) sin(pi z)
+  at the centroids (the ratio constant to 1.3%), 5e5 times too large. Kiln's end state
+  (Maximum Step 0.01 s, see the deck) is at 6e-9 K, 1.9e-9 m, 63 Pa: within the tolerances of the exact state, and 1.1e-5 m and 5.3e5 Pa from
   the golden. So at t = 1 s Kiln is checked against the exact state; the golden's figure is
   shown beside it, never used as the reference.
 
