@@ -1,4 +1,4 @@
-"""Check of inputs/truchas/shear.xml: Truchas' sm-shear/shear.inp with test-shear.py's quantity.
+"""Check of inputs/truchas/shear.xml: Truchas' sm-shear/shear.inp, test-shear.py's quantity.
 
 test-shear.py compares the nodal displacement at the last output (Series 2, t = 1 s) with
 the golden (shear_golden/shear.h5) to max abs 1e-10 m. That is a regression tolerance of
@@ -27,11 +27,13 @@ towards the smooth case's 4 as the mesh resolves the singular edges: the clamp's
 loaded face's, where its shear traction meets the free faces). Richardson's extrapolation
 with the last ratio gives 2.7304 m; a ratio of 4 from here on would give 2.7266 m. The
 refined answer is taken as 2.730 m (+-0.004 m).
+
 So the exact compliance is at least 2.719 m (the finest Kiln value, a lower bound), and the
 golden's 1.933 m (the mean of its four loaded corners, which is its face mean) is 29% below
-the refined answer, Kiln's 2.407 m on Truchas' mesh 12% below. A Timoshenko beam (E = 2.5 Pa, I = 1/12 m^4, shear factor 5/6) gives 1.6 + 1.2 =
-2.8 m, which the short clamped block is expected to approach from below. The golden is the
-less accurate answer; Kiln is not tuned to it.
+the refined answer, Kiln's 2.407 m on Truchas' mesh 12% below. A Timoshenko beam (E = 2.5
+Pa, I = 1/12 m^4, shear factor 5/6) gives 1.6 + 1.2 = 2.8 m, which the short clamped block
+is expected to approach from below. The golden is the less accurate answer; Kiln is not
+tuned to it.
 
 The check therefore: Kiln's face mean on Truchas' mesh against the refined answer, as a
 lower bound within 15% of it (the discretisation error of one Q1 cell through the

@@ -25,8 +25,9 @@ alpha = 1/K, lambda 2e10 Pa, G 1e10 Pa, rollers at x = 0, y = 0, z = 0.
   temperatures at t = 1 s are that mode, T - 300 = 3.3e-5 K sin(pi x) sin(pi y) sin(pi z)
   at the centroids (the ratio constant to 1.3%), 5e5 times too large. Kiln's end state
   (Maximum Step 0.01 s, see the deck) is at 6e-9 K, 1.9e-9 m, 63 Pa: within the
-  tolerances of the exact state, and 1.1e-5 m and 5.3e5 Pa from the golden. So at t = 1 s Kiln is checked against the exact state; the golden's figure is
-  shown beside it, never used as the reference.
+  tolerances of the exact state, and 1.1e-5 m and 5.3e5 Pa from the golden. So at t = 1 s
+  Kiln is checked against the exact state; the golden's figure is shown beside it, never
+  used as the reference.
 
 Truchas' temperature is a cell value and its thermal strain uses the cell temperature;
 Kiln's temperature is nodal (Q1) and its thermal strain the interpolated nodal field at the
