@@ -3,6 +3,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
+#include <vector>
 
 namespace kiln
 {
@@ -10,6 +11,12 @@ namespace kiln
 /// parameters.
 Teuchos::ParameterList interface_parameters();
 /// Throws InputError (naming `path`) if the validated sublist `contact` gives a parameter of
-/// another kind than its "Kind".
-void check_interface_parameters(const Teuchos::ParameterList &contact, const std::string &path);
+/// another kind than its "Kind", or a "Gaps" entry whose "Side Set" is not one of
+/// `gap_side_sets` or is named twice; and the same for every gap's own parameters.
+void check_interface_parameters(const Teuchos::ParameterList &contact,
+                                const std::vector<int> &gap_side_sets, const std::string &path);
+/// The parameters of the gap at side set `side_set`: those of `contact` (validated), replaced
+/// by those its "Gaps" entry for that side set gives.
+Teuchos::ParameterList gap_interface_parameters(const Teuchos::ParameterList &contact,
+                                                int side_set);
 } // namespace kiln

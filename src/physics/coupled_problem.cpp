@@ -1,6 +1,7 @@
 #include "physics/coupled_problem.hpp"
 
 #include "base/errors.hpp"
+#include "contact/interface_parameters.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/mechanics/free_motions.hpp"
@@ -37,20 +38,24 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
         condition->add_constraints(mesh, constraints_);
   const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
   const Teuchos::ParameterList &contact = mechanics.sublist("Contact");
-  // One interface per gap, each of the input's Kind.
+  // One interface per gap, each of its Kind (Contact/Gaps, else Contact's).
   if (dofs.layout().contact && mechanics_)
     for (std::size_t g = 0; g < mesh.gap_side_sets.size(); ++g)
     {
-      pairings_.push_back(std::make_unique<ContactInterface>(
-          mesh, dofs, static_cast<int>(g), modulus, contact.get<double>("Complementarity Scale")));
+      // The gap's parameters: Contact's, replaced by its own entry of Contact/Gaps.
+      const Teuchos::ParameterList parameters =
+          gap_interface_parameters(contact, mesh.gap_side_sets[g]);
+      pairings_.push_back(
+          std::make_unique<ContactInterface>(mesh, dofs, static_cast<int>(g), modulus,
+                                             parameters.get<double>("Complementarity Scale")));
       if (pairings_.back()->n_pairs() == 0)
       {
         pairings_.pop_back();
         continue;
       }
-      interfaces_.push_back(interface_kinds().create(contact.get<std::string>("Kind"),
-                                                     *pairings_.back(), dofs, constraints_, contact,
-                                                     where + "/Mechanics/Contact"));
+      interfaces_.push_back(interface_kinds().create(parameters.get<std::string>("Kind"),
+                                                     *pairings_.back(), dofs, constraints_,
+                                                     parameters, where + "/Mechanics/Contact"));
     }
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);

@@ -72,6 +72,6 @@ MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
                    where + "/Contact",
                    "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
                    "it or name the side set to split at");
-  check_interface_parameters(mechanics.sublist("Contact"), where + "/Contact");
+  check_interface_parameters(mechanics.sublist("Contact"), mesh.gap_side_sets, where + "/Contact");
 }
 } // namespace kiln

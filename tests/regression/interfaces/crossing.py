@@ -12,7 +12,12 @@ Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
    the spec's closed state sigma'xx = sigma'zz = -2.288e7 Pa, sigma'yy = 0, and every gap
    node's contact_pressure is 2.288e7 Pa, to 1e-6: the floor is the temperature, 1.8e-6 K
    from 308 K at 150 s (what BDF2's last steps leave of the transient), not the contact.
-2. contact-box-crossing3 (rollers on all six faces, gaps at the three mid-planes, eight
+2. contact-box-crossing with Contact/Gaps giving side set 12 the Kind "Bonded" (a Kind per
+   gap): at 50 s, colder than 298 K, gap 10 is open (every node of it off gap 12 has an
+   opening > 0 and no pressure) while gap 12 stays shut (zero opening) and carries a
+   tension, which contact cannot (contact_pressure negative on average over its nodes off
+   gap 10 and below -1e5 Pa: -3.4e5 and -7.5e5 Pa measured).
+3. contact-box-crossing3 (rollers on all six faces, gaps at the three mid-planes, eight
    bodies, the centre node with eight copies): 216 nodes, 36 pairs per gap, all in contact;
    sigma = -3 K alpha dT = -4.576e7 Pa on the diagonal, zero shear, contact_pressure
    4.576e7 Pa, to 1e-6 (the same temperature floor), and |u| below 1e-6 of alpha dT L.
@@ -44,6 +49,48 @@ def run(kiln, inputs, work, deck, n_ranks, mpiexec):
         fields["time"] = float(last.attrs["time"])
         fields["x"] = h5["mesh/coordinates"][...]
     return fields, done.stdout
+
+
+def box_frame(x, phi=45.0, theta=-30.0):
+    """Coordinates in the box's own frame (Kiln's rotation_matrix: Rx(theta) Ry(phi))."""
+    p, t = np.radians(phi), np.radians(theta)
+    cp, sp, ct, st = np.cos(p), np.sin(p), np.cos(t), np.sin(t)
+    A = np.array([[cp, 0.0, sp], [st * sp, ct, -st * cp], [-ct * sp, st, ct * cp]])
+    return x @ A
+
+
+def bonded_gap_12(kiln, inputs, work, n_ranks, mpiexec):
+    """contact-box-crossing with gap 12 bonded; its fields at 50 s."""
+    os.makedirs(work, exist_ok=True)
+    with open(os.path.join(inputs, "contact-box-crossing.xml"), encoding="utf-8") as f:
+        text = f.read()
+    gaps = """    <ParameterList name="Contact">
+      <ParameterList name="Gaps">
+        <ParameterList name="z = 0 bonded">
+          <Parameter name="Side Set" type="int" value="12"/>
+          <Parameter name="Kind" type="string" value="Bonded"/>
+        </ParameterList>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Time Stepping">"""
+    text = text.replace("""  </ParameterList>
+  <ParameterList name="Time Stepping">""", gaps, 1)
+    deck = os.path.join(work, "crossing-bonded.xml")
+    with open(deck, "w", encoding="utf-8") as f:
+        f.write(text)
+    command = [kiln, deck]
+    if int(n_ranks) > 1:
+        command = [mpiexec, "-np", n_ranks] + command
+    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          text=True)
+    if done.returncode != 0:
+        print(done.stdout)
+        raise SystemExit(f"crossing-bonded: exit {done.returncode}")
+    with h5py.File(os.path.join(work, "results", "crossing-bonded.h5"), "r") as h5:
+        step = next(h5["steps"][k] for k in sorted(h5["steps"].keys())
+                    if float(h5["steps"][k].attrs["time"]) == 50.0)
+        return h5["mesh/coordinates"][...], {k: step[k][...] for k in step.keys()}
 
 
 def main():
@@ -79,6 +126,23 @@ def main():
     check(p <= 1e-6, f"crossing: contact_pressure 2.288e7 Pa to {p:.3g}")
     g = np.abs(two["gap_opening"][on_gap]).max() / u_scale
     check(g <= 1e-9, f"crossing: gap_opening 0 to {g:.3g} of the largest displacement")
+
+    x, f = bonded_gap_12(kiln, inputs, work, n_ranks, mpiexec)
+    local = box_frame(x)
+    on_gap = ~np.isnan(f["contact_pressure"])
+    on_10 = on_gap & (np.abs(local[:, 0]) < 1e-9) & (np.abs(local[:, 2]) > 1e-9)
+    on_12 = on_gap & (np.abs(local[:, 2]) < 1e-9) & (np.abs(local[:, 0]) > 1e-9)
+    u_scale = np.abs(f["displacement"]).max()
+    check(on_10.sum() == 40 and on_12.sum() == 40,
+          f"bonded gap 12: {on_10.sum()} and {on_12.sum()} nodes on gaps 10 and 12 only")
+    check(np.all(f["gap_opening"][on_10] > 1e-3 * u_scale) and
+          np.all(f["contact_pressure"][on_10] == 0.0),
+          "bonded gap 12, t = 50 s: gap 10 (Contact) open, no pressure")
+    g12 = np.abs(f["gap_opening"][on_12]).max() / u_scale
+    p12 = f["contact_pressure"][on_12]
+    check(g12 <= 1e-9 and p12.mean() < 0.0 and p12.min() < -1e5,
+          f"bonded gap 12, t = 50 s: gap 12 shut (opening {g12:.3g} of max |u|), in tension "
+          f"(contact_pressure mean {p12.mean():.3g} Pa, down to {p12.min():.3g} Pa)")
 
     three, log = run(kiln, inputs, work, "contact-box-crossing3", n_ranks, mpiexec)
     check(three["time"] == 150.0 and len(three["x"]) == 216, f"crossing3: {len(three['x'])} nodes")
