@@ -6,6 +6,9 @@ doc/verification/truchas/NAME.py, which defines
     TEST = "heat_conduction/3d-ss-hc-linear-hex"   # the Truchas test it ports
     CHANGES = []        # optional: (list path, parameter, type, value) changes of the deck,
                         # as report.py's derive_deck takes them (e.g. the output times)
+    COMPANIONS = []     # optional: other decks of inputs/truchas/ whose results the check
+                        # compares with (a Truchas test that runs two inputs); figures()
+                        # then takes companions={name: results}
     def figures(results, deck):
         '''results: the run's HDF5 file (pathlib.Path), deck: the derived deck. Returns a list
         of dicts: quantity (str), kiln (float), tolerance (str: the Truchas test's, e.g.
@@ -68,24 +71,46 @@ def load_sidecar(deck, sidecars):
     return module
 
 
+def changes_of(deck, module):
+    """The changes of `deck` as its module asks (CHANGES) and its Exodus mesh as an absolute
+    path."""
+    changes = list(getattr(module, "CHANGES", []))
+    mesh = mesh_file(deck)
+    if mesh is not None:
+        changes.append(("Mesh/Exodus", "File", "string", str(mesh)))
+    return changes
+
+
 def run_all(folder, sidecars, run_case):
     """Runs every deck through run_case(name, source, changes) -> (deck, results, changes)
-    and returns the rows: (deck name, TEST, figure dict)."""
+    and returns the rows: (deck name, TEST, figure dict). A module's COMPANIONS get the
+    results of those decks."""
     rows = []
+    runs = {}
+    modules = {}
     for deck in decks(folder):
         module = load_sidecar(deck, sidecars)
-        changes = list(getattr(module, "CHANGES", []))
-        mesh = mesh_file(deck)
-        if mesh is not None:
-            changes.append(("Mesh/Exodus", "File", "string", str(mesh)))
-        derived, results, _ = run_case(f"truchas-{deck.stem}", deck, changes)
-        figures = module.figures(results, derived)
+        modules[deck.stem] = (deck, module)
+        derived, results, _ = run_case(f"truchas-{deck.stem}", deck, changes_of(deck, module))
+        runs[deck.stem] = (derived, results)
+    for stem, (deck, module) in modules.items():
+        derived, results = runs[stem]
+        companions = getattr(module, "COMPANIONS", [])
+        missing = [c for c in companions if c not in runs]
+        if missing:
+            raise SidecarError(f"{sidecars}/{stem}.py: COMPANIONS {', '.join(missing)} are not "
+                               f"decks of {folder}")
+        if companions:
+            figures = module.figures(results, derived,
+                                     companions={c: runs[c][1] for c in companions})
+        else:
+            figures = module.figures(results, derived)
         if not figures:
-            raise SidecarError(f"{sidecars}/{deck.stem}.py: figures() returned no figure")
+            raise SidecarError(f"{sidecars}/{stem}.py: figures() returned no figure")
         for figure in figures:
             missing = {"quantity", "kiln", "tolerance", "passed"} - set(figure)
             if missing:
-                raise SidecarError(f"{sidecars}/{deck.stem}.py: a figure without "
+                raise SidecarError(f"{sidecars}/{stem}.py: a figure without "
                                    f"{', '.join(sorted(missing))}")
             rows.append((deck.name, module.TEST, figure))
     return rows

@@ -20,20 +20,29 @@ def main():
     spec = importlib.util.spec_from_file_location("check", Path(sidecars) / f"{deck.stem}.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    os.makedirs(work, exist_ok=True)
     # The decks name their Exodus mesh relative to the checkout: given here by --mesh.
     section_spec = importlib.util.spec_from_file_location(
         "truchas_section", Path(sidecars).parent / "truchas_section.py")
     section = importlib.util.module_from_spec(section_spec)
     section_spec.loader.exec_module(section)
-    mesh = section.mesh_file(deck)
-    command = [kiln] + (["--mesh", str(mesh)] if mesh is not None else []) + [str(deck)]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    subprocess.run(command, check=True, cwd=work, stdout=subprocess.DEVNULL)
-    results = Path(work) / "results" / f"{deck.stem}.h5"
+
+    def run(deck, folder):
+        os.makedirs(folder, exist_ok=True)
+        mesh = section.mesh_file(deck)
+        command = [kiln] + (["--mesh", str(mesh)] if mesh is not None else []) + [str(deck)]
+        if int(n_ranks) > 1:
+            command = [mpiexec, "-np", n_ranks] + command
+        subprocess.run(command, check=True, cwd=folder, stdout=subprocess.DEVNULL)
+        return Path(folder) / "results" / f"{deck.stem}.h5"
+
+    results = run(deck, work)
+    # A Truchas test that runs two inputs: the module's companions run beside it.
+    companions = {name: run(deck.parent / f"{name}.xml", Path(work) / "companions" / name)
+                  for name in getattr(module, "COMPANIONS", [])}
+    found = module.figures(results, deck, companions=companions) if companions else \
+        module.figures(results, deck)
     failed = 0
-    for f in module.figures(results, deck):
+    for f in found:
         # A figure outside the Truchas test's tolerance whose golden is shown to be the less
         # accurate (by the module's other figures) carries "explained" and does not fail.
         verdict = "pass" if f["passed"] else ("explained: " + f["explained"]
