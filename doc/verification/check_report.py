@@ -18,7 +18,7 @@ DIR/work). Then checks DIR/report.md and the PNGs beside it:
   Euler) and 2 (BDF2, space), as the unit test asserts;
 - the elasticity convergence table: both bars on four meshes, the last orders within 0.1
   of 2 (displacement, L2) and 1 (cell stress, L2);
-- the Truchas section (doc/verification/truchas_section.py): a row for every deck of
+- the section "Gaps that cross" (every figure within its bound), the Truchas section (doc/verification/truchas_section.py): a row for every deck of
   inputs/truchas/ and each figure within its test's tolerance, or, with no deck, the line
   saying so;
 - the PNG files exist, are PNG files under 300 KB, and report.md shows each of them.
@@ -161,6 +161,7 @@ def check(text, full, truchas=HERE.parent.parent / "inputs" / "truchas"):
     failures += check_energy(text)
     failures += check_corefined(text, full)
     failures += check_truchas(text, truchas)
+    failures += check_interfaces(text)
     return failures
 
 
@@ -218,6 +219,28 @@ def check_energy(text):
                             f"{error} (relative), above 1e-8")
     if len(rows) < 5:
         failures.append(f"energy balance: {len(rows)} steps, expected at least 5")
+    return failures
+
+
+def check_interfaces(text):
+    """The section "Gaps that cross": a row set per deck of report.py's INTERFACE_DECKS, every
+    figure within its bound."""
+    match = re.search(r"^## Gaps that cross\n(.*?)(?=^## |\Z)", text, re.S | re.M)
+    if match is None:
+        return ["no section \"Gaps that cross\""]
+    rows = table_rows(match.group(1), "| deck | case |")
+    if rows is None:
+        return ["no table in the section \"Gaps that cross\""]
+    failures = []
+    shown = {row["deck"] for row in rows}
+    for name in ("contact-box-close.xml", "contact-box-crossing.xml",
+                 "contact-box-crossing3.xml"):
+        if name not in shown:
+            failures.append(f"Gaps that cross: no row for {name}")
+    for row in rows:
+        if row["within bound"] != "yes":
+            failures.append(f"Gaps that cross, {row['deck']}: {row['quantity']} = {row['Kiln']}, "
+                            f"not within {row['tolerance']}")
     return failures
 
 

@@ -60,6 +60,11 @@ HERE = Path(__file__).resolve().parent
 SOURCE = HERE.parent.parent
 sys.path.insert(0, str(HERE))
 import truchas_section  # noqa: E402  (beside this file)
+
+# The decks of inputs/ whose check modules are in doc/verification/interfaces/.
+INTERFACE_DECKS = ["contact-box-close", "contact-box-crossing", "contact-box-crossing3"]
+INTERFACE_HEADER = truchas_section.HEADER.replace("Truchas test", "case").replace(
+    "within tolerance", "within bound")
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?nan|[-+]?inf"
 
 
@@ -871,7 +876,7 @@ def time_steps(log, until):
 
 
 def write_report(out, args, cases, refinement, corefined, heat, elastic, truchas, energy, runner,
-                 spec, started, elapsed):
+                 spec, started, elapsed, interfaces=()):
     same_steps = len({tuple(r["steps"]) for r in refinement}) == 1
     command = "doc/verification/report.py " + " ".join(
         shlex.quote(a) for a in sys.argv[1:])
@@ -1006,6 +1011,14 @@ def write_report(out, args, cases, refinement, corefined, heat, elastic, truchas
     md += energy_section(energy)
     md += elastic_section(elastic)
     md += truchas_section.section(shown(args.truchas), truchas)
+    md += truchas_section.section(
+        "inputs/", list(interfaces), title="Gaps that cross",
+        intro="The decks `inputs/contact-box-crossing.xml` (gaps at x = 0 and z = 0 of the "
+              "box) and `inputs/contact-box-crossing3.xml` (three gaps, held on six faces), "
+              "checked by `doc/verification/interfaces/NAME.py` against the one-gap box "
+              "(`contact-box-close`) and the exact closed states; the exact states are met "
+              "to the temperature's own distance from 308 K at 150 s (doc/contact.md).",
+        header=INTERFACE_HEADER)
 
     md += ["## Runs", "", "| run | wall time [s] |", "|---|---:|"]
     md += [f"| {label} | {seconds:.1f} |" for label, seconds in runner.wall.items()]
@@ -1147,6 +1160,11 @@ def report(args):
                           f"them); see {args.work / 'elastic-convergence' / 'log.txt'}")
     try:
         truchas = truchas_section.run_all(args.truchas, args.truchas_checks, runner.run_case)
+        # The interfaces (issue 34): the crossing decks against the one-gap box and the exact
+        # states, through the same check modules (doc/verification/interfaces/).
+        interfaces = truchas_section.run_all(SOURCE / "inputs", HERE / "interfaces",
+                                             runner.run_case, names=INTERFACE_DECKS,
+                                             prefix="interfaces")
     except truchas_section.SidecarError as error:
         raise ReportError(str(error)) from error
 
@@ -1156,7 +1174,7 @@ def report(args):
     energy = energy_balance(energy_results)
 
     write_report(args.out, args, cases, refinement, corefined, heat, elastic, truchas, energy,
-                 runner, args.spec, started, time.monotonic() - start)
+                 runner, args.spec, started, time.monotonic() - start, interfaces)
     print(summary_table(cases))
     print("closing time: " + ", ".join(f"{r['n']}^3 {r['event']:.4f} s" for r in refinement))
     print(f"report.py: wrote {args.out / 'report.md'} and the PNGs "

@@ -33,10 +33,12 @@ class SidecarError(Exception):
     """A deck has no sidecar, or its sidecar is malformed."""
 
 
-def decks(folder):
-    """The decks of inputs/truchas/ (sorted; none when the folder does not exist)."""
+def decks(folder, names=None):
+    """The decks of inputs/truchas/ (sorted; none when the folder does not exist), or of
+    `folder` those named in `names` (stems)."""
     folder = Path(folder)
-    return sorted(folder.glob("*.xml")) if folder.is_dir() else []
+    found = sorted(folder.glob("*.xml")) if folder.is_dir() else []
+    return found if names is None else [d for d in found if d.stem in names]
 
 
 def mesh_file(deck):
@@ -81,17 +83,17 @@ def changes_of(deck, module):
     return changes
 
 
-def run_all(folder, sidecars, run_case):
+def run_all(folder, sidecars, run_case, names=None, prefix="truchas"):
     """Runs every deck through run_case(name, source, changes) -> (deck, results, changes)
     and returns the rows: (deck name, TEST, figure dict). A module's COMPANIONS get the
     results of those decks."""
     rows = []
     runs = {}
     modules = {}
-    for deck in decks(folder):
+    for deck in decks(folder, names):
         module = load_sidecar(deck, sidecars)
         modules[deck.stem] = (deck, module)
-        derived, results, _ = run_case(f"truchas-{deck.stem}", deck, changes_of(deck, module))
+        derived, results, _ = run_case(f"{prefix}-{deck.stem}", deck, changes_of(deck, module))
         runs[deck.stem] = (derived, results)
     for stem, (deck, module) in modules.items():
         derived, results = runs[stem]
@@ -129,17 +131,17 @@ def verdict(figure):
     return "NO"
 
 
-def section(folder_shown, rows):
-    """The report's lines."""
-    md = ["## Truchas tests", "",
-          f"Every deck of `{folder_shown}` is run; its check module "
+def section(folder_shown, rows, title="Truchas tests", intro=None, header=HEADER):
+    """The report's lines: the Truchas section, or another of decks with check modules."""
+    md = [f"## {title}", "",
+          intro or f"Every deck of `{folder_shown}` is run; its check module "
           "`doc/verification/truchas/NAME.py` gives Kiln's figure, the Truchas test's "
           "tolerance, the golden output's value and, where the golden differs from it, the "
           "exact or refined answer (see `doc/verification/truchas_section.py`).", ""]
     if not rows:
         md += [f"No deck in `{folder_shown}` yet.", ""]
         return md
-    md += [HEADER, "|---|---|---|---:|---|---:|---:|---|"]
+    md += [header, "|---|---|---|---:|---|---:|---:|---|"]
     for name, test, f in rows:
         quantity, tolerance = (str(f[k]).replace("|", "\\|") for k in ("quantity", "tolerance"))
         md.append(f"| {name} | {test} | {quantity} | {f['kiln']:.6g} | {tolerance} | "

@@ -1,26 +1,21 @@
 #!/usr/bin/env python3
-"""Gaps that cross (Mesh/"Gap Side Sets"), in whole runs: inputs/contact-box-crossing.xml and
-inputs/contact-box-crossing3.xml against the one-gap box and the exact closed states.
+"""Gaps that cross (Mesh/"Gap Side Sets"), in whole runs: the mesh and the pairs of
+inputs/contact-box-crossing.xml and inputs/contact-box-crossing3.xml, and a Kind per gap. Their
+states against the one-gap box and the exact ones are checked by their modules in
+doc/verification/interfaces/ (tests interface_deck_*, and the verification report).
 
 Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
 
-1. contact-box-crossing (gaps at x = 0 and z = 0 of the box, four quarters; the 5 nodes on
-   the crossing line have four copies): 180 nodes, 30 pairs per gap, every pair in contact at
-   150 s. With both gaps closed the box is the uncut one, and its temperature field does not
-   depend on z: every node's displacement and every cell's stress equal those of
-   inputs/contact-box-close.xml (one gap) at the same place to 1e-9 of the largest. Both are
-   the spec's closed state sigma'xx = sigma'zz = -2.288e7 Pa, sigma'yy = 0, and every gap
-   node's contact_pressure is 2.288e7 Pa, to 1e-6: the floor is the temperature, 1.8e-6 K
-   from 308 K at 150 s (what BDF2's last steps leave of the transient), not the contact.
+1. contact-box-crossing (gaps at x = 0 and z = 0, four quarters; the 5 nodes on the crossing
+   line have four copies): 180 nodes, 30 pairs per gap, every pair in contact at 150 s, with
+   no opening.
 2. contact-box-crossing with Contact/Gaps giving side set 12 the Kind "Bonded" (a Kind per
    gap): at 50 s, colder than 298 K, gap 10 is open (every node of it off gap 12 has an
    opening > 0 and no pressure) while gap 12 stays shut (zero opening) and carries a
    tension, which contact cannot (contact_pressure negative on average over its nodes off
    gap 10 and below -1e5 Pa: -3.4e5 and -7.5e5 Pa measured).
-3. contact-box-crossing3 (rollers on all six faces, gaps at the three mid-planes, eight
-   bodies, the centre node with eight copies): 216 nodes, 36 pairs per gap, all in contact;
-   sigma = -3 K alpha dT = -4.576e7 Pa on the diagonal, zero shear, contact_pressure
-   4.576e7 Pa, to 1e-6 (the same temperature floor), and |u| below 1e-6 of alpha dT L.
+3. contact-box-crossing3 (three gaps, the centre node with eight copies): 216 nodes, 36 pairs
+   per gap, every gap node in contact.
 """
 import os
 import re
@@ -29,9 +24,6 @@ import sys
 
 import h5py
 import numpy as np
-
-SIGMA = 2.08e11 * 2.2e-5 * 10.0  # (3 lambda + 2G) alpha dT [Pa]
-
 
 def run(kiln, inputs, work, deck, n_ranks, mpiexec):
     os.makedirs(work, exist_ok=True)
@@ -102,7 +94,6 @@ def main():
         print(f"{'pass' if ok else 'FAIL'}: {what}")
         failed += not ok
 
-    one, _ = run(kiln, inputs, work, "contact-box-close", n_ranks, mpiexec)
     two, log = run(kiln, inputs, work, "contact-box-crossing", n_ranks, mpiexec)
     check(two["time"] == 150.0 and len(two["x"]) == 180, f"crossing: {len(two['x'])} nodes")
     pairs = [int(n) for n in re.findall(r"gap at side set \d+: (\d+) node pairs", log)]
@@ -110,20 +101,7 @@ def main():
     on_gap = ~np.isnan(two["contact_pressure"])
     check(on_gap.sum() == 100 and np.all(two["contact_active"][on_gap] == 1.0),
           f"crossing: {on_gap.sum()} gap nodes, all in contact")
-    by_position = {tuple(np.round(p, 12)): i for i, p in enumerate(one["x"])}
-    index = np.array([by_position[tuple(np.round(p, 12))] for p in two["x"]])
-    u_scale = np.abs(one["displacement"]).max()
-    du = np.abs(two["displacement"] - one["displacement"][index]).max() / u_scale
-    check(du <= 1e-9, f"crossing = one gap: displacement to {du:.3g} of the largest")
-    ds = np.abs(two["stress"] - one["stress"]).max() / np.abs(one["stress"]).max()
-    check(ds <= 1e-9, f"crossing = one gap: stress to {ds:.3g} of the largest")
-    vm = np.abs(two["von_mises_stress"] / (0.5 * SIGMA) - 1).max()
-    check(vm <= 1e-6, f"crossing: von Mises stress 2.288e7 Pa to {vm:.3g}")
-    trace = two["stress"][:, 0] + two["stress"][:, 1] + two["stress"][:, 2]
-    tr = np.abs(trace / -SIGMA - 1).max()
-    check(tr <= 1e-6, f"crossing: trace -4.576e7 Pa to {tr:.3g}")
-    p = np.abs(two["contact_pressure"][on_gap] / (0.5 * SIGMA) - 1).max()
-    check(p <= 1e-6, f"crossing: contact_pressure 2.288e7 Pa to {p:.3g}")
+    u_scale = np.abs(two["displacement"]).max()
     g = np.abs(two["gap_opening"][on_gap]).max() / u_scale
     check(g <= 1e-9, f"crossing: gap_opening 0 to {g:.3g} of the largest displacement")
 
@@ -150,15 +128,6 @@ def main():
     check(pairs == [36, 36, 36], f"crossing3: pairs per gap {pairs}")
     on_gap = ~np.isnan(three["contact_pressure"])
     check(np.all(three["contact_active"][on_gap] == 1.0), "crossing3: every gap node in contact")
-    s = three["stress"]
-    diagonal = np.abs(s[:, :3] / -SIGMA - 1).max()
-    check(diagonal <= 1e-6, f"crossing3: sigma_ii = -4.576e7 Pa to {diagonal:.3g}")
-    shear = np.abs(s[:, 3:]).max() / SIGMA
-    check(shear <= 1e-6, f"crossing3: shear stress 0 to {shear:.3g}")
-    p = np.abs(three["contact_pressure"][on_gap] / SIGMA - 1).max()
-    check(p <= 1e-6, f"crossing3: contact_pressure 4.576e7 Pa to {p:.3g}")
-    u = np.abs(three["displacement"]).max() / (2.2e-5 * 10.0 * 0.02)
-    check(u <= 1e-6, f"crossing3: |u| to {u:.3g} of alpha dT L/2")
     return 1 if failed else 0
 
 
