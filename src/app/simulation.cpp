@@ -421,7 +421,10 @@ std::string Simulation::earlier_results_file() const
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
   // name), else BASE.h5.
   const std::string base = outputs_->file_base();
-  if (std::filesystem::exists(base + ".running.h5"))
+  const bool cut_off = std::filesystem::exists(base + ".running.h5");
+  if (cut_off || std::filesystem::exists(base + ".h5"))
+    check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
+  if (cut_off)
   {
     const std::string moved = base + ".interrupted.h5";
     if (comm_->getRank() == 0)
@@ -436,6 +439,24 @@ std::string Simulation::earlier_results_file() const
   *out_ << "warning: " << base
         << ".h5 (the earlier run's results) is missing; the results start at the restart\n";
   return "";
+}
+
+void Simulation::check_same_run(const std::string &results) const
+{
+  // Every rank reads the attribute of the same file: the check gives one answer.
+  const std::string theirs = results_run_fingerprint(results);
+  const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
+  KILN_CHECK_INPUT(theirs == ours, results,
+                   (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
+                                     "it cannot be shown to belong to the run of the checkpoint "
+                                   : "was written by another run (run fingerprint " + theirs +
+                                         ") than the checkpoint ")
+                       << restart_ << " (run fingerprint " << ours
+                       << ": its mesh, physics and initial state): the restart would append to "
+                          "the results of another run, and nothing was written. Restart with "
+                          "that run's checkpoint, give the checkpoint's run its own "
+                          "Kiln/Output/\"File Base\", or move "
+                       << results << " aside (the results then start at the restart)");
 }
 
 int Simulation::continue_results(const std::string &source, const double time)
@@ -474,7 +495,7 @@ void Simulation::open_results(const int first_gap_step)
   text.resize(static_cast<std::size_t>(length));
   Teuchos::broadcast(*comm_, 0, length, text.data());
   const ResultsMetadata metadata{version_string, std::string(text.begin(), text.end()), input_path_,
-                                 input_xml_};
+                                 input_xml_, RunFingerprint::of(mesh_, layout_, params_).digest()};
   if (outputs_->writes_hdf5())
     writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
         mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));

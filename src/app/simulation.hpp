@@ -98,6 +98,9 @@ private:
   files_written(const std::string &checkpoint) const;
   /// The HDF5 results of the run a restart continues, or "" if there are none.
   std::string earlier_results_file() const;
+  /// Refuses (InputError naming both files) the earlier `results` if their run fingerprint is
+  /// not this run's, the checkpoint's: a restart appends only to its own run's results.
+  void check_same_run(const std::string &results) const;
   /// The earlier run's output steps in `source` up to `time` into this run's results;
   /// returns their number.
   int continue_results(const std::string &source, double time);

@@ -382,6 +382,19 @@ std::string RunFingerprint::difference(const RunFingerprint &saved) const
   return d.str();
 }
 
+std::string RunFingerprint::digest() const
+{
+  std::ostringstream all;
+  all << n_nodes << ' ' << n_cells << ' ' << n_pairs << ' ' << gap_side_set << ' ' << mesh_hash
+      << ' ' << layout;
+  for (const auto &[name, block] : physics)
+    all << '\n' << name << '\n' << block;
+  const std::string text = all.str();
+  std::ostringstream hex;
+  hex << std::hex << std::setw(16) << std::setfill('0') << fnv1a(text.data(), text.size());
+  return hex.str();
+}
+
 void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                       const CheckpointInfo &info, const RunFingerprint &fingerprint,
                       const Teuchos::Comm<int> &comm)

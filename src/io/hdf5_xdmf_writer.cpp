@@ -231,7 +231,8 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
                                {{"kiln_version", metadata.kiln_version},
                                 {"created", metadata.created},
                                 {"input_path", metadata.input_path},
-                                {"input", metadata.input}},
+                                {"input", metadata.input},
+                                {"run_fingerprint", metadata.run_fingerprint}},
                                "writing the run's metadata");
   impl_->write_mesh(mesh, owned_nodes, owned_cells, cell_rank);
   if (impl_->gap.n_points() > 0)

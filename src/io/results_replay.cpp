@@ -43,6 +43,33 @@ template <typename T> T read_attribute(const hid_t object, const char *name)
 } // namespace
 } // namespace internal
 
+std::string results_run_fingerprint(const std::string &path)
+{
+  using internal::H5Handle;
+  H5E_auto2_t old_function = nullptr;
+  void *old_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  std::string value;
+  {
+    const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    const H5Handle a(file.valid() && H5Aexists(file.get(), "run_fingerprint") > 0
+                         ? H5Aopen(file.get(), "run_fingerprint", H5P_DEFAULT)
+                         : H5I_INVALID_HID,
+                     H5Aclose);
+    const H5Handle type(a.valid() ? H5Aget_type(a.get()) : H5I_INVALID_HID, H5Tclose);
+    if (type.valid() && H5Tget_class(type.get()) == H5T_STRING &&
+        H5Tis_variable_str(type.get()) == 0)
+    {
+      std::string text(H5Tget_size(type.get()), '\0');
+      if (H5Aread(a.get(), type.get(), text.data()) >= 0)
+        value = text.substr(0, text.find('\0'));
+    }
+  }
+  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
+  return value;
+}
+
 int replay_results(const std::string &path, const double until, const ReplayRows &rows,
                    const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm)
 {

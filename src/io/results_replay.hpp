@@ -18,6 +18,11 @@ struct ReplayRows
   std::vector<int> owned_cells; ///< increasing
 };
 
+/// The attribute run_fingerprint of the HDF5 results file `path` (RunFingerprint::digest() of
+/// the run that wrote it), or "" if it has none (results of a Kiln before 0043) or cannot be
+/// read. Reads only; every rank reads the file.
+std::string results_run_fingerprint(const std::string &path);
+
 /// Writes every output step of the HDF5 results file `path` (an earlier run of the same mesh)
 /// up to the time `until` [s] into each of `writers`, with the earlier step's time, cycle, dt
 /// and fields. Returns the number of steps. Throws InputError naming the file (on every rank)

@@ -12,6 +12,9 @@ struct ResultsMetadata
   std::string created;    ///< UTC, ISO 8601
   std::string input_path; ///< the input file
   std::string input;      ///< the input as given (XML)
+  /// RunFingerprint::digest() of the run (mesh, physics, start): a restart appends only to
+  /// results with its checkpoint's.
+  std::string run_fingerprint;
 };
 
 /// One results file, written step after step. While the run goes it has a temporary name

@@ -11,6 +11,7 @@
 #   results      the results' folder is a tmpfs smaller than the results
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
+#   fingerprint  a restart whose results were since written by another run: exit 1, both named
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -92,6 +93,31 @@ restart_end)
   [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
     fail "the results folder changed"
   echo "disk_full.sh $case: refused with exit 1, nothing written"
+  exit 0
+  ;;
+fingerprint)
+  # Run A keeps its checkpoint of step 3 aside; run B (another initial temperature, the same
+  # File Base) replaces results/steps.h5; A's restart must not append to B's results.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "run A"; }
+  cp results/steps.checkpoint-000003.h5 a3.h5
+  mkdir b # b/steps.xml: the default File Base, results/steps, as A's
+  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
+    "$here/steps.xml" > b/steps.xml
+  "$mpiexec" -np "$np" "$kiln" b/steps.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
+  before=$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart a3.h5 > run.log 2>&1; rc=$?
+  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
+  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
+  grep -q "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" run.log ||
+    { cat run.log; fail "no message naming both files"; }
+  [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
+    fail "the results folder changed"
+  # B's own restart appends to B's results.
+  "$mpiexec" -np "$np" "$kiln" b/steps.xml --restart results/steps.checkpoint-000003.h5 > same.log 2>&1 ||
+    { cat same.log; fail "the restart of the run that wrote the results"; }
+  grep -q "results: the 4 output steps up to t = 3 s of results/steps.h5 continue" same.log ||
+    { cat same.log; fail "B's restart did not continue B's results"; }
+  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
   exit 0
   ;;
 *) fail "unknown case" ;;
