@@ -287,7 +287,7 @@ Simulation::Ending Simulation::run()
     const std::string path = observer.checkpoint(state);
     std::ostringstream when;
     when << "stopped by an error at t = " << state.time << " s";
-    finish_results(when.str() + ": " + e.what());
+    finish_results(when.str() + ": " + e.what(), state.time);
     progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
           << outputs_->results_files(false) << " and " << path << "\n";
@@ -300,7 +300,7 @@ Simulation::Ending Simulation::run()
     std::ostringstream when;
     when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
          << " s";
-    finish_results(when.str() + "; continued by kiln --restart " + path);
+    finish_results(when.str() + "; continued by kiln --restart " + path, state.time);
     progress.summary(when.str(), state, files_written(path), *comm_);
     *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
           << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
@@ -308,7 +308,7 @@ Simulation::Ending Simulation::run()
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
-  finish_results("complete");
+  finish_results("complete", state.time);
   progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
   return Ending::finished;
 }
@@ -378,8 +378,9 @@ std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
 std::vector<std::pair<std::string, std::string>>
 Simulation::files_written(const std::string &checkpoint) const
 {
-  std::vector<std::pair<std::string, std::string>> files = {{"results", outputs_->results_files()},
-                                                            {"history", outputs_->history_path()}};
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"results", results_aside_.empty() ? outputs_->results_files() : results_aside_},
+      {"history", outputs_->history_path()}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
     const int n = gap_tables_->next_step() - first_gap_step_;
@@ -416,7 +417,7 @@ TimeStepper::State Simulation::resume()
   return c.state;
 }
 
-std::string Simulation::earlier_results_file() const
+std::string Simulation::earlier_results_file()
 {
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
   // name), else BASE.h5.
@@ -424,6 +425,13 @@ std::string Simulation::earlier_results_file() const
   const bool cut_off = std::filesystem::exists(base + ".running.h5");
   if (cut_off || std::filesystem::exists(base + ".h5"))
     check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
+  // The complete results of the run continued stay until this run has passed them.
+  if (std::filesystem::exists(base + ".h5"))
+  {
+    const ResultsSummary earlier = results_summary(base + ".h5");
+    if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
+      kept_results_end_ = earlier.end_time;
+  }
   if (cut_off)
   {
     const std::string moved = base + ".interrupted.h5";
@@ -444,7 +452,7 @@ std::string Simulation::earlier_results_file() const
 void Simulation::check_same_run(const std::string &results) const
 {
   // Every rank reads the attribute of the same file: the check gives one answer.
-  const std::string theirs = results_run_fingerprint(results);
+  const std::string theirs = results_summary(results).run_fingerprint;
   const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
   KILN_CHECK_INPUT(theirs == ours, results,
                    (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
@@ -475,8 +483,25 @@ int Simulation::continue_results(const std::string &source, const double time)
   return n;
 }
 
-void Simulation::finish_results(const std::string &status)
+void Simulation::finish_results(const std::string &status, const double time)
 {
+  if (time < kept_results_end_ * (1.0 - 1e-12) - 1e-12)
+  {
+    // A restart that stopped before it passed the results of the run it continued: those
+    // stay whole under BASE, and this run's go beside them.
+    const std::string base = outputs_->file_base();
+    const std::string aside = base + ".restarted";
+    results_aside_ = outputs_->results_files();
+    for (std::size_t at = 0; (at = results_aside_.find(base + ".", at)) != std::string::npos;
+         at += aside.size() + 1)
+      results_aside_.replace(at, base.size(), aside);
+    for (const auto &writer : writers_)
+      writer->set_final_base(aside);
+    *out_ << "results: " << outputs_->results_files(false)
+          << " of the run continued (to t = " << kept_results_end_
+          << " s) are kept whole, as this run stopped at t = " << time
+          << " s, before it passed them; this run's results are in " << results_aside_ << "\n";
+  }
   for (const auto &writer : writers_)
     writer->finish(status);
 }

@@ -334,6 +334,11 @@ void Hdf5XdmfWriter::finish(const std::string &status)
   finished_h5_ = m.base + ".h5";
 }
 
+void Hdf5XdmfWriter::set_final_base(const std::string &final_base)
+{
+  impl_->base = final_base;
+}
+
 std::string Hdf5XdmfWriter::h5_path() const
 {
   return finished_h5_.empty() ? impl_->file.path() : finished_h5_;

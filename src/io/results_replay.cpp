@@ -6,8 +6,10 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace kiln
@@ -43,14 +45,14 @@ template <typename T> T read_attribute(const hid_t object, const char *name)
 } // namespace
 } // namespace internal
 
-std::string results_run_fingerprint(const std::string &path)
+ResultsSummary results_summary(const std::string &path)
 {
   using internal::H5Handle;
   H5E_auto2_t old_function = nullptr;
   void *old_data = nullptr;
   H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  std::string value;
+  ResultsSummary summary{"", -std::numeric_limits<double>::infinity()};
   {
     const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     const H5Handle a(file.valid() && H5Aexists(file.get(), "run_fingerprint") > 0
@@ -63,11 +65,25 @@ std::string results_run_fingerprint(const std::string &path)
     {
       std::string text(H5Tget_size(type.get()), '\0');
       if (H5Aread(a.get(), type.get(), text.data()) >= 0)
-        value = text.substr(0, text.find('\0'));
+        summary.run_fingerprint = text.substr(0, text.find('\0'));
     }
+    const H5Handle all(file.valid() ? H5Gopen2(file.get(), "steps", H5P_DEFAULT) : H5I_INVALID_HID,
+                       H5Gclose);
+    if (all.valid())
+      for (const std::string &name : internal::links_of(all.get()))
+        try
+        {
+          const H5Handle group(H5Gopen2(all.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+          summary.end_time =
+              std::max(summary.end_time, internal::read_attribute<double>(group.get(), "time"));
+        }
+        catch (const std::runtime_error &)
+        {
+          // A step without its time (cut off while it was begun) ends nothing.
+        }
   }
   H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
-  return value;
+  return summary;
 }
 
 int replay_results(const std::string &path, const double until, const ReplayRows &rows,

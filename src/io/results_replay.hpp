@@ -18,10 +18,18 @@ struct ReplayRows
   std::vector<int> owned_cells; ///< increasing
 };
 
-/// The attribute run_fingerprint of the HDF5 results file `path` (RunFingerprint::digest() of
-/// the run that wrote it), or "" if it has none (results of a Kiln before 0043) or cannot be
-/// read. Reads only; every rank reads the file.
-std::string results_run_fingerprint(const std::string &path);
+/// What a restart needs to know of the earlier HDF5 results before it touches them.
+struct ResultsSummary
+{
+  /// The attribute run_fingerprint (RunFingerprint::digest() of the run that wrote them), or ""
+  /// if they have none (results of a Kiln before 0043) or cannot be read.
+  std::string run_fingerprint;
+  /// The time of their last output step [s] (-infinity if none).
+  double end_time = 0.0;
+};
+
+/// The summary of the HDF5 results file `path`. Reads only; every rank reads the file.
+ResultsSummary results_summary(const std::string &path);
 
 /// Writes every output step of the HDF5 results file `path` (an earlier run of the same mesh)
 /// up to the time `until` [s] into each of `writers`, with the earlier step's time, cycle, dt

@@ -41,5 +41,8 @@ public:
   /// Records `status` ("complete", or why the run stopped) and renames the files to their
   /// final names; nothing can be written after.
   virtual void finish(const std::string &status) = 0;
+  /// Makes finish() name the files `final_base`.* instead of the base they were opened with
+  /// (a restart that stops short of the earlier run's results keeps those under BASE).
+  virtual void set_final_base(const std::string & /*final_base*/) {}
 };
 } // namespace kiln

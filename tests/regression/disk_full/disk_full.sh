@@ -12,6 +12,7 @@
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
+#   restart_fails  a restart that fails before it passes the earlier results keeps them whole
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -118,6 +119,27 @@ fingerprint)
   grep -q "results: the 4 output steps up to t = 3 s of results/steps.h5 continue" same.log ||
     { cat same.log; fail "B's restart did not continue B's results"; }
   echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
+  exit 0
+  ;;
+restart_fails)
+  # The complete run (outputs at 0..6 s), then a restart from step 3 that fails at 5 s (an
+  # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
+  # the restart's results go beside it, and a restart from its checkpoint completes the series.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  before=$(md5sum results/steps.h5 results/steps.xmf)
+  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="5"/>\n  </ParameterList>\n  &|' \
+    "$here/steps.xml" > steps.xml
+  "$mpiexec" -np "$np" "$kiln" steps.xml --restart results/steps.checkpoint-000003.h5 > run.log 2>&1; rc=$?
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  grep -q "results: results/steps.h5 of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf" run.log ||
+    { cat run.log; fail "no message keeping the earlier results"; }
+  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf)" ] || fail "the earlier results changed"
+  [ "$(h5ls results/steps.restarted.h5/steps | wc -l)" = 5 ] || { h5ls results/steps.restarted.h5/steps; fail "the restart's results do not hold 0..4 s"; }
+  grep -q 'steps.restarted.h5:/steps' results/steps.restarted.xmf || fail "the restart's index does not name its file"
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > again.log 2>&1 ||
+    { cat again.log; fail "the restart from the failed run's checkpoint"; }
+  [ "$(h5ls results/steps.h5/steps | wc -l)" = 7 ] || { h5ls results/steps.h5/steps; fail "the completed results do not hold 0..6 s"; }
+  echo "disk_full.sh $case: the earlier results kept whole; the restart's beside them; the series completed"
   exit 0
   ;;
 *) fail "unknown case" ;;
