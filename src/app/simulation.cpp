@@ -11,6 +11,7 @@
 #include "base/parameters.hpp"
 #include "base/stop_request.hpp"
 #include "io/checkpoint.hpp"
+#include "io/exodus_results_replay.hpp"
 #include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
 #include "io/gap_csv_writer.hpp"
@@ -420,13 +421,15 @@ TimeStepper::State Simulation::resume()
 std::string Simulation::earlier_results_file()
 {
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
-  // name), else BASE.h5.
+  // name), else BASE.h5; with Exodus output only, the same of BASE.exo.
   const std::string base = outputs_->file_base();
-  const bool cut_off = std::filesystem::exists(base + ".running.h5");
-  if (cut_off || std::filesystem::exists(base + ".h5"))
+  const bool hdf5 = outputs_->writes_hdf5();
+  const std::string extension = hdf5 ? ".h5" : ".exo";
+  const bool cut_off = std::filesystem::exists(base + ".running" + extension);
+  if (hdf5 && (cut_off || std::filesystem::exists(base + ".h5")))
     check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
   // The complete results of the run continued stay until this run has passed them.
-  if (std::filesystem::exists(base + ".h5"))
+  if (hdf5 && std::filesystem::exists(base + ".h5"))
   {
     const ResultsSummary earlier = results_summary(base + ".h5");
     if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
@@ -434,18 +437,18 @@ std::string Simulation::earlier_results_file()
   }
   if (cut_off)
   {
-    const std::string moved = base + ".interrupted.h5";
+    const std::string moved = base + ".interrupted" + extension;
     if (comm_->getRank() == 0)
-      std::filesystem::rename(base + ".running.h5", moved);
+      std::filesystem::rename(base + ".running" + extension, moved);
     comm_->barrier();
-    *out_ << "results: " << base << ".running.h5 of a run that was cut off is kept as " << moved
-          << "\n";
+    *out_ << "results: " << base << ".running" << extension
+          << " of a run that was cut off is kept as " << moved << "\n";
     return moved;
   }
-  if (std::filesystem::exists(base + ".h5"))
-    return base + ".h5";
-  *out_ << "warning: " << base
-        << ".h5 (the earlier run's results) is missing; the results start at the restart\n";
+  if (std::filesystem::exists(base + extension))
+    return base + extension;
+  *out_ << "warning: " << base << extension
+        << " (the earlier run's results) is missing; the results start at the restart\n";
   return "";
 }
 
@@ -472,9 +475,11 @@ int Simulation::continue_results(const std::string &source, const double time)
   std::vector<ResultsWriter *> writers;
   for (const auto &w : writers_)
     writers.push_back(w.get());
-  const int n = replay_results(
-      source, time, {mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells()},
-      writers, *comm_);
+  const ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(),
+                        dofs_->owned_cells()};
+  const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
+  const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
+                       : replay_results(source, time, rows, writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
         << " continue in " << outputs_->results_files(false) << "\n";
   if (n != restart_output_steps_)

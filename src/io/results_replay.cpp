@@ -45,6 +45,27 @@ template <typename T> T read_attribute(const hid_t object, const char *name)
 } // namespace
 } // namespace internal
 
+int internal::write_replayed(const std::string &path, const std::string &error,
+                             const std::vector<ReplayStep> &steps,
+                             const std::vector<ResultsWriter *> &writers,
+                             const Teuchos::Comm<int> &comm)
+{
+  check_collectively(comm, error.empty(), path,
+                     "cannot continue the results of the earlier run from this file: " + error);
+  for (const ReplayStep &step : steps)
+    for (ResultsWriter *writer : writers)
+    {
+      writer->begin_step(step.time, step.cycle, step.dt);
+      for (const ReplayField &f : step.fields)
+        if (f.on_nodes)
+          writer->write_node_field(f.name, f.n_components, f.values);
+        else
+          writer->write_cell_field(f.name, f.n_components, f.values);
+      writer->end_step();
+    }
+  return static_cast<int>(steps.size());
+}
+
 ResultsSummary results_summary(const std::string &path)
 {
   using internal::H5Handle;
@@ -90,19 +111,8 @@ int replay_results(const std::string &path, const double until, const ReplayRows
                    const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm)
 {
   using internal::H5Handle;
-  struct Field
-  {
-    std::string name;
-    bool on_nodes;
-    int n_components;
-    std::vector<double> values; ///< this rank's rows
-  };
-  struct Step
-  {
-    double time, dt;
-    int cycle;
-    std::vector<Field> fields;
-  };
+  using Field = internal::ReplayField;
+  using Step = internal::ReplayStep;
   // Every rank reads the steps (serial HDF5, read-only), then each writes its rows.
   std::vector<Step> steps;
   std::string error;
@@ -167,19 +177,6 @@ int replay_results(const std::string &path, const double until, const ReplayRows
     error = e.what();
   }
   H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
-  check_collectively(comm, error.empty(), path,
-                     "cannot continue the results of the earlier run from this file: " + error);
-  for (const Step &step : steps)
-    for (ResultsWriter *writer : writers)
-    {
-      writer->begin_step(step.time, step.cycle, step.dt);
-      for (const Field &f : step.fields)
-        if (f.on_nodes)
-          writer->write_node_field(f.name, f.n_components, f.values);
-        else
-          writer->write_cell_field(f.name, f.n_components, f.values);
-      writer->end_step();
-    }
-  return static_cast<int>(steps.size());
+  return internal::write_replayed(path, error, steps, writers, comm);
 }
 } // namespace kiln

@@ -18,6 +18,30 @@ struct ReplayRows
   std::vector<int> owned_cells; ///< increasing
 };
 
+namespace internal
+{
+/// A field of an earlier output step: this rank's rows.
+struct ReplayField
+{
+  std::string name;
+  bool on_nodes;
+  int n_components;
+  std::vector<double> values;
+};
+/// An earlier output step.
+struct ReplayStep
+{
+  double time, dt;
+  int cycle;
+  std::vector<ReplayField> fields;
+};
+/// Checks (collectively) that the steps were read without `error` (else InputError naming
+/// `path`), then writes them into each of `writers`; returns their number. Collective.
+int write_replayed(const std::string &path, const std::string &error,
+                   const std::vector<ReplayStep> &steps,
+                   const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm);
+} // namespace internal
+
 /// What a restart needs to know of the earlier HDF5 results before it touches them.
 struct ResultsSummary
 {

@@ -13,6 +13,7 @@
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
 #   restart_fails  a restart that fails before it passes the earlier results keeps them whole
+#   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -46,6 +47,16 @@ check_failure() { # FILE REASON: the run failed as it should, naming FILE and RE
     { cat run.log; fail "HDF5's stack, a crash or an abort in the log"; }
   ls core* 2>/dev/null && fail "a core dump"
   true
+}
+folder_state() { ls -l --time-style=full-iso results | md5sum; md5sum results/*; }
+check_refused() { # DECK CHECKPOINT MESSAGE WHAT: the restart is refused (exit 1, one line
+  # matching MESSAGE) and the results folder is unchanged
+  local before; before=$(folder_state)
+  "$mpiexec" -np "$np" "$kiln" "$1" --restart "$2" > run.log 2>&1; rc=$?
+  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
+  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
+  grep -q "$3" run.log || { cat run.log; fail "no message $4"; }
+  [ "$before" = "$(folder_state)" ] || fail "the results folder changed"
 }
 restart_from() { # CHECKPOINT STEP: it is readable, and a restart from it completes
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart "$1" > restart.log 2>&1 ||
@@ -85,14 +96,9 @@ ulimit)
 restart_end)
   # A restart from the checkpoint at the end time (6 s): nothing to compute, nothing written.
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
-  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
-  grep -q "kiln: error: results/steps.checkpoint.h5: the checkpoint's time, t = 6 s, is at or past the end of this run, the last output time 6 s: there is nothing left to compute, and nothing was written" run.log ||
-    { cat run.log; fail "no message saying the checkpoint is at the end"; }
-  [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
-    fail "the results folder changed"
+  check_refused "$here/steps.xml" results/steps.checkpoint.h5 \
+    "kiln: error: results/steps.checkpoint.h5: the checkpoint's time, t = 6 s, is at or past the end of this run, the last output time 6 s: there is nothing left to compute, and nothing was written" \
+    "saying the checkpoint is at the end"
   echo "disk_full.sh $case: refused with exit 1, nothing written"
   exit 0
   ;;
@@ -105,14 +111,9 @@ fingerprint)
   sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
     "$here/steps.xml" > b/steps.xml
   "$mpiexec" -np "$np" "$kiln" b/steps.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
-  before=$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart a3.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
-  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
-  grep -q "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" run.log ||
-    { cat run.log; fail "no message naming both files"; }
-  [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
-    fail "the results folder changed"
+  check_refused "$here/steps.xml" a3.h5 \
+    "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
+    "naming both files"
   # B's own restart appends to B's results.
   "$mpiexec" -np "$np" "$kiln" b/steps.xml --restart results/steps.checkpoint-000003.h5 > same.log 2>&1 ||
     { cat same.log; fail "the restart of the run that wrote the results"; }
@@ -140,6 +141,20 @@ restart_fails)
     { cat again.log; fail "the restart from the failed run's checkpoint"; }
   [ "$(h5ls results/steps.h5/steps | wc -l)" = 7 ] || { h5ls results/steps.h5/steps; fail "the completed results do not hold 0..6 s"; }
   echo "disk_full.sh $case: the earlier results kept whole; the restart's beside them; the series completed"
+  exit 0
+  ;;
+exodus_restart)
+  # A thermo-elastic run (vectors, tensors, cell fields) to 3 s, then a restart from 1 s: the
+  # .exo holds 0..3 s, equal to the uninterrupted run's (but the wall time).
+  deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  cp results/exodus_only.exo whole.exo
+  "$mpiexec" -np "$np" "$kiln" "$deck" --restart results/exodus_only.checkpoint-000001.h5 > run.log 2>&1 ||
+    { cat run.log; fail "the restart"; }
+  grep -q "results: the 2 output steps up to t = 1 s of results/exodus_only.exo continue in results/exodus_only.exo" run.log ||
+    { cat run.log; fail "the restart did not continue the .exo"; }
+  "${PYTHON:-/usr/bin/python3}" "$here/same_exodus.py" whole.exo results/exodus_only.exo || fail "the continued .exo differs from the whole run's"
+  echo "disk_full.sh $case: the restart continued the .exo series, equal to the whole run's"
   exit 0
   ;;
 *) fail "unknown case" ;;
