@@ -206,6 +206,22 @@ void Simulation::check()
                           << " would overwrite the results " << outputs_->file_base()
                           << ".h5. Give the checkpoints another base, or leave it \"\" for "
                           << outputs_->file_base() << ".checkpoint");
+  // A Checkpoint/File Base of its own shared in turn: another run's checkpoints there are not
+  // overwritten (a restart of the run that wrote them, or a rerun of it, goes on).
+  if (checkpoints.base() != outputs_->file_base() + ".checkpoint" &&
+      std::filesystem::exists(checkpoints.latest_path()))
+  {
+    const std::string theirs = results_summary(checkpoints.latest_path()).run_fingerprint;
+    const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
+    KILN_CHECK_INPUT(theirs == ours, parameter_path(input_path_, "Kiln/Checkpoint", "File Base"),
+                     "= \"" << checkpoints.base() << "\": " << checkpoints.latest_path()
+                            << " holds the checkpoints of another run (run fingerprint "
+                            << (theirs.empty() ? "none" : theirs) << ", this run's " << ours
+                            << ": another mesh, physics or initial state), which this run would "
+                               "overwrite. Give this run a Checkpoint/File Base of its own, or "
+                               "remove "
+                            << checkpoints.base() << "*.h5 if they are no longer needed");
+  }
   const auto &times = params_.sublist("Checkpoint").get<Teuchos::Array<double>>("Times");
   for (int i = 0; i < times.size(); ++i)
     KILN_CHECK_INPUT(times[i] <= outputs_->end_time() * (1.0 + 1e-12),

@@ -436,6 +436,8 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
         write_attribute(file, "kiln_version", info.kiln_version);
         write_attribute(file, "created", info.created);
         write_attribute(file, "input_path", info.input_path);
+        // As the results carry it: which run wrote the file, without reading the fingerprint.
+        write_attribute(file, "run_fingerprint", fingerprint.digest());
         write_string(file, "input", info.input_xml);
 
         const H5 print(H5Gcreate2(file, "fingerprint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
