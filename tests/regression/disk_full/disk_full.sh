@@ -14,6 +14,8 @@
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
 #   restart_fails  a restart that fails before it passes the earlier results keeps them whole
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
+#   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
+#   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -83,6 +85,25 @@ results)
   "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
   check_failure "small/steps.running.h5" "No space left on device"
   restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+exodus_results)
+  # The .exo takes 133 kB, its mesh 50 kB, a step 12 kB; each step wants room for twice the
+  # largest step (the first: a quarter of the mesh's bytes) and 16 KiB: the mesh and the
+  # first steps fit, not all.
+  mount_small 100k
+  deck small/steps big/steps
+  sed -i 's|<ParameterList name="Output">|&\n    <Parameter name="Format" type="string" value="Exodus"/>|' run.xml
+  "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
+  check_failure "small/steps.running.exo: the next step cannot be written" "No space left on device"
+  restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+exodus_ulimit)
+  deck big/steps big/ckpt
+  sed -i 's|<ParameterList name="Output">|&\n    <Parameter name="Format" type="string" value="Exodus"/>|' run.xml
+  # 100 KiB: room for the mesh and the first steps (as above), not for all.
+  "$mpiexec" -np "$np" bash -c "ulimit -f 100 && exec $kiln run.xml" > run.log 2>&1; rc=$?
+  check_failure "big/steps.running.exo: the next step cannot be written" "File too large"
+  restart_from big/ckpt.h5 "$(ls big/ckpt-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
   ;;
 ulimit)
   # The checkpoints' base differs from the results' (the same base is refused at --check).
