@@ -1,5 +1,7 @@
 #include "io/write_room.hpp"
 
+#include "base/errors.hpp"
+
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 
@@ -44,6 +46,14 @@ std::string write_failure_advice()
 bool is_write_failure(const int error)
 {
   return error == ENOSPC || error == EFBIG || error == EDQUOT || error == EIO;
+}
+
+void check_text_write(const bool ok, const int error, const std::string &path,
+                      const std::string &what)
+{
+  if (!ok && is_write_failure(error))
+    throw WriteError(path + ": cannot write " + what + " (" + std::strerror(error) + "); " +
+                     write_failure_advice());
 }
 } // namespace internal
 } // namespace kiln

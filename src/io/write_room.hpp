@@ -18,5 +18,10 @@ std::string write_failure_advice();
 /// True for an errno that says the disk or the file may not grow (ENOSPC, EFBIG, EDQUOT, EIO):
 /// a WriteError, not a mistake in the input.
 bool is_write_failure(int error);
+
+/// After writing `what` to the text file `path` (ok: it went well; `error`: errno after it):
+/// a failure of the disk or the file-size limit throws a WriteError naming both and the
+/// system's reason; other failures are left to the caller.
+void check_text_write(bool ok, int error, const std::string &path, const std::string &what);
 } // namespace internal
 } // namespace kiln

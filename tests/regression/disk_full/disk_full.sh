@@ -16,6 +16,7 @@
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
 #   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
+#   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -96,6 +97,22 @@ exodus_results)
   "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
   check_failure "small/steps.running.exo: the next step cannot be written" "No space left on device"
   restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+csv_full)
+  # The CSV writers on a full device: /dev/full (every write fails with ENOSPC) in place of the
+  # temporary file of the gap table of output step 2, then of the time history.
+  mkdir results
+  ln -s /dev/full results/exodus_only.gap-000002.csv.tmp
+  "$mpiexec" -np "$np" "$kiln" "$here/exodus_only.xml" > run.log 2>&1; rc=$?
+  check_failure "results/exodus_only.gap-000002.csv: cannot write the gap table" "No space left on device"
+  [ -s results/exodus_only.gap-000001.csv ] && [ ! -e results/exodus_only.gap-000002.csv ] ||
+    fail "the gap tables before are not kept, or a partial one is left"
+  rm -rf results && mkdir results
+  ln -s /dev/full results/exodus_only.history.csv.tmp
+  "$mpiexec" -np "$np" "$kiln" "$here/exodus_only.xml" > run.log 2>&1; rc=$?
+  check_failure "results/exodus_only.history.csv: cannot write the time history" "No space left on device"
+  echo "disk_full.sh $case: exit 2 on every rank, one message naming the table and the system's reason"
+  exit 0
   ;;
 exodus_ulimit)
   deck big/steps big/ckpt
