@@ -17,6 +17,7 @@
 #   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 #   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
+#   killed       a run killed with SIGKILL mid-run: its results readable to the last complete step
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -97,6 +98,29 @@ exodus_results)
   "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
   check_failure "small/steps.running.exo: the next step cannot be written" "No space left on device"
   restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+killed)
+  # Many steps (an output after each), killed with SIGKILL after step 20 on every rank: the
+  # index BASE.running.xmf and BASE.running.h5 hold complete steps (complete_steps.py).
+  sed -e 's|value="{0, 1, 2, 3, 4, 5, 6}"|value="{0, 1000}"/><Parameter name="Every Steps" type="int" value="1"|' \
+      "$here/steps.xml" > long.xml
+  grep -q 'value="{0, 1000}"' long.xml || fail "could not make the long deck"
+  "$mpiexec" -np "$np" "$kiln" long.xml > run.log 2>&1 &
+  pid=$!
+  for _ in $(seq 600); do
+    grep -q "^step 20:" run.log && break
+    sleep 0.1
+  done
+  grep -q "^step 20:" run.log || { kill -KILL $pid; cat run.log; fail "the run did not reach step 20"; }
+  ranks=$(pgrep -P $pid) # the ranks, mpiexec's children: killed, no clean stop
+  [ -n "$ranks" ] || { kill -KILL $pid; fail "no ranks under mpiexec $pid"; }
+  kill -KILL $ranks
+  wait $pid 2>/dev/null
+  grep -q "^complete" run.log && fail "the run was not killed"
+  "${PYTHON:-/usr/bin/python3}" "$here/complete_steps.py" results/long.running.xmf ||
+    fail "the killed run's results are not complete up to their last step"
+  echo "disk_full.sh $case: the results of the killed run readable and complete to their last step"
+  exit 0
   ;;
 csv_full)
   # The CSV writers on a full device: /dev/full (every write fails with ENOSPC) in place of the
