@@ -117,9 +117,10 @@ std::uintmax_t ParallelHdf5File::size() const
 
 void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
 {
-  int rank = 0;
-  MPI_Comm_rank(comm_, &rank);
-  const std::string shortfall = rank == 0 ? room_shortfall(path_, bytes) : std::string();
+  // Every rank: the ranks' file-size limits (and, on several nodes, their views of the disk)
+  // may differ, and a write that fails on one rank only inside a collective HDF5 call leaves
+  // HDF5's ranks in different collectives: the run hangs.
+  const std::string shortfall = room_shortfall(path_, bytes);
   const Teuchos::MpiComm<int> comm(comm_);
   check_write_collectively(comm, shortfall.empty(), path_,
                            "the next step cannot be written (" + shortfall + "); " +

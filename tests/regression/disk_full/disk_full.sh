@@ -18,6 +18,8 @@
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 #   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
 #   killed       a run killed with SIGKILL mid-run: its results readable to the last complete step
+#   ulimit_one_rank  a file-size limit on the last rank only (a write that fails on one rank
+#                only inside HDF5 hung the run): ends within 30 s, as a full disk
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -98,6 +100,17 @@ exodus_results)
   "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
   check_failure "small/steps.running.exo: the next step cannot be written" "No space left on device"
   restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+ulimit_one_rank)
+  deck big/steps big/ckpt
+  # 120 KiB on the last rank only (MPMD): the mesh fits; a step's writes failed on that rank
+  # alone, inside HDF5's collective flush, and the ranks hung in different collectives.
+  # The room check on every rank now ends it before the first step (no checkpoint yet).
+  timeout 30 "$mpiexec" -np $((np - 1)) "$kiln" run.xml : -np 1 bash -c "ulimit -f 120 && exec $kiln run.xml" > run.log 2>&1; rc=$?
+  [ "$rc" = 124 ] && { cat run.log; fail "the run hung (killed after 30 s)"; }
+  check_failure "big/steps.running.h5: the next step cannot be written" "File too large"
+  echo "disk_full.sh $case: exit 2 on every rank, one message, no hang"
+  exit 0
   ;;
 killed)
   # Many steps (an output after each), killed with SIGKILL after step 20 on every rank: the
