@@ -11,6 +11,7 @@
 #include "base/parameters.hpp"
 #include "base/stop_request.hpp"
 #include "io/checkpoint.hpp"
+#include "io/exodus_results_replay.hpp"
 #include "io/exodus_results_writer.hpp"
 #include "io/field_output.hpp"
 #include "io/gap_csv_writer.hpp"
@@ -205,6 +206,22 @@ void Simulation::check()
                           << " would overwrite the results " << outputs_->file_base()
                           << ".h5. Give the checkpoints another base, or leave it \"\" for "
                           << outputs_->file_base() << ".checkpoint");
+  // A Checkpoint/File Base of its own shared in turn: another run's checkpoints there are not
+  // overwritten (a restart of the run that wrote them, or a rerun of it, goes on).
+  if (checkpoints.base() != outputs_->file_base() + ".checkpoint" &&
+      std::filesystem::exists(checkpoints.latest_path()))
+  {
+    const std::string theirs = results_summary(checkpoints.latest_path()).run_fingerprint;
+    const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
+    KILN_CHECK_INPUT(theirs == ours, parameter_path(input_path_, "Kiln/Checkpoint", "File Base"),
+                     "= \"" << checkpoints.base() << "\": " << checkpoints.latest_path()
+                            << " holds the checkpoints of another run (run fingerprint "
+                            << (theirs.empty() ? "none" : theirs) << ", this run's " << ours
+                            << ": another mesh, physics or initial state), which this run would "
+                               "overwrite. Give this run a Checkpoint/File Base of its own, or "
+                               "remove "
+                            << checkpoints.base() << "*.h5 if they are no longer needed");
+  }
   const auto &times = params_.sublist("Checkpoint").get<Teuchos::Array<double>>("Times");
   for (int i = 0; i < times.size(); ++i)
     KILN_CHECK_INPUT(times[i] <= outputs_->end_time() * (1.0 + 1e-12),
@@ -287,7 +304,7 @@ Simulation::Ending Simulation::run()
     const std::string path = observer.checkpoint(state);
     std::ostringstream when;
     when << "stopped by an error at t = " << state.time << " s";
-    finish_results(when.str() + ": " + e.what());
+    finish_results(when.str() + ": " + e.what(), state.time);
     progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
           << outputs_->results_files(false) << " and " << path << "\n";
@@ -300,7 +317,7 @@ Simulation::Ending Simulation::run()
     std::ostringstream when;
     when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
          << " s";
-    finish_results(when.str() + "; continued by kiln --restart " + path);
+    finish_results(when.str() + "; continued by kiln --restart " + path, state.time);
     progress.summary(when.str(), state, files_written(path), *comm_);
     *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
           << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
@@ -308,7 +325,7 @@ Simulation::Ending Simulation::run()
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
-  finish_results("complete");
+  finish_results("complete", state.time);
   progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
   return Ending::finished;
 }
@@ -378,8 +395,9 @@ std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
 std::vector<std::pair<std::string, std::string>>
 Simulation::files_written(const std::string &checkpoint) const
 {
-  std::vector<std::pair<std::string, std::string>> files = {{"results", outputs_->results_files()},
-                                                            {"history", outputs_->history_path()}};
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"results", results_aside_.empty() ? outputs_->results_files() : results_aside_},
+      {"history", outputs_->history_path()}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
     const int n = gap_tables_->next_step() - first_gap_step_;
@@ -416,26 +434,56 @@ TimeStepper::State Simulation::resume()
   return c.state;
 }
 
-std::string Simulation::earlier_results_file() const
+std::string Simulation::earlier_results_file()
 {
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
-  // name), else BASE.h5.
+  // name), else BASE.h5; with Exodus output only, the same of BASE.exo.
   const std::string base = outputs_->file_base();
-  if (std::filesystem::exists(base + ".running.h5"))
+  const bool hdf5 = outputs_->writes_hdf5();
+  const std::string extension = hdf5 ? ".h5" : ".exo";
+  const bool cut_off = std::filesystem::exists(base + ".running" + extension);
+  if (hdf5 && (cut_off || std::filesystem::exists(base + ".h5")))
+    check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
+  // The complete results of the run continued stay until this run has passed them.
+  if (hdf5 && std::filesystem::exists(base + ".h5"))
   {
-    const std::string moved = base + ".interrupted.h5";
+    const ResultsSummary earlier = results_summary(base + ".h5");
+    if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
+      kept_results_end_ = earlier.end_time;
+  }
+  if (cut_off)
+  {
+    const std::string moved = base + ".interrupted" + extension;
     if (comm_->getRank() == 0)
-      std::filesystem::rename(base + ".running.h5", moved);
+      std::filesystem::rename(base + ".running" + extension, moved);
     comm_->barrier();
-    *out_ << "results: " << base << ".running.h5 of a run that was cut off is kept as " << moved
-          << "\n";
+    *out_ << "results: " << base << ".running" << extension
+          << " of a run that was cut off is kept as " << moved << "\n";
     return moved;
   }
-  if (std::filesystem::exists(base + ".h5"))
-    return base + ".h5";
-  *out_ << "warning: " << base
-        << ".h5 (the earlier run's results) is missing; the results start at the restart\n";
+  if (std::filesystem::exists(base + extension))
+    return base + extension;
+  *out_ << "warning: " << base << extension
+        << " (the earlier run's results) is missing; the results start at the restart\n";
   return "";
+}
+
+void Simulation::check_same_run(const std::string &results) const
+{
+  // Every rank reads the attribute of the same file: the check gives one answer.
+  const std::string theirs = results_summary(results).run_fingerprint;
+  const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
+  KILN_CHECK_INPUT(theirs == ours, results,
+                   (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
+                                     "it cannot be shown to belong to the run of the checkpoint "
+                                   : "was written by another run (run fingerprint " + theirs +
+                                         ") than the checkpoint ")
+                       << restart_ << " (run fingerprint " << ours
+                       << ": its mesh, physics and initial state): the restart would append to "
+                          "the results of another run, and nothing was written. Restart with "
+                          "that run's checkpoint, give the checkpoint's run its own "
+                          "Kiln/Output/\"File Base\", or move "
+                       << results << " aside (the results then start at the restart)");
 }
 
 int Simulation::continue_results(const std::string &source, const double time)
@@ -443,9 +491,11 @@ int Simulation::continue_results(const std::string &source, const double time)
   std::vector<ResultsWriter *> writers;
   for (const auto &w : writers_)
     writers.push_back(w.get());
-  const int n = replay_results(
-      source, time, {mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells()},
-      writers, *comm_);
+  const ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(),
+                        dofs_->owned_cells()};
+  const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
+  const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
+                       : replay_results(source, time, rows, writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
         << " continue in " << outputs_->results_files(false) << "\n";
   if (n != restart_output_steps_)
@@ -454,8 +504,25 @@ int Simulation::continue_results(const std::string &source, const double time)
   return n;
 }
 
-void Simulation::finish_results(const std::string &status)
+void Simulation::finish_results(const std::string &status, const double time)
 {
+  if (time < kept_results_end_ * (1.0 - 1e-12) - 1e-12)
+  {
+    // A restart that stopped before it passed the results of the run it continued: those
+    // stay whole under BASE, and this run's go beside them.
+    const std::string base = outputs_->file_base();
+    const std::string aside = base + ".restarted";
+    results_aside_ = outputs_->results_files();
+    for (std::size_t at = 0; (at = results_aside_.find(base + ".", at)) != std::string::npos;
+         at += aside.size() + 1)
+      results_aside_.replace(at, base.size(), aside);
+    for (const auto &writer : writers_)
+      writer->set_final_base(aside);
+    *out_ << "results: " << outputs_->results_files(false)
+          << " of the run continued (to t = " << kept_results_end_
+          << " s) are kept whole, as this run stopped at t = " << time
+          << " s, before it passed them; this run's results are in " << results_aside_ << "\n";
+  }
   for (const auto &writer : writers_)
     writer->finish(status);
 }
@@ -474,7 +541,7 @@ void Simulation::open_results(const int first_gap_step)
   text.resize(static_cast<std::size_t>(length));
   Teuchos::broadcast(*comm_, 0, length, text.data());
   const ResultsMetadata metadata{version_string, std::string(text.begin(), text.end()), input_path_,
-                                 input_xml_};
+                                 input_xml_, RunFingerprint::of(mesh_, layout_, params_).digest()};
   if (outputs_->writes_hdf5())
     writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
         mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));

@@ -383,6 +383,19 @@ std::string RunFingerprint::difference(const RunFingerprint &saved) const
   return d.str();
 }
 
+std::string RunFingerprint::digest() const
+{
+  std::ostringstream all;
+  all << n_nodes << ' ' << n_cells << ' ' << n_pairs << ' ' << gap_side_set << ' ' << mesh_hash
+      << ' ' << layout;
+  for (const auto &[name, block] : physics)
+    all << '\n' << name << '\n' << block;
+  const std::string text = all.str();
+  std::ostringstream hex;
+  hex << std::hex << std::setw(16) << std::setfill('0') << fnv1a(text.data(), text.size());
+  return hex.str();
+}
+
 void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                       const CheckpointInfo &info, const RunFingerprint &fingerprint,
                       const Teuchos::Comm<int> &comm)
@@ -424,6 +437,8 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
         write_attribute(file, "kiln_version", info.kiln_version);
         write_attribute(file, "created", info.created);
         write_attribute(file, "input_path", info.input_path);
+        // As the results carry it: which run wrote the file, without reading the fingerprint.
+        write_attribute(file, "run_fingerprint", fingerprint.digest());
         write_string(file, "input", info.input_xml);
 
         const H5 print(H5Gcreate2(file, "fingerprint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),

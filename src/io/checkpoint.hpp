@@ -34,6 +34,9 @@ struct RunFingerprint
                            const Teuchos::ParameterList &validated_input);
   /// What differs between this run and a checkpoint's `saved` one, or "" if nothing.
   std::string difference(const RunFingerprint &saved) const;
+  /// All of it in 16 hex digits, for files that only need to know whether two runs are the
+  /// same (the results' attribute run_fingerprint).
+  std::string digest() const;
 };
 
 /// A checkpoint's content besides the time-integration state.

@@ -57,7 +57,7 @@ void run_on_rank_zero(const MPI_Comm comm, const std::function<void()> &work)
 {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  std::string error;
+  std::string error, write_error;
   if (rank == 0)
   {
     try
@@ -68,9 +68,15 @@ void run_on_rank_zero(const MPI_Comm comm, const std::function<void()> &work)
     {
       error = e.what();
     }
+    catch (const WriteError &e)
+    {
+      write_error = e.what();
+    }
   }
   // The message already says where.
   check_input_collectively(comm, error.empty(), "", error);
+  const Teuchos::MpiComm<int> teuchos_comm(comm);
+  check_write_collectively(teuchos_comm, write_error.empty(), "", write_error);
 }
 
 void check_begin_step(const bool in_step)

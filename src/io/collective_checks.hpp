@@ -29,8 +29,8 @@ void check_internal_collectively(MPI_Comm comm, bool local_ok, const char *condi
 /// failed, on every rank if `local_ok` is false on any rank (kiln::check_collectively).
 void check_input_collectively(MPI_Comm comm, bool local_ok, const std::string &where,
                               const std::string &message);
-/// Runs `work` on rank 0 alone; an InputError it throws is thrown again, with the same
-/// message, on every rank. Collective.
+/// Runs `work` on rank 0 alone; an InputError or a WriteError it throws is thrown again, of
+/// the same type and with the same message, on every rank. Collective.
 void run_on_rank_zero(MPI_Comm comm, const std::function<void()> &work);
 
 /// The order begin_step(), write_node_field()/write_cell_field() ..., end_step():

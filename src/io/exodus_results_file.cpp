@@ -2,15 +2,39 @@
 
 #include "base/errors.hpp"
 #include "io/history_csv.hpp"
+#include "io/write_room.hpp"
 
 #include <exodusII.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 
 namespace kiln
 {
 namespace internal
 {
+namespace
+{
+/// check_exodus_write() for the results: a failure the system names a full disk or a
+/// file-size limit (netCDF passes its errno on) is a WriteError.
+void check_results_write(const int status, const std::string &path, const std::string &what)
+{
+  if (status >= 0)
+    return;
+  const int system_error = errno;
+  const char *message = nullptr, *function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  const int reason = is_write_failure(code) ? code : system_error;
+  if (is_write_failure(reason))
+    throw WriteError(path + ": cannot write the results while " + what + " (" +
+                     std::strerror(reason) + "); " + write_failure_advice());
+  check_exodus_write(status, path, what);
+}
+} // namespace
+
 ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
                                      const std::vector<int> &cell_rank)
     : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells())
@@ -33,7 +57,10 @@ ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
     layout_ = exodus_layout(mesh, mesh.gap_side_sets);
     put_exodus_mesh(exo_, path_, mesh, layout_, "Kiln results", ExodusVariables::max_name_length,
                     &cell_rank);
-    check_exodus_write(ex_update(exo_), path_, "flushing the file");
+    check_results_write(ex_update(exo_), path_, "flushing the file");
+    size_before_step_ = std::filesystem::file_size(path_, ignored);
+    // Before the first step, a guess: a step's fields take about a quarter of the mesh's bytes.
+    largest_step_ = size_before_step_ / 4;
   }
   catch (...)
   {
@@ -54,10 +81,10 @@ void ExodusResultsFile::define_variables(const ExodusVariables &variables) const
     global_names.push_back(column.name);
   const int n_globals = static_cast<int>(global_names.size());
   ExodusNames globals(global_names);
-  check_exodus_write(ex_put_variable_param(exo_, EX_GLOBAL, n_globals), path_,
-                     "defining the global variables");
-  check_exodus_write(ex_put_variable_names(exo_, EX_GLOBAL, n_globals, globals.data()), path_,
-                     "naming the global variables");
+  check_results_write(ex_put_variable_param(exo_, EX_GLOBAL, n_globals), path_,
+                      "defining the global variables");
+  check_results_write(ex_put_variable_names(exo_, EX_GLOBAL, n_globals, globals.data()), path_,
+                      "naming the global variables");
   for (const Center center : {Center::node, Center::cell})
   {
     const std::vector<std::string> names = variables.names_of(center);
@@ -66,16 +93,16 @@ void ExodusResultsFile::define_variables(const ExodusVariables &variables) const
     const ex_entity_type type = center == Center::node ? EX_NODAL : EX_ELEM_BLOCK;
     const int n = static_cast<int>(names.size());
     const std::string what = std::string("defining the ") + kind_of(center) + " variables";
-    check_exodus_write(ex_put_variable_param(exo_, type, n), path_, what);
+    check_results_write(ex_put_variable_param(exo_, type, n), path_, what);
     ExodusNames buffers(names);
-    check_exodus_write(ex_put_variable_names(exo_, type, n, buffers.data()), path_, what);
+    check_results_write(ex_put_variable_names(exo_, type, n, buffers.data()), path_, what);
     if (type == EX_ELEM_BLOCK)
     {
       // Every element variable on every block.
       const int n_blocks = static_cast<int>(layout_.block_ids.size());
       std::vector<int> truth(static_cast<std::size_t>(n_blocks) * n, 1);
-      check_exodus_write(ex_put_truth_table(exo_, EX_ELEM_BLOCK, n_blocks, n, truth.data()), path_,
-                         "writing the element variable truth table");
+      check_results_write(ex_put_truth_table(exo_, EX_ELEM_BLOCK, n_blocks, n, truth.data()), path_,
+                          "writing the element variable truth table");
     }
   }
 }
@@ -84,11 +111,18 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
 {
   const int exodus_step = step.index + 1; // Exodus counts from 1
   const std::string what = "writing output step " + std::to_string(step.index);
-  check_exodus_write(ex_put_time(exo_, exodus_step, &step.time), path_, what);
+  // Room for twice the largest step so far (a guess before the first), and the header's
+  // growth (netCDF classic: the variables' definitions at the first step; 16 KiB).
+  const std::string shortfall =
+      room_shortfall(path_, 2 * largest_step_ + (std::uintmax_t{16} << 10));
+  if (!shortfall.empty())
+    throw WriteError(path_ + ": the next step cannot be written (" + shortfall + "); " +
+                     write_failure_advice());
+  check_results_write(ex_put_time(exo_, exodus_step, &step.time), path_, what);
   KILN_ASSERT(step.globals.size() == history_columns().size(), "one global per history column");
-  check_exodus_write(ex_put_var(exo_, exodus_step, EX_GLOBAL, 1, 0,
-                                static_cast<int64_t>(step.globals.size()), step.globals.data()),
-                     path_, what);
+  check_results_write(ex_put_var(exo_, exodus_step, EX_GLOBAL, 1, 0,
+                                 static_cast<int64_t>(step.globals.size()), step.globals.data()),
+                      path_, what);
   for (std::size_t f = 0; f < step.fields.size(); ++f)
   {
     const FieldSpec &field = step.fields[f];
@@ -101,23 +135,27 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
     {
       const double *data = values.data() + static_cast<std::size_t>(components[k]) * n_rows;
       if (field.center == Center::node)
-        check_exodus_write(ex_put_var(exo_, exodus_step, EX_NODAL, first + k, 1, n_nodes_, data),
-                           path_, field_what);
+        check_results_write(ex_put_var(exo_, exodus_step, EX_NODAL, first + k, 1, n_nodes_, data),
+                            path_, field_what);
       else
         write_cell_variable(exodus_step, first + k, data, field_what);
     }
   }
-  check_exodus_write(ex_update(exo_), path_, "flushing the file after " + what);
+  check_results_write(ex_update(exo_), path_, "flushing the file after " + what);
+  std::error_code ignored;
+  const std::uintmax_t size = std::filesystem::file_size(path_, ignored);
+  largest_step_ = std::max(largest_step_, size - std::min(size, size_before_step_));
+  size_before_step_ = size;
 }
 
 void ExodusResultsFile::write_globals(const int index, const std::vector<double> &globals) const
 {
   KILN_ASSERT(globals.size() == history_columns().size(), "one global per history column");
   const std::string what = "writing the global variables of output step " + std::to_string(index);
-  check_exodus_write(ex_put_var(exo_, index + 1, EX_GLOBAL, 1, 0,
-                                static_cast<int64_t>(globals.size()), globals.data()),
-                     path_, what);
-  check_exodus_write(ex_update(exo_), path_, "flushing the file after " + what);
+  check_results_write(ex_put_var(exo_, index + 1, EX_GLOBAL, 1, 0,
+                                 static_cast<int64_t>(globals.size()), globals.data()),
+                      path_, what);
+  check_results_write(ex_update(exo_), path_, "flushing the file after " + what);
 }
 
 /// The values of all cells, block after block.
@@ -129,9 +167,9 @@ void ExodusResultsFile::write_cell_variable(const int step, const int variable,
     std::vector<double> block_values;
     for (const int c : layout_.block_cells[b])
       block_values.push_back(values[c]);
-    check_exodus_write(ex_put_var(exo_, step, EX_ELEM_BLOCK, variable, layout_.block_ids[b],
-                                  static_cast<int64_t>(block_values.size()), block_values.data()),
-                       path_, what);
+    check_results_write(ex_put_var(exo_, step, EX_ELEM_BLOCK, variable, layout_.block_ids[b],
+                                   static_cast<int64_t>(block_values.size()), block_values.data()),
+                        path_, what);
   }
 }
 } // namespace internal

@@ -4,10 +4,13 @@
 /// one global variable per column of the time history (history_columns(), named as the
 /// columns), and the node and element variables of
 /// ExodusVariables, element variables on every block. Every member function throws an
-/// InputError naming the file when an Exodus call fails; the destructor closes the file.
+/// InputError naming the file when an Exodus call fails, a WriteError when the disk is full
+/// or the file-size limit reached (checked before each step, and the system's reason of a
+/// failed call); the destructor closes the file.
 #include "io/exodus_variables.hpp"
 #include "mesh/exodus_io.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -54,6 +57,10 @@ private:
   int n_nodes_ = 0;
   int n_cells_ = 0;
   ExodusLayout layout_;
+  /// The file's size after the last step (or the mesh), and the largest growth of a step
+  /// [bytes]: each step first checks for room for twice that (a WriteError if there is none).
+  mutable std::uintmax_t size_before_step_ = 0;
+  mutable std::uintmax_t largest_step_ = 0;
 };
 } // namespace internal
 } // namespace kiln

@@ -236,6 +236,11 @@ void ExodusResultsWriter::write_history(const std::vector<double> &row)
                                });
 }
 
+void ExodusResultsWriter::set_final_base(const std::string &final_base)
+{
+  impl_->base = final_base;
+}
+
 void ExodusResultsWriter::finish(const std::string & /*status*/)
 {
   Impl &m = *impl_;

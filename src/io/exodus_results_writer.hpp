@@ -70,6 +70,7 @@ public:
   void write_history(const std::vector<double> &row) override;
   /// Closes the file and renames it BASE.exo (the status shows in the log only).
   void finish(const std::string &status) override;
+  void set_final_base(const std::string &final_base) override;
 
   /// The file's current path (BASE.running.exo until finish(), then BASE.exo).
   std::string exo_path() const;

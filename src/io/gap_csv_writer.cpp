@@ -5,7 +5,9 @@
 #include "io/gap_surface.hpp"
 #include "io/history_csv.hpp"
 #include "io/row_gather.hpp"
+#include "io/write_room.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -59,6 +61,7 @@ void GapCsvWriter::end_step()
           return it == fields_.end() ? nan : it->second[static_cast<std::size_t>(node)];
         };
         const std::string temporary = file + ".tmp";
+        errno = 0;
         std::ofstream out(temporary, std::ios::trunc);
         out << "time [s],pair [-],x [m],y [m],z [m],s [m],t [m],gap_opening [m],"
                "contact_pressure [Pa],gap_heat_flux [W/m^2],contact_active [-],"
@@ -76,9 +79,11 @@ void GapCsvWriter::end_step()
           out << "\n";
         }
         out.close();
+        const int error = errno;
         const bool ok = out && std::rename(temporary.c_str(), file.c_str()) == 0;
         if (!ok)
           std::remove(temporary.c_str());
+        internal::check_text_write(static_cast<bool>(out), error, file, "the gap table");
         KILN_CHECK_INPUT(ok, file,
                          "cannot write the gap table; check that the folder is writable and the "
                          "disk is not full");

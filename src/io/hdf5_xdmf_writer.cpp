@@ -231,7 +231,8 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
                                {{"kiln_version", metadata.kiln_version},
                                 {"created", metadata.created},
                                 {"input_path", metadata.input_path},
-                                {"input", metadata.input}},
+                                {"input", metadata.input},
+                                {"run_fingerprint", metadata.run_fingerprint}},
                                "writing the run's metadata");
   impl_->write_mesh(mesh, owned_nodes, owned_cells, cell_rank);
   if (impl_->gap.n_points() > 0)
@@ -331,6 +332,11 @@ void Hdf5XdmfWriter::finish(const std::string &status)
   if (rank == 0)
     std::remove(running_xmf.c_str());
   finished_h5_ = m.base + ".h5";
+}
+
+void Hdf5XdmfWriter::set_final_base(const std::string &final_base)
+{
+  impl_->base = final_base;
 }
 
 std::string Hdf5XdmfWriter::h5_path() const

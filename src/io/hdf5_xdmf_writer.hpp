@@ -67,6 +67,7 @@ public:
   void write_history(const std::vector<double> &row) override;
   /// Writes the root attribute "status", closes the file and renames both files.
   void finish(const std::string &status) override;
+  void set_final_base(const std::string &final_base) override;
 
   /// The files' current paths (BASE.running.* until finish(), then BASE.*).
   std::string h5_path() const;

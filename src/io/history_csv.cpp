@@ -2,7 +2,9 @@
 
 #include "base/errors.hpp"
 #include "io/collective_checks.hpp"
+#include "io/write_room.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -158,14 +160,17 @@ void HistoryCsv::start(const std::vector<std::vector<double>> &rows)
       [&]
       {
         const std::string temporary = path_ + ".tmp";
+        errno = 0;
         std::ofstream out(temporary, std::ios::trunc);
         out << internal::header_line() << "\n";
         for (const auto &row : rows)
           out << internal::row_line(row) << "\n";
         out.close();
+        const int error = errno;
         const bool ok = out && std::rename(temporary.c_str(), path_.c_str()) == 0;
         if (!ok)
           std::remove(temporary.c_str());
+        internal::check_text_write(static_cast<bool>(out), error, path_, "the time history");
         KILN_CHECK_INPUT(ok, path_,
                          "cannot write the time history; check that the folder is "
                          "writable and the disk is not full");
@@ -177,9 +182,19 @@ void HistoryCsv::append(const std::vector<double> &row)
   internal::run_on_rank_zero(comm_,
                              [&]
                              {
+                               std::error_code ignored;
+                               const std::uintmax_t before =
+                                   std::filesystem::file_size(path_, ignored);
+                               errno = 0;
                                std::ofstream out(path_, std::ios::app);
                                out << internal::row_line(row) << "\n";
                                out.close();
+                               const int error = errno;
+                               // A row cut short goes: the rows before stay a complete table.
+                               if (!out && !ignored)
+                                 std::filesystem::resize_file(path_, before, ignored);
+                               internal::check_text_write(static_cast<bool>(out), error, path_,
+                                                          "a row of the time history");
                                KILN_CHECK_INPUT(static_cast<bool>(out), path_,
                                                 "cannot append to the time history; check that "
                                                 "the disk is not full");

@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "io/collective_checks.hpp"
 #include "io/hdf5_errors.hpp"
+#include "io/write_room.hpp"
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
@@ -116,35 +117,14 @@ std::uintmax_t ParallelHdf5File::size() const
 
 void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
 {
-  int rank = 0;
-  MPI_Comm_rank(comm_, &rank);
-  std::string shortfall;
-  if (rank == 0)
-  {
-    std::ostringstream text;
-    struct statvfs disk = {};
-    struct rlimit limit = {};
-    std::error_code e;
-    const std::uintmax_t now = std::filesystem::file_size(path_, e);
-    if (statvfs(directory_of(path_).c_str(), &disk) == 0 &&
-        static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize < bytes)
-      text << std::strerror(ENOSPC) << ": "
-           << static_cast<std::uintmax_t>(disk.f_bavail) * disk.f_frsize
-           << " bytes free, the next step needs about " << bytes;
-    else if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && !e &&
-             now + bytes > static_cast<std::uintmax_t>(limit.rlim_cur))
-      text << std::strerror(EFBIG) << ": the file-size limit (ulimit -f) is "
-           << static_cast<std::uintmax_t>(limit.rlim_cur) << " bytes, the file has " << now
-           << " and the next step needs about " << bytes << " more";
-    shortfall = text.str();
-  }
+  // Every rank: the ranks' file-size limits (and, on several nodes, their views of the disk)
+  // may differ, and a write that fails on one rank only inside a collective HDF5 call leaves
+  // HDF5's ranks in different collectives: the run hangs.
+  const std::string shortfall = room_shortfall(path_, bytes);
   const Teuchos::MpiComm<int> comm(comm_);
-  check_write_collectively(
-      comm, shortfall.empty(), path_,
-      "the next step cannot be written (" + shortfall +
-          "); the run cannot go on. Free space on the disk (or raise the file-size limit) and "
-          "continue from the last checkpoint with kiln INPUT.xml --restart; the steps written "
-          "before are kept");
+  check_write_collectively(comm, shortfall.empty(), path_,
+                           "the next step cannot be written (" + shortfall + "); " +
+                               write_failure_advice());
 }
 
 void ParallelHdf5File::flush() const

@@ -73,8 +73,9 @@ public:
   hid_t root() const { return file_.get(); }
   /// A WriteError (on every rank) naming the system's reason ("No space left on device",
   /// "File too large") unless the file's disk has `bytes` free and the file-size limit
-  /// (ulimit -f) lets it grow by as much: checked before a step is written, because HDF5 cannot
-  /// close a parallel file cleanly after a write failed on some ranks only.
+  /// (ulimit -f) lets it grow by as much: checked before a step is written, on every rank (their
+  /// limits may differ), because HDF5 cannot flush or close a parallel file cleanly after a
+  /// write failed on some ranks only: its ranks hang in different collectives.
   void reserve(std::uintmax_t bytes) const;
   /// The file's size on disk now [bytes] (rank 0's view, on every rank).
   std::uintmax_t size() const;

@@ -6,8 +6,10 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace kiln
@@ -43,23 +45,74 @@ template <typename T> T read_attribute(const hid_t object, const char *name)
 } // namespace
 } // namespace internal
 
+int internal::write_replayed(const std::string &path, const std::string &error,
+                             const std::vector<ReplayStep> &steps,
+                             const std::vector<ResultsWriter *> &writers,
+                             const Teuchos::Comm<int> &comm)
+{
+  check_collectively(comm, error.empty(), path,
+                     "cannot continue the results of the earlier run from this file: " + error);
+  for (const ReplayStep &step : steps)
+    for (ResultsWriter *writer : writers)
+    {
+      writer->begin_step(step.time, step.cycle, step.dt);
+      for (const ReplayField &f : step.fields)
+        if (f.on_nodes)
+          writer->write_node_field(f.name, f.n_components, f.values);
+        else
+          writer->write_cell_field(f.name, f.n_components, f.values);
+      writer->end_step();
+    }
+  return static_cast<int>(steps.size());
+}
+
+ResultsSummary results_summary(const std::string &path)
+{
+  using internal::H5Handle;
+  H5E_auto2_t old_function = nullptr;
+  void *old_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  ResultsSummary summary{"", -std::numeric_limits<double>::infinity()};
+  {
+    const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    const H5Handle a(file.valid() && H5Aexists(file.get(), "run_fingerprint") > 0
+                         ? H5Aopen(file.get(), "run_fingerprint", H5P_DEFAULT)
+                         : H5I_INVALID_HID,
+                     H5Aclose);
+    const H5Handle type(a.valid() ? H5Aget_type(a.get()) : H5I_INVALID_HID, H5Tclose);
+    if (type.valid() && H5Tget_class(type.get()) == H5T_STRING &&
+        H5Tis_variable_str(type.get()) == 0)
+    {
+      std::string text(H5Tget_size(type.get()), '\0');
+      if (H5Aread(a.get(), type.get(), text.data()) >= 0)
+        summary.run_fingerprint = text.substr(0, text.find('\0'));
+    }
+    const H5Handle all(file.valid() ? H5Gopen2(file.get(), "steps", H5P_DEFAULT) : H5I_INVALID_HID,
+                       H5Gclose);
+    if (all.valid())
+      for (const std::string &name : internal::links_of(all.get()))
+        try
+        {
+          const H5Handle group(H5Gopen2(all.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+          summary.end_time =
+              std::max(summary.end_time, internal::read_attribute<double>(group.get(), "time"));
+        }
+        catch (const std::runtime_error &)
+        {
+          // A step without its time (cut off while it was begun) ends nothing.
+        }
+  }
+  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
+  return summary;
+}
+
 int replay_results(const std::string &path, const double until, const ReplayRows &rows,
                    const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm)
 {
   using internal::H5Handle;
-  struct Field
-  {
-    std::string name;
-    bool on_nodes;
-    int n_components;
-    std::vector<double> values; ///< this rank's rows
-  };
-  struct Step
-  {
-    double time, dt;
-    int cycle;
-    std::vector<Field> fields;
-  };
+  using Field = internal::ReplayField;
+  using Step = internal::ReplayStep;
   // Every rank reads the steps (serial HDF5, read-only), then each writes its rows.
   std::vector<Step> steps;
   std::string error;
@@ -124,19 +177,6 @@ int replay_results(const std::string &path, const double until, const ReplayRows
     error = e.what();
   }
   H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
-  check_collectively(comm, error.empty(), path,
-                     "cannot continue the results of the earlier run from this file: " + error);
-  for (const Step &step : steps)
-    for (ResultsWriter *writer : writers)
-    {
-      writer->begin_step(step.time, step.cycle, step.dt);
-      for (const Field &f : step.fields)
-        if (f.on_nodes)
-          writer->write_node_field(f.name, f.n_components, f.values);
-        else
-          writer->write_cell_field(f.name, f.n_components, f.values);
-      writer->end_step();
-    }
-  return static_cast<int>(steps.size());
+  return internal::write_replayed(path, error, steps, writers, comm);
 }
 } // namespace kiln

@@ -18,6 +18,43 @@ struct ReplayRows
   std::vector<int> owned_cells; ///< increasing
 };
 
+namespace internal
+{
+/// A field of an earlier output step: this rank's rows.
+struct ReplayField
+{
+  std::string name;
+  bool on_nodes;
+  int n_components;
+  std::vector<double> values;
+};
+/// An earlier output step.
+struct ReplayStep
+{
+  double time, dt;
+  int cycle;
+  std::vector<ReplayField> fields;
+};
+/// Checks (collectively) that the steps were read without `error` (else InputError naming
+/// `path`), then writes them into each of `writers`; returns their number. Collective.
+int write_replayed(const std::string &path, const std::string &error,
+                   const std::vector<ReplayStep> &steps,
+                   const std::vector<ResultsWriter *> &writers, const Teuchos::Comm<int> &comm);
+} // namespace internal
+
+/// What a restart needs to know of the earlier HDF5 results before it touches them.
+struct ResultsSummary
+{
+  /// The attribute run_fingerprint (RunFingerprint::digest() of the run that wrote them), or ""
+  /// if they have none (results of a Kiln before 0043) or cannot be read.
+  std::string run_fingerprint;
+  /// The time of their last output step [s] (-infinity if none).
+  double end_time = 0.0;
+};
+
+/// The summary of the HDF5 results file `path`. Reads only; every rank reads the file.
+ResultsSummary results_summary(const std::string &path);
+
 /// Writes every output step of the HDF5 results file `path` (an earlier run of the same mesh)
 /// up to the time `until` [s] into each of `writers`, with the earlier step's time, cycle, dt
 /// and fields. Returns the number of steps. Throws InputError naming the file (on every rank)

@@ -12,6 +12,9 @@ struct ResultsMetadata
   std::string created;    ///< UTC, ISO 8601
   std::string input_path; ///< the input file
   std::string input;      ///< the input as given (XML)
+  /// RunFingerprint::digest() of the run (mesh, physics, start): a restart appends only to
+  /// results with its checkpoint's.
+  std::string run_fingerprint;
 };
 
 /// One results file, written step after step. While the run goes it has a temporary name
@@ -38,5 +41,8 @@ public:
   /// Records `status` ("complete", or why the run stopped) and renames the files to their
   /// final names; nothing can be written after.
   virtual void finish(const std::string &status) = 0;
+  /// Makes finish() name the files `final_base`.* instead of the base they were opened with
+  /// (a restart that stops short of the earlier run's results keeps those under BASE).
+  virtual void set_final_base(const std::string & /*final_base*/) {}
 };
 } // namespace kiln

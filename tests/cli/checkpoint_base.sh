@@ -2,7 +2,8 @@
 # Checkpoint/File Base (issue 33): equal to the results' File Base, refused at --check; in a
 # folder that does not exist, created at the start; in one that cannot be created, refused
 # before the first step; shared by two runs at once, the second refused by the checkpoints'
-# own lock (BASE.lock), on 2 ranks.
+# own lock (BASE.lock), on 2 ranks; shared in turn, another run is refused at --check (the
+# run fingerprint of BASE.h5) while the run that wrote the checkpoints (or a rerun) goes on.
 # usage: checkpoint_base.sh KILN MPIEXEC STEADY_DECK.xml CONTACT_BOX_CLOSE.xml
 set -u
 kiln=$(realpath "$1") mpiexec=$2 steady=$(realpath "$3") box=$(realpath "$4")
@@ -70,4 +71,15 @@ wait $pid
 grep -q "shared/ck.lock: another Kiln run (pid $pid on [^)]*) is writing checkpoints with this Checkpoint/File Base and holds this lock file; wait for it to end, or give this run another Kiln/Checkpoint/\"File Base\"" log.txt ||
   fail "no message naming the checkpoints' lock"
 [ -e second/run.h5 ] && fail "the refused run wrote results"
+
+# In turn: the first run's checkpoints (shared/ck.h5, written when SIGTERM stopped it) are not
+# overwritten by another run (the steady deck); a run of the same problem goes on.
+[ -s shared/ck.h5 ] || fail "the stopped run wrote no checkpoint shared/ck.h5"
+with_bases third/run shared/ck steady.xml > third.xml
+run --check third.xml
+[ "$status" = 1 ] || fail "another run on a checkpoint base used before: exit $status, expected 1"
+grep -q 'third.xml: Kiln/Checkpoint/"File Base": = "shared/ck": shared/ck.h5 holds the checkpoints of another run (run fingerprint [0-9a-f]\{16\}, this run.s [0-9a-f]\{16\}: another mesh, physics or initial state), which this run would overwrite' log.txt ||
+  fail "no message naming the other run's checkpoints"
+run --check second.xml
+[ "$status" = 0 ] || fail "the same problem on its own checkpoint base refused: exit $status"
 echo "checkpoint_base.sh: passed"

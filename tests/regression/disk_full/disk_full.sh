@@ -11,6 +11,15 @@
 #   results      the results' folder is a tmpfs smaller than the results
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
+#   fingerprint  a restart whose results were since written by another run: exit 1, both named
+#   restart_fails  a restart that fails before it passes the earlier results keeps them whole
+#   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
+#   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
+#   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
+#   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
+#   killed       a run killed with SIGKILL mid-run: its results readable to the last complete step
+#   ulimit_one_rank  a file-size limit on the last rank only (a write that fails on one rank
+#                only inside HDF5 hung the run): ends within 30 s, as a full disk
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -45,6 +54,16 @@ check_failure() { # FILE REASON: the run failed as it should, naming FILE and RE
   ls core* 2>/dev/null && fail "a core dump"
   true
 }
+folder_state() { ls -l --time-style=full-iso results | md5sum; md5sum results/*; }
+check_refused() { # DECK CHECKPOINT MESSAGE WHAT: the restart is refused (exit 1, one line
+  # matching MESSAGE) and the results folder is unchanged
+  local before; before=$(folder_state)
+  "$mpiexec" -np "$np" "$kiln" "$1" --restart "$2" > run.log 2>&1; rc=$?
+  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
+  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
+  grep -q "$3" run.log || { cat run.log; fail "no message $4"; }
+  [ "$before" = "$(folder_state)" ] || fail "the results folder changed"
+}
 restart_from() { # CHECKPOINT STEP: it is readable, and a restart from it completes
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart "$1" > restart.log 2>&1 ||
     { cat restart.log; fail "the restart from $1 failed"; }
@@ -71,6 +90,75 @@ results)
   check_failure "small/steps.running.h5" "No space left on device"
   restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
   ;;
+exodus_results)
+  # The .exo takes 133 kB, its mesh 50 kB, a step 12 kB; each step wants room for twice the
+  # largest step (the first: a quarter of the mesh's bytes) and 16 KiB: the mesh and the
+  # first steps fit, not all.
+  mount_small 100k
+  deck small/steps big/steps
+  sed -i 's|<ParameterList name="Output">|&\n    <Parameter name="Format" type="string" value="Exodus"/>|' run.xml
+  "$mpiexec" -np "$np" "$kiln" run.xml > run.log 2>&1; rc=$?
+  check_failure "small/steps.running.exo: the next step cannot be written" "No space left on device"
+  restart_from "$(ls big/steps-*.h5 | tail -1)" "$(ls big/steps-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
+ulimit_one_rank)
+  deck big/steps big/ckpt
+  # 120 KiB on the last rank only (MPMD): the mesh fits; a step's writes failed on that rank
+  # alone, inside HDF5's collective flush, and the ranks hung in different collectives.
+  # The room check on every rank now ends it before the first step (no checkpoint yet).
+  timeout 30 "$mpiexec" -np $((np - 1)) "$kiln" run.xml : -np 1 bash -c "ulimit -f 120 && exec $kiln run.xml" > run.log 2>&1; rc=$?
+  [ "$rc" = 124 ] && { cat run.log; fail "the run hung (killed after 30 s)"; }
+  check_failure "big/steps.running.h5: the next step cannot be written" "File too large"
+  echo "disk_full.sh $case: exit 2 on every rank, one message, no hang"
+  exit 0
+  ;;
+killed)
+  # Many steps (an output after each), killed with SIGKILL after step 20 on every rank: the
+  # index BASE.running.xmf and BASE.running.h5 hold complete steps (complete_steps.py).
+  sed -e 's|value="{0, 1, 2, 3, 4, 5, 6}"|value="{0, 1000}"/><Parameter name="Every Steps" type="int" value="1"|' \
+      "$here/steps.xml" > long.xml
+  grep -q 'value="{0, 1000}"' long.xml || fail "could not make the long deck"
+  "$mpiexec" -np "$np" "$kiln" long.xml > run.log 2>&1 &
+  pid=$!
+  for _ in $(seq 600); do
+    grep -q "^step 20:" run.log && break
+    sleep 0.1
+  done
+  grep -q "^step 20:" run.log || { kill -KILL $pid; cat run.log; fail "the run did not reach step 20"; }
+  ranks=$(pgrep -P $pid) # the ranks, mpiexec's children: killed, no clean stop
+  [ -n "$ranks" ] || { kill -KILL $pid; fail "no ranks under mpiexec $pid"; }
+  kill -KILL $ranks
+  wait $pid 2>/dev/null
+  grep -q "^complete" run.log && fail "the run was not killed"
+  "${PYTHON:-/usr/bin/python3}" "$here/complete_steps.py" results/long.running.xmf ||
+    fail "the killed run's results are not complete up to their last step"
+  echo "disk_full.sh $case: the results of the killed run readable and complete to their last step"
+  exit 0
+  ;;
+csv_full)
+  # The CSV writers on a full device: /dev/full (every write fails with ENOSPC) in place of the
+  # temporary file of the gap table of output step 2, then of the time history.
+  mkdir results
+  ln -s /dev/full results/exodus_only.gap-000002.csv.tmp
+  "$mpiexec" -np "$np" "$kiln" "$here/exodus_only.xml" > run.log 2>&1; rc=$?
+  check_failure "results/exodus_only.gap-000002.csv: cannot write the gap table" "No space left on device"
+  [ -s results/exodus_only.gap-000001.csv ] && [ ! -e results/exodus_only.gap-000002.csv ] ||
+    fail "the gap tables before are not kept, or a partial one is left"
+  rm -rf results && mkdir results
+  ln -s /dev/full results/exodus_only.history.csv.tmp
+  "$mpiexec" -np "$np" "$kiln" "$here/exodus_only.xml" > run.log 2>&1; rc=$?
+  check_failure "results/exodus_only.history.csv: cannot write the time history" "No space left on device"
+  echo "disk_full.sh $case: exit 2 on every rank, one message naming the table and the system's reason"
+  exit 0
+  ;;
+exodus_ulimit)
+  deck big/steps big/ckpt
+  sed -i 's|<ParameterList name="Output">|&\n    <Parameter name="Format" type="string" value="Exodus"/>|' run.xml
+  # 100 KiB: room for the mesh and the first steps (as above), not for all.
+  "$mpiexec" -np "$np" bash -c "ulimit -f 100 && exec $kiln run.xml" > run.log 2>&1; rc=$?
+  check_failure "big/steps.running.exo: the next step cannot be written" "File too large"
+  restart_from big/ckpt.h5 "$(ls big/ckpt-*.h5 | tail -1 | sed 's/.*-0*\([0-9]\+\)\.h5/\1/')"
+  ;;
 ulimit)
   # The checkpoints' base differs from the results' (the same base is refused at --check).
   deck big/steps big/ckpt
@@ -83,15 +171,65 @@ ulimit)
 restart_end)
   # A restart from the checkpoint at the end time (6 s): nothing to compute, nothing written.
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 1 ] || { cat run.log; fail "exit status $rc, expected 1"; }
-  [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
-  grep -q "kiln: error: results/steps.checkpoint.h5: the checkpoint's time, t = 6 s, is at or past the end of this run, the last output time 6 s: there is nothing left to compute, and nothing was written" run.log ||
-    { cat run.log; fail "no message saying the checkpoint is at the end"; }
-  [ "$before" = "$(ls -l --time-style=full-iso results | md5sum; md5sum results/*)" ] ||
-    fail "the results folder changed"
+  check_refused "$here/steps.xml" results/steps.checkpoint.h5 \
+    "kiln: error: results/steps.checkpoint.h5: the checkpoint's time, t = 6 s, is at or past the end of this run, the last output time 6 s: there is nothing left to compute, and nothing was written" \
+    "saying the checkpoint is at the end"
   echo "disk_full.sh $case: refused with exit 1, nothing written"
+  exit 0
+  ;;
+fingerprint)
+  # Run A keeps its checkpoint of step 3 aside; run B (another initial temperature, the same
+  # File Base) replaces results/steps.h5; A's restart must not append to B's results.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "run A"; }
+  cp results/steps.checkpoint-000003.h5 a3.h5
+  mkdir b # b/steps.xml: the default File Base, results/steps, as A's
+  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
+    "$here/steps.xml" > b/steps.xml
+  "$mpiexec" -np "$np" "$kiln" b/steps.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
+  check_refused "$here/steps.xml" a3.h5 \
+    "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
+    "naming both files"
+  # B's own restart appends to B's results.
+  "$mpiexec" -np "$np" "$kiln" b/steps.xml --restart results/steps.checkpoint-000003.h5 > same.log 2>&1 ||
+    { cat same.log; fail "the restart of the run that wrote the results"; }
+  grep -q "results: the 4 output steps up to t = 3 s of results/steps.h5 continue" same.log ||
+    { cat same.log; fail "B's restart did not continue B's results"; }
+  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
+  exit 0
+  ;;
+restart_fails)
+  # The complete run (outputs at 0..6 s), then a restart from step 3 that fails at 5 s (an
+  # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
+  # the restart's results go beside it, and a restart from its checkpoint completes the series.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  before=$(md5sum results/steps.h5 results/steps.xmf)
+  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="5"/>\n  </ParameterList>\n  &|' \
+    "$here/steps.xml" > steps.xml
+  "$mpiexec" -np "$np" "$kiln" steps.xml --restart results/steps.checkpoint-000003.h5 > run.log 2>&1; rc=$?
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  grep -q "results: results/steps.h5 of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf" run.log ||
+    { cat run.log; fail "no message keeping the earlier results"; }
+  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf)" ] || fail "the earlier results changed"
+  [ "$(h5ls results/steps.restarted.h5/steps | wc -l)" = 5 ] || { h5ls results/steps.restarted.h5/steps; fail "the restart's results do not hold 0..4 s"; }
+  grep -q 'steps.restarted.h5:/steps' results/steps.restarted.xmf || fail "the restart's index does not name its file"
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > again.log 2>&1 ||
+    { cat again.log; fail "the restart from the failed run's checkpoint"; }
+  [ "$(h5ls results/steps.h5/steps | wc -l)" = 7 ] || { h5ls results/steps.h5/steps; fail "the completed results do not hold 0..6 s"; }
+  echo "disk_full.sh $case: the earlier results kept whole; the restart's beside them; the series completed"
+  exit 0
+  ;;
+exodus_restart)
+  # A thermo-elastic run (vectors, tensors, cell fields) to 3 s, then a restart from 1 s: the
+  # .exo holds 0..3 s, equal to the uninterrupted run's (but the wall time).
+  deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  cp results/exodus_only.exo whole.exo
+  "$mpiexec" -np "$np" "$kiln" "$deck" --restart results/exodus_only.checkpoint-000001.h5 > run.log 2>&1 ||
+    { cat run.log; fail "the restart"; }
+  grep -q "results: the 2 output steps up to t = 1 s of results/exodus_only.exo continue in results/exodus_only.exo" run.log ||
+    { cat run.log; fail "the restart did not continue the .exo"; }
+  "${PYTHON:-/usr/bin/python3}" "$here/same_exodus.py" whole.exo results/exodus_only.exo || fail "the continued .exo differs from the whole run's"
+  echo "disk_full.sh $case: the restart continued the .exo series, equal to the whole run's"
   exit 0
   ;;
 *) fail "unknown case" ;;

@@ -130,8 +130,9 @@ double stress(const int step, const int cell, const int component)
 void write_results(const MPI_Comm comm, const std::string &base, const Mesh &mesh,
                    const Ownership &o, const bool finish = true)
 {
-  kiln::Hdf5XdmfWriter writer(comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank,
-                              {"9.9.9", "2026-01-01T00:00:00Z", "test.xml", "<Kiln/>"});
+  kiln::Hdf5XdmfWriter writer(
+      comm, base, mesh, o.owned_nodes, o.owned_cells, o.cell_rank,
+      {"9.9.9", "2026-01-01T00:00:00Z", "test.xml", "<Kiln/>", "0123456789abcdef"});
   EXPECT_EQ(writer.h5_path(), base + ".running.h5");
   EXPECT_EQ(writer.xdmf_path(), base + ".running.xmf");
   MPI_Barrier(comm);
