@@ -113,7 +113,7 @@ int replay_exodus_results(const std::string &path, const double until, const Mes
                                std::to_string(n_file_nodes) + " nodes, this mesh " +
                                std::to_string(rows.n_cells) + " and " +
                                std::to_string(rows.n_nodes));
-    const ExodusLayout layout = exodus_layout(mesh, mesh.gap_side_set);
+    const ExodusLayout layout = exodus_layout(mesh, mesh.gap_side_sets);
     const int n_steps = static_cast<int>(ex_inquire_int(exo, EX_INQ_TIME));
     std::vector<double> times(static_cast<std::size_t>(std::max(n_steps, 0)));
     if (n_steps > 0 && ex_get_all_times(exo, times.data()) < 0)
