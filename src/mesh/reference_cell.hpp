@@ -1,0 +1,79 @@
+#pragma once
+/// What a cell is (style.md §9, deal.II's ReferenceCell, Shards' CellTopology): its nodes in
+/// the reference domain and its faces, for every element type Kiln knows. Node numbering and
+/// face (side) numbering follow Exodus II. One immutable object per type, looked up by type.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+using Point = std::array<double, 3>;
+
+/// The element types. Volume cells first, then the face types their faces have.
+enum class CellType : unsigned char
+{
+  hex8,
+  tet4,
+  wedge6,
+  pyramid5,
+  tet10,
+  hex20,
+  hex27,
+  quad4, ///< faces of hex8, wedge6, pyramid5
+  tri3,  ///< faces of tet4, wedge6, pyramid5
+  quad8, ///< faces of hex20
+  quad9, ///< faces of hex27
+  tri6,  ///< faces of tet10
+};
+
+class ReferenceCell
+{
+public:
+  /// The reference cell of `type`.
+  static const ReferenceCell &of(CellType type);
+  /// The volume types, in CellType order (for messages listing what is supported).
+  static const std::vector<CellType> &volume_types();
+
+  CellType type() const { return type_; }
+  /// Exodus' element type name, upper case ("HEX8", "TETRA4", "WEDGE6", "PYRAMID5",
+  /// "TETRA10", "HEX20", "HEX27", "QUAD4", "TRI3", ...).
+  const std::string &name() const { return name_; }
+  /// 3 for a volume cell, 2 for a face.
+  int dim() const { return dim_; }
+  int n_nodes() const { return static_cast<int>(nodes_.size()); }
+  /// The corner nodes (the first n_vertices() nodes).
+  int n_vertices() const { return n_vertices_; }
+  /// Reference coordinates of node i (faces: the third coordinate is 0). Hex: [-1,1]^3;
+  /// tet: the unit simplex; wedge: triangle (unit simplex in x,y) times [-1,1] in z;
+  /// pyramid: base [-1,1]^2 at z = 0, apex (0,0,1) (Exodus / Intrepid2 conventions).
+  const Point &node(int i) const { return nodes_[i]; }
+  /// Polynomial degree of its Lagrange basis (1 or 2).
+  int degree() const { return degree_; }
+
+  int n_faces() const { return static_cast<int>(faces_.size()); }
+  /// Nodes of face f (Exodus side f + 1): corners first, ordered so that the right-hand rule
+  /// gives the outward normal, then mid-side (and centre) nodes in the face type's order.
+  const std::vector<int> &face_nodes(int f) const { return faces_[f]; }
+  /// The type of face f.
+  CellType face_type(int f) const { return face_types_[f]; }
+
+  /// The XDMF topology type code of this type (Mixed topologies write it per cell).
+  int xdmf_code() const { return xdmf_code_; }
+
+  ReferenceCell(CellType type, std::string name, int dim, int degree, int n_vertices,
+                std::vector<Point> nodes, std::vector<std::vector<int>> faces,
+                std::vector<CellType> face_types, int xdmf_code);
+
+private:
+  CellType type_;
+  std::string name_;
+  int dim_;
+  int degree_;
+  int n_vertices_;
+  std::vector<Point> nodes_;
+  std::vector<std::vector<int>> faces_;
+  std::vector<CellType> face_types_;
+  int xdmf_code_;
+};
+} // namespace kiln

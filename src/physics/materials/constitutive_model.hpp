@@ -1,0 +1,71 @@
+#pragma once
+/// The constitutive-model layer (style.md §9, deal.II step-42's ConstitutiveLaw, MOOSE's stress
+/// materials): what maps a quadrature point's strain, temperature and state at the previous
+/// step to its stress, tangent and new state. Kernels ask a model; they never write a law.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// Voigt order used everywhere: xx, yy, zz, xy, xz, yz; strains are TENSOR components
+/// (eps_xy, not gamma_xy = 2 eps_xy).
+using Voigt = std::array<double, 6>;
+/// A 6x6 matrix in Voigt order, [row][column].
+using VoigtMatrix = std::array<std::array<double, 6>, 6>;
+
+/// What a model reads at one quadrature point, at the end of the step (time t_{n+1}).
+struct PointInput
+{
+  Voigt strain{};            ///< total strain ε = sym ∇u at t_{n+1} [-]
+  double temperature = 0.0;  ///< T at t_{n+1} [K]
+  double temperature_old = 0.0; ///< T at t_n (the last accepted step) [K]
+  double time_step = 0.0;    ///< Δt = t_{n+1} − t_n [s] (0: a steady or first solve)
+};
+
+/// What a model returns at one quadrature point.
+struct PointResponse
+{
+  Voigt stress{}; ///< σ at t_{n+1} [Pa]
+  /// ∂σ_I/∂ε_J [Pa], the consistent (algorithmic) tangent, with ε_J a tensor component: a
+  /// shear column J >= 3 is the derivative with respect to ε_xy = ε_yx moved together (so
+  /// isotropic elasticity has tangent[3][3] = 2G).
+  VoigtMatrix tangent{};
+  Voigt stress_temperature_derivative{}; ///< ∂σ/∂T at fixed ε [Pa/K]
+};
+
+/// A constitutive model with state. State is n_state() doubles per quadrature point, owned by
+/// the caller (a QuadratureState): evaluate() reads the state at t_n (`old_state`, as last
+/// committed) and writes the state at t_{n+1} (`new_state`); it must not keep pointers. The
+/// same (input, old_state) always gives the same response (Newton re-evaluates a point many
+/// times in a step; a rejected step restores `old_state`). Thread-safe: const and no caches.
+class ConstitutiveModel
+{
+public:
+  virtual ~ConstitutiveModel() = default;
+
+  /// Doubles of state per quadrature point (0 for an elastic model).
+  virtual int n_state() const { return 0; }
+  /// The state before the first step (`state` has n_state() entries). Default: zeros.
+  virtual void initial_state(double *state) const;
+  /// Names of the state components, for checkpoints (n_state() entries, stable across
+  /// versions: a checkpoint is read back by name).
+  virtual std::vector<std::string> state_names() const { return {}; }
+
+  /// Stress, tangent and ∂σ/∂T at `in`, from `old_state`; writes `new_state` (both n_state()
+  /// entries; either may be null when n_state() == 0). Throws RunError if the point cannot be
+  /// integrated (a local Newton solve that does not converge): the step is then cut.
+  virtual void evaluate(const PointInput &in, const double *old_state, double *new_state,
+                        PointResponse &out) const = 0;
+
+  /// Whether σ is linear in (ε, T) with a constant tangent and no state (isotropic linear
+  /// thermo-elasticity with constant properties): the Jacobian is then constant and reused,
+  /// and kernels may take their fast path through lame_constants().
+  virtual bool constant_linear() const { return false; }
+
+  /// Output fields per point beyond the stress: equivalent plastic strain [-], its rate
+  /// [1/s] (both 0 for an elastic model).
+  virtual double equivalent_plastic_strain(const double * /*state*/) const { return 0.0; }
+  virtual double plastic_strain_rate(const double * /*state*/) const { return 0.0; }
+};
+} // namespace kiln
