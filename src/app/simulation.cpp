@@ -602,7 +602,7 @@ void Simulation::print_header() const
     auto &[cells, nodes] = blocks[mesh_.block_id[c]];
     nodes.resize(mesh_.n_nodes(), 0);
     ++cells;
-    for (const int n : mesh_.connectivity[c])
+    for (const int n : mesh_.cell_nodes(c))
       nodes[n] = 1;
   }
   out << "mesh: " << mesh_.n_cells() << " cells, " << mesh_.n_nodes() << " nodes\n";

@@ -30,8 +30,10 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
   };
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (use_cell[c])
-      add_block(assembler.with_twins(
-          std::vector<int>(mesh.connectivity[c].begin(), mesh.connectivity[c].end())));
+    {
+      const Span<const int> nodes = mesh.cell_nodes(c);
+      add_block(assembler.with_twins(std::vector<int>(nodes.begin(), nodes.end())));
+    }
   for (std::size_t k = 0; k < use_face.size(); ++k)
     if (use_face[k])
       add_block(assembler.gap_face_nodes(static_cast<int>(k)));
@@ -163,9 +165,7 @@ Couplings Couplings::gap_faces(const Mesh &mesh)
   c.gap_face_nodes = [&mesh](const int k)
   {
     const GapFace &face = mesh.gap_faces[k];
-    std::vector<int> nodes;
-    for (int i = 0; i < 4; ++i)
-      nodes.push_back(mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]]);
+    std::vector<int> nodes = mesh.face_nodes(face.cell_a, face.face_a);
     nodes.insert(nodes.end(), face.node_b.begin(), face.node_b.end());
     return nodes;
   };
@@ -395,7 +395,7 @@ LO Assembler::lid(const GO gid) const
 std::vector<LO> Assembler::cell_lids(const int cell) const
 {
   std::vector<LO> lids;
-  for (const int n : mesh_.connectivity[cell])
+  for (const int n : mesh_.cell_nodes(cell))
     for (int f = 0; f < dofs_.n_node_fields(); ++f)
       lids.push_back(lid(dofs_.node_dof(n, f)));
   return lids;
@@ -404,12 +404,9 @@ std::vector<LO> Assembler::cell_lids(const int cell) const
 std::vector<LO> Assembler::face_lids(const int cell, const int face) const
 {
   std::vector<LO> lids;
-  for (int i = 0; i < 4; ++i)
-  {
-    const int n = mesh_.connectivity[cell][hex_face_nodes[face][i]];
+  for (const int n : mesh_.face_nodes(cell, face))
     for (int f = 0; f < dofs_.n_node_fields(); ++f)
       lids.push_back(lid(dofs_.node_dof(n, f)));
-  }
   return lids;
 }
 

@@ -28,7 +28,7 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
     if (cell_rank[c] == rank)
     {
       owned_cells_.push_back(c);
-      for (const int n : mesh.connectivity[c])
+      for (const int n : mesh.cell_nodes(c))
         touched[n] = 1;
     }
   // Gap faces are assembled by the owner of their side-a cell: it needs the twins.
@@ -40,7 +40,7 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
       for (const int n : face.node_b)
         touched[n] = 1;
       if (layout_.contact && layout_.displacement)
-        for (const int n : mesh.connectivity[face.cell_b])
+        for (const int n : mesh.cell_nodes(face.cell_b))
           touched[n] = 1;
     }
   twin_offsets_.assign(mesh.n_nodes() + 1, 0);

@@ -6,56 +6,43 @@
 
 namespace kiln
 {
-const ElementValues::ShapeTable &ElementValues::reference_shape()
+void ElementValues::reinit(const Mesh &mesh, const int c)
 {
-  static const ShapeTable table = []
-  {
-    ShapeTable t{};
-    const auto &xi = hex_gauss_points();
-    for (int q = 0; q < n_points; ++q)
-      for (int i = 0; i < n_hex_nodes; ++i)
-      {
-        const Point r = hex_reference_node(i);
-        t[q][i] = 0.125 * (1 + r[0] * xi[q][0]) * (1 + r[1] * xi[q][1]) * (1 + r[2] * xi[q][2]);
-      }
-    return t;
-  }();
-  return table;
+  const Span<const int> nodes = mesh.cell_nodes(c);
+  x_.resize(nodes.size());
+  for (int i = 0; i < nodes.size(); ++i)
+    x_[i] = mesh.coordinates[nodes[i]];
+  reinit(mesh.cell_type(c), x_.data());
 }
 
-const ElementValues::GradTable &ElementValues::reference_grad()
+void ElementValues::reinit(const CellType type, const Point *x)
 {
-  static const GradTable table = []
+  const ReferenceValues &ref = ReferenceValues::of(type);
+  KILN_ASSERT(ref.n_shape > 0 && ReferenceCell::of(type).dim() == 3,
+              "no volume basis for " << ReferenceCell::of(type).name());
+  if (shape_ == nullptr || type != type_)
   {
-    GradTable t{};
-    const auto &xi = hex_gauss_points();
-    for (int q = 0; q < n_points; ++q)
-      for (int i = 0; i < n_hex_nodes; ++i)
-      {
-        const Point r = hex_reference_node(i);
-        const double f[3] = {1 + r[0] * xi[q][0], 1 + r[1] * xi[q][1], 1 + r[2] * xi[q][2]};
-        t[q][i] = {0.125 * r[0] * f[1] * f[2], 0.125 * r[1] * f[0] * f[2],
-                   0.125 * r[2] * f[0] * f[1]};
-      }
-    return t;
-  }();
-  return table;
-}
-
-void ElementValues::reinit(const HexNodes &x)
-{
-  const ShapeTable &N = reference_shape();
-  const GradTable &dN = reference_grad();
-  for (int q = 0; q < n_points; ++q)
+    type_ = type;
+    n_shape_ = ref.n_shape;
+    n_qpoints_ = ref.n_qpoints;
+    shape_ = ref.shape.data();
+    grad_.resize(ref.grad.size());
+    JxW_.resize(n_qpoints_);
+    quadrature_point_.resize(n_qpoints_);
+  }
+  const int n = n_shape_;
+  for (int q = 0; q < n_qpoints_; ++q)
   {
+    const double *N = shape_ + q * n;
+    const Point *dN = ref.grad.data() + q * n;
     double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; // J[d][r] = dx_d/dxi_r
     Point xq{0, 0, 0};
-    for (int i = 0; i < n_hex_nodes; ++i)
+    for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
       {
-        xq[d] += N[q][i] * x[i][d];
+        xq[d] += N[i] * x[i][d];
         for (int r = 0; r < 3; ++r)
-          J[d][r] += x[i][d] * dN[q][i][r];
+          J[d][r] += x[i][d] * dN[i][r];
       }
     // Cofactors: inv(J)[r][d] = C[d][r] / det, with C the cofactor matrix of J.
     const double C[3][3] = {
@@ -69,7 +56,8 @@ void ElementValues::reinit(const HexNodes &x)
     if (!(det > 0.0))
     {
       std::ostringstream msg;
-      msg << "ElementValues::reinit: det(dx/dxi) = " << det << " <= 0 at Gauss point " << q
+      msg << "ElementValues::reinit: det(dx/dxi) = " << det << " <= 0 at quadrature point " << q
+          << " of a " << ReferenceCell::of(type).name()
           << " (an inverted or degenerate cell; node 0 at (" << x[0][0] << ", " << x[0][1] << ", "
           << x[0][2] << "))";
       throw InternalError(msg.str());
@@ -77,11 +65,11 @@ void ElementValues::reinit(const HexNodes &x)
     // grad N_i = J^{-T} grad_xi N_i, component d: sum_r inv(J)[r][d] dN_r = sum_r C[d][r] dN_r /
     // det
     const double inv_det = 1.0 / det;
-    for (int i = 0; i < n_hex_nodes; ++i)
+    Point *grad = grad_.data() + q * n;
+    for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
-        grad_[q][i][d] =
-            (C[d][0] * dN[q][i][0] + C[d][1] * dN[q][i][1] + C[d][2] * dN[q][i][2]) * inv_det;
-    JxW_[q] = det; // the 2x2x2 Gauss weights are 1
+        grad[i][d] = (C[d][0] * dN[i][0] + C[d][1] * dN[i][1] + C[d][2] * dN[i][2]) * inv_det;
+    JxW_[q] = det * ref.weights[q];
     quadrature_point_[q] = xq;
   }
 }

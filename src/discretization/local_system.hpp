@@ -23,6 +23,18 @@ public:
     std::fill(residual_.begin(), residual_.end(), 0.0);
     std::fill(jacobian_.begin(), jacobian_.end(), 0.0);
   }
+  /// Clears it for `n_nodes` nodes (a cell of another type: the buffers keep their capacity).
+  void reset(const int n_nodes)
+  {
+    if (n_nodes != n_nodes_)
+    {
+      n_nodes_ = n_nodes;
+      residual_.resize(static_cast<std::size_t>(n_nodes) * n_fields_);
+      if (has_jacobian_)
+        jacobian_.resize(residual_.size() * residual_.size());
+    }
+    clear();
+  }
   int n_nodes() const { return n_nodes_; }
   int n_fields() const { return n_fields_; }
   int size() const { return static_cast<int>(residual_.size()); }

@@ -113,11 +113,11 @@ std::vector<double> NodalConstraints::stiffness_sums() const
   const auto constrained = [&](const int n) { return has_temperature(n) || has_frame(n); };
   for (int c = 0; c < mesh_.n_cells(); ++c)
   {
-    const auto &nodes = mesh_.connectivity[c];
+    const Span<const int> nodes = mesh_.cell_nodes(c);
     if (std::none_of(nodes.begin(), nodes.end(), constrained))
       continue;
-    fe.reinit(cell_nodes(mesh_, c));
-    for (int i = 0; i < n_hex_nodes; ++i)
+    fe.reinit(mesh_, c);
+    for (int i = 0; i < nodes.size(); ++i)
       if (constrained(nodes[i]))
         for (int q = 0; q < fe.n_qpoints(); ++q)
           sum[nodes[i]] += dot(fe.grad(i, q), fe.grad(i, q)) * fe.JxW(q);

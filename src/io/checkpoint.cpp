@@ -335,9 +335,7 @@ RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
   std::vector<double> coordinates;
   for (const Point &x : mesh.coordinates)
     coordinates.insert(coordinates.end(), x.begin(), x.end());
-  std::vector<int> cells;
-  for (const auto &c : mesh.connectivity)
-    cells.insert(cells.end(), c.begin(), c.end());
+  const std::vector<int> &cells = mesh.cell_node_ids;
   std::uint64_t hash = fnv1a(coordinates.data(), coordinates.size());
   hash = fnv1a(cells.data(), cells.size(), hash);
   hash = fnv1a(mesh.block_id.data(), mesh.block_id.size(), hash);

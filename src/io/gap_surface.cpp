@@ -33,8 +33,7 @@ GapSurface::GapSurface(const Mesh &mesh)
   {
     std::array<std::int64_t, 4> quad{};
     for (int i = 0; i < 4; ++i)
-      quad[i] = point_of_pair.at(
-          {mesh.connectivity[face.cell_a][hex_face_nodes[face.face_a][i]], face.node_b[i]});
+      quad[i] = point_of_pair.at({mesh.face_node(face.cell_a, face.face_a, i), face.node_b[i]});
     quads.push_back(quad);
   }
   if (points.empty())

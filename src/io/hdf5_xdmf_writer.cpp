@@ -33,12 +33,19 @@ struct Hdf5XdmfWriter::Impl
 
   void write_mesh(const Mesh &mesh, const std::vector<int> &owned_nodes,
                   const std::vector<int> &owned_cells, const std::vector<int> &cell_rank) const;
+  /// /mesh/topology, the cells in XDMF's node order: (cells x nodes) for one type, or
+  /// "Mixed" (each cell's XDMF code, then its nodes).
+  void write_xdmf_topology(const Mesh &mesh, const std::vector<int> &owned_cells,
+                           hid_t group) const;
   void write_field(const FieldSpec &field, const std::vector<double> &values);
   /// The name of the step in progress (the last one begun), for messages.
   std::string step_name() const { return internal::step_group_name(index.n_steps() - 1); }
 
   MPI_Comm comm;
   std::string base;
+  /// Whether XDMF reads the cells from /mesh/topology (internal::xdmf_topology); set before
+  /// `index` is made.
+  bool own_topology_dataset = false;
   internal::OwnedRows node_rows;
   internal::OwnedRows cell_rows;
   internal::ParallelHdf5File file;
@@ -61,7 +68,8 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
                            const std::vector<int> &owned_cells)
     : comm(communicator), base(base_path), node_rows(owned_nodes, mesh.n_nodes()),
       cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".running.h5"),
-      index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells()),
+      index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells(),
+            internal::xdmf_topology(mesh, own_topology_dataset)),
       gap(mesh), gap_rows({}, 0)
 {
   std::map<int, std::size_t> owned_position;
@@ -95,6 +103,37 @@ void Hdf5XdmfWriter::Impl::describe(const hid_t group, const std::string &name) 
                         "describing field " + name);
 }
 
+void Hdf5XdmfWriter::Impl::write_xdmf_topology(const Mesh &mesh,
+                                               const std::vector<int> &owned_cells,
+                                               const hid_t group) const
+{
+  const bool mixed = mesh.types().size() > 1;
+  std::vector<std::int64_t> entries;
+  std::vector<int> owned_entries; // Mixed: this rank's positions in the 1-D dataset
+  for (const int c : owned_cells)
+  {
+    const ReferenceCell &cell = mesh.reference_cell(c);
+    const Span<const int> nodes = mesh.cell_nodes(c);
+    if (mixed)
+    {
+      const int first = c + mesh.cell_offsets[c]; // the codes and nodes of the cells before
+      for (int k = 0; k <= nodes.size(); ++k)
+        owned_entries.push_back(first + k);
+      entries.push_back(cell.xdmf_code());
+    }
+    for (int i = 0; i < nodes.size(); ++i)
+      entries.push_back(nodes[cell.xdmf_order().empty() ? i : cell.xdmf_order()[i]]);
+  }
+  if (mixed)
+    file.write_rows(
+        group, "topology",
+        internal::OwnedRows(owned_entries,
+                            mesh.n_cells() + static_cast<int>(mesh.cell_node_ids.size())),
+        1, entries);
+  else
+    file.write_rows(group, "topology", cell_rows, mesh.reference_cell(0).n_nodes(), entries);
+}
+
 void Hdf5XdmfWriter::Impl::write_mesh(const Mesh &mesh, const std::vector<int> &owned_nodes,
                                       const std::vector<int> &owned_cells,
                                       const std::vector<int> &cell_rank) const
@@ -106,18 +145,25 @@ void Hdf5XdmfWriter::Impl::write_mesh(const Mesh &mesh, const std::vector<int> &
     coordinates.insert(coordinates.end(), mesh.coordinates[n].begin(), mesh.coordinates[n].end());
   file.write_rows(group.get(), "coordinates", node_rows, 3, coordinates);
 
+  // (cells x the most nodes of a cell), Exodus order, a smaller cell's row padded with -1.
+  int width = 0;
+  for (const CellType type : mesh.types())
+    width = std::max(width, ReferenceCell::of(type).n_nodes());
   std::vector<std::int64_t> connectivity;
   std::vector<std::int32_t> block_id;
   std::vector<std::int32_t> owner;
-  connectivity.reserve(n_hex_nodes * owned_cells.size());
+  connectivity.reserve(static_cast<std::size_t>(width) * owned_cells.size());
   for (const int c : owned_cells)
   {
-    connectivity.insert(connectivity.end(), mesh.connectivity[c].begin(),
-                        mesh.connectivity[c].end());
+    const Span<const int> nodes = mesh.cell_nodes(c);
+    connectivity.insert(connectivity.end(), nodes.begin(), nodes.end());
+    connectivity.insert(connectivity.end(), width - nodes.size(), -1);
     block_id.push_back(mesh.block_id[c]);
     owner.push_back(cell_rank[c]);
   }
-  file.write_rows(group.get(), "connectivity", cell_rows, n_hex_nodes, connectivity);
+  file.write_rows(group.get(), "connectivity", cell_rows, width, connectivity);
+  if (own_topology_dataset)
+    write_xdmf_topology(mesh, owned_cells, group.get());
   file.write_rows(group.get(), "block_id", cell_rows, 1, block_id);
   file.write_rows(group.get(), "cell_rank", cell_rows, 1, owner);
 

@@ -2,7 +2,10 @@
 /// Results in one HDF5 file per run, written collectively with MPI-IO, and an
 /// XDMF file beside it for ParaView. The layout is in doc/output-format.md:
 ///   /mesh/coordinates   (nodes x 3) double
-///   /mesh/connectivity  (cells x 8) int64, Exodus HEX8 order, 0-based
+///   /mesh/connectivity  (cells x n) int64, Exodus node order, 0-based; n the most nodes of a
+///                       cell (8 for hexahedra), a smaller cell's row padded with -1
+///   /mesh/topology      the cells as XDMF reads them, when /mesh/connectivity will not do
+///                       (several types: "Mixed", 1-D; quadratic hexahedra: VTK node order)
 ///   /mesh/block_id      (cells) int32
 ///   /mesh/cell_rank     (cells) int32, the owning rank
 ///   /steps/NNNNNN/      attributes time, cycle, dt; node fields (nodes) or

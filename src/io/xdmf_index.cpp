@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 
 namespace kiln
 {
@@ -74,10 +75,58 @@ std::string step_group_name(const int step)
   return s.str();
 }
 
+namespace
+{
+/// XDMF's TopologyType name of a volume type.
+std::string xdmf_name(const CellType type)
+{
+  switch (type)
+  {
+  case CellType::hex8:
+    return "Hexahedron";
+  case CellType::tet4:
+    return "Tetrahedron";
+  case CellType::wedge6:
+    return "Wedge";
+  case CellType::pyramid5:
+    return "Pyramid";
+  case CellType::tet10:
+    return "Tetrahedron_10";
+  case CellType::hex20:
+    return "Hexahedron_20";
+  case CellType::hex27:
+    return "Hexahedron_27";
+  default:
+    throw InternalError("no XDMF volume topology for " + ReferenceCell::of(type).name());
+  }
+}
+} // namespace
+
+XdmfTopology xdmf_topology(const Mesh &mesh, bool &needs_own_dataset)
+{
+  const std::vector<CellType> types = mesh.types();
+  needs_own_dataset = types.size() > 1;
+  for (const CellType type : types)
+    needs_own_dataset = needs_own_dataset || !ReferenceCell::of(type).xdmf_order().empty();
+  XdmfTopology topology;
+  topology.dataset = needs_own_dataset ? "/mesh/topology" : "/mesh/connectivity";
+  if (types.size() == 1)
+  {
+    topology.type = xdmf_name(types.front());
+    topology.nodes_per_element = ReferenceCell::of(types.front()).n_nodes();
+  }
+  else
+  {
+    topology.type = "Mixed";
+    topology.n_entries = static_cast<long long>(mesh.n_cells() + mesh.cell_node_ids.size());
+  }
+  return topology;
+}
+
 XdmfIndex::XdmfIndex(const MPI_Comm comm, const std::string &xmf_path, const std::string &h5_path,
-                     const int n_nodes, const int n_cells)
+                     const int n_nodes, const int n_cells, XdmfTopology topology)
     : comm_(comm), xmf_path_(xmf_path), h5_name_(file_name_of(h5_path)), n_nodes_(n_nodes),
-      n_cells_(n_cells)
+      n_cells_(n_cells), topology_(std::move(topology))
 {
 }
 
@@ -132,9 +181,18 @@ void XdmfIndex::write_grid(std::ostream &out, const std::string &indent, const S
       << "\" GridType=\"Uniform\">\n";
   if (step)
     out << in1 << "<Time Value=\"" << std::setprecision(17) << step->time << "\"/>\n";
-  out << in1 << "<Topology TopologyType=\"Hexahedron\" NumberOfElements=\"" << cells
-      << "\" NodesPerElement=\"8\">\n";
-  write_data_item(out, in2, "/mesh/connectivity", cells + " 8", "Int", 8);
+  if (topology_.type == "Mixed")
+  {
+    out << in1 << "<Topology TopologyType=\"Mixed\" NumberOfElements=\"" << cells << "\">\n";
+    write_data_item(out, in2, topology_.dataset, std::to_string(topology_.n_entries), "Int", 8);
+  }
+  else
+  {
+    const std::string per_element = std::to_string(topology_.nodes_per_element);
+    out << in1 << "<Topology TopologyType=\"" << topology_.type << "\" NumberOfElements=\"" << cells
+        << "\" NodesPerElement=\"" << per_element << "\">\n";
+    write_data_item(out, in2, topology_.dataset, cells + " " + per_element, "Int", 8);
+  }
   out << in1 << "</Topology>\n";
   out << in1 << "<Geometry GeometryType=\"XYZ\">\n";
   write_data_item(out, in2, "/mesh/coordinates", nodes + " 3", "Float", 8);

@@ -6,6 +6,7 @@
 /// a Temporal collection "gap" comes first: per step the gap surface (quadrilaterals) with
 /// the step's node fields at its points.
 #include "io/field_spec.hpp"
+#include "mesh/mesh.hpp"
 
 #include <mpi.h>
 
@@ -19,13 +20,29 @@ namespace internal
 /// The HDF5 group of output step `step` under /steps: its number in six digits.
 std::string step_group_name(int step);
 
+/// How the cells are listed for XDMF: one type (`type` an XDMF TopologyType name, the
+/// dataset (cells x nodes_per_element)) or several ("Mixed": the 1-D dataset of n_entries
+/// values, each cell's XDMF type code followed by its nodes).
+struct XdmfTopology
+{
+  std::string type;
+  int nodes_per_element = 0; ///< one type only
+  long long n_entries = 0;   ///< "Mixed" only
+  std::string dataset;       ///< e.g. "/mesh/connectivity"
+};
+
+/// The XDMF topology of `mesh`: its one type's name, or "Mixed" (xdmf_index.cpp has the
+/// names). `needs_own_dataset` is set when XDMF cannot read /mesh/connectivity (Exodus order,
+/// padded with -1): several types, or a type whose XDMF node order differs from Exodus'.
+XdmfTopology xdmf_topology(const Mesh &mesh, bool &needs_own_dataset);
+
 class XdmfIndex
 {
 public:
   /// The index `xmf_path` of the HDF5 file `h5_path` (named by its file name alone, so the two
   /// files stay together) of a mesh of `n_nodes` nodes and `n_cells` cells.
   XdmfIndex(MPI_Comm comm, const std::string &xmf_path, const std::string &h5_path, int n_nodes,
-            int n_cells);
+            int n_cells, XdmfTopology topology);
   const std::string &path() const { return xmf_path_; }
   /// From now on the index is `xmf_path` and points at `h5_path` (the final names).
   void rename(const std::string &xmf_path, const std::string &h5_path);
@@ -65,6 +82,7 @@ private:
   std::string h5_name_; ///< the HDF5 file's name, relative to the XDMF file's folder
   int n_nodes_;
   int n_cells_;
+  XdmfTopology topology_;
   int n_gap_points_ = 0;
   int n_gap_quads_ = 0;
   std::vector<Step> steps_;

@@ -129,10 +129,11 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
         for (int i = (block == 1 ? 0 : nx / 2); i < (block == 1 ? nx / 2 : nx); ++i)
         {
           const int cell = mesh.n_cells();
-          mesh.connectivity.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                                       node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
-                                       node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
-          mesh.block_id.push_back(block);
+          mesh.add_cell(CellType::hex8,
+                        {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                         node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                         node(i, j + 1, k + 1)},
+                        block);
           if (i == 0)
             add_side(mesh.side_sets[0], cell, 3);
           if (i == nx - 1)
@@ -167,7 +168,7 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
     for (int side = 0; side < 2; ++side)
       for (int c = 0; c < mesh.n_cells(); ++c)
       {
-        const auto &nodes = mesh.connectivity[c];
+        const Span<const int> nodes = mesh.cell_nodes(c);
         const int index =
             axis == 1 ? nodes[0] / (nx + 1) % (ny + 1) : nodes[0] / ((nx + 1) * (ny + 1));
         if (side == 0 && index == n / 2 - 1)

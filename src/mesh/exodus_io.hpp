@@ -9,14 +9,14 @@
 
 namespace kiln
 {
-/// Reads every element block (all must be 8-node hexahedra: "HEX8", "HEX" or
-/// "HEXAHEDRON", any case, with 8 nodes per element) and
+/// Reads every element block (each of a volume type Kiln supports: exodus_cell_type(), e.g.
+/// "HEX8", "HEX" or "HEXAHEDRON", any case, with 8 nodes per element) and
 /// every side set. Coordinates are multiplied by `scale` (Cubit meshes in cm
 /// are read with 0.01). Nodes and cells keep the file's order (0-based);
 /// cells are numbered block after block as Exodus does. Side sets are sorted
 /// by id and carry their names when the file has them. Node sets are ignored.
 /// Throws InputError naming the file for a missing or unreadable file, a truncated
-/// or damaged netCDF classic file (check_netcdf_file), a non-HEX8 block (naming the
+/// or damaged netCDF classic file (check_netcdf_file), a block of another type (naming the
 /// block and its element type), or a 2D mesh.
 Mesh read_exodus_mesh(const std::string &path, double scale);
 

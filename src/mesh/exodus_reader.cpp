@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -32,20 +33,6 @@ void check_exodus(const int status, const std::string &path, const std::string &
                    "Exodus II error " << status << " while " << what
                                       << "; the file may be damaged or not an Exodus II mesh: "
                                          "re-export it from the mesh generator");
-}
-
-std::string to_upper(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](const unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return s;
-}
-
-/// An 8-node hexahedron: Exodus names it "HEX8", "HEX" or "HEXAHEDRON" (any case; Cubit
-/// and other writers differ), so any name starting with HEX with 8 nodes per element.
-bool is_hex8(const std::string &element_type, const int n_per_elem)
-{
-  return to_upper(element_type).rfind("HEX", 0) == 0 && n_per_elem == n_hex_nodes;
 }
 
 /// Exodus 6.02 reads whole netCDF variables (block and side set ids, connectivity, side
@@ -130,7 +117,7 @@ void check_element_type(const int exo, const std::string &path, const int index,
                                     << " Exodus II allows; the file is damaged: re-export it");
 }
 
-/// Reads the element blocks (in file order) into mesh.connectivity and mesh.block_id.
+/// Reads the element blocks (in file order) into the mesh's cells and block ids.
 void read_blocks(const int exo, const std::string &path, const int n_blocks, const int n_nodes,
                  Mesh &mesh)
 {
@@ -155,37 +142,39 @@ void read_blocks(const int exo, const std::string &path, const int n_blocks, con
     int n_elems = 0, n_per_elem = 0, n_attr = 0;
     check_exodus(ex_get_elem_block(exo, id, type, &n_elems, &n_per_elem, &n_attr), path,
                  "reading the parameters of element block " + std::to_string(id));
-    KILN_CHECK_INPUT(is_hex8(type, n_per_elem), path,
+    const std::optional<CellType> cell_type = exodus_cell_type(type, n_per_elem);
+    KILN_CHECK_INPUT(cell_type.has_value(), path,
                      "element block " << id << " has element type \"" << type << "\" with "
                                       << n_per_elem
-                                      << " nodes per element; Kiln supports 8-node hexahedra "
-                                         "only (HEX8, HEX or HEXAHEDRON with 8 nodes): remesh "
-                                         "the block with 8-node hexahedra");
+                                      << " nodes per element; Kiln supports the volume elements "
+                                      << supported_volume_types()
+                                      << " (shells, beams and 2D elements are not supported): "
+                                         "remesh the block with one of these");
+    const int n_cell_nodes = ReferenceCell::of(*cell_type).n_nodes();
     KILN_CHECK_INPUT(n_elems >= 0, path,
                      "element block " << id << " announces " << n_elems
                                       << " elements; the file is damaged: re-export it");
     if (n_elems == 0)
       continue;
     check_variable_size(exo, path, "connect" + std::to_string(index),
-                        static_cast<long long>(n_elems) * n_hex_nodes,
+                        static_cast<long long>(n_elems) * n_cell_nodes,
                         "the connectivity of element block " + std::to_string(id));
-    std::vector<int> conn(static_cast<std::size_t>(n_elems) * n_hex_nodes);
+    std::vector<int> conn(static_cast<std::size_t>(n_elems) * n_cell_nodes);
     check_exodus(ex_get_elem_conn(exo, id, conn.data()), path,
                  "reading the connectivity of element block " + std::to_string(id));
     for (int e = 0; e < n_elems; ++e)
     {
-      std::array<int, 8> cell{};
-      for (int k = 0; k < n_hex_nodes; ++k)
+      int *cell = conn.data() + static_cast<std::size_t>(e) * n_cell_nodes;
+      for (int k = 0; k < n_cell_nodes; ++k)
       {
-        const int node = conn[static_cast<std::size_t>(e) * n_hex_nodes + k];
+        const int node = cell[k];
         KILN_CHECK_INPUT(node >= 1 && node <= n_nodes, path,
                          "element " << e + 1 << " of element block " << id << " refers to node "
                                     << node << ", outside 1.." << n_nodes
                                     << "; the file is damaged: re-export it");
         cell[k] = node - 1;
       }
-      mesh.connectivity.push_back(cell);
-      mesh.block_id.push_back(id);
+      mesh.add_cell(*cell_type, cell, id);
     }
   }
 }
@@ -255,11 +244,13 @@ void read_side_sets(const int exo, const std::string &path, const int n_side_set
                                    << "): side number " << sides[i]
                                    << " is not a side (they count from 1); the file is "
                                       "damaged: re-export it");
-      KILN_CHECK_INPUT(sides[i] <= n_hex_faces, path,
+      const ReferenceCell &cell = mesh.reference_cell(elems[i] - 1);
+      KILN_CHECK_INPUT(sides[i] <= cell.n_faces(), path,
                        "side set " << set.id << ", entry " << i + 1 << " (element " << elems[i]
-                                   << "): side number " << sides[i]
-                                   << " is outside 1..6, the sides of a HEX8; the side set "
-                                      "may hold edges or nodes: redefine it on element faces");
+                                   << "): side number " << sides[i] << " is outside 1.."
+                                   << cell.n_faces() << ", the sides of a " << cell.name()
+                                   << "; the side set may hold edges or nodes: redefine it on "
+                                      "element faces");
       // A face listed twice would take its flux, traction or pressure twice: keep it once.
       if (!seen.insert({elems[i], sides[i]}).second)
       {

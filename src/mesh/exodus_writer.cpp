@@ -40,12 +40,16 @@ void put_blocks(const int exo, const std::string &path, const Mesh &mesh,
     const int id = layout.block_ids[b];
     const std::vector<int> &cells = layout.block_cells[b];
     const std::string what = "writing element block " + std::to_string(id);
-    check_exodus_write(ex_put_elem_block(exo, id, "HEX8", static_cast<int64_t>(cells.size()),
-                                         n_hex_nodes, cell_rank != nullptr ? 1 : 0),
+    // A block holds cells of one type (check_mesh); an empty block is written as HEX8.
+    const ReferenceCell &type =
+        ReferenceCell::of(cells.empty() ? CellType::hex8 : mesh.cell_type(cells.front()));
+    check_exodus_write(ex_put_elem_block(exo, id, type.name().c_str(),
+                                         static_cast<int64_t>(cells.size()), type.n_nodes(),
+                                         cell_rank != nullptr ? 1 : 0),
                        path, what);
     std::vector<int> conn;
     for (const int c : cells)
-      for (const int node : mesh.connectivity[c])
+      for (const int node : mesh.cell_nodes(c))
       {
         KILN_ASSERT(node >= 0 && node < mesh.n_nodes(), "cell " << c << " node " << node);
         conn.push_back(node + 1);
@@ -87,7 +91,8 @@ void put_sets(const int exo, const std::string &path, const Mesh &mesh, const Ex
     for (int i = 0; i < set.n_sides(); ++i)
     {
       KILN_ASSERT(set.cells[i] >= 0 && set.cells[i] < mesh.n_cells(), "side set " << set.id);
-      KILN_ASSERT(set.faces[i] >= 0 && set.faces[i] < n_hex_faces, "side set " << set.id);
+      KILN_ASSERT(set.faces[i] >= 0 && set.faces[i] < mesh.reference_cell(set.cells[i]).n_faces(),
+                  "side set " << set.id);
       elems.push_back(file_number[set.cells[i]]);
       sides.push_back(set.faces[i] + 1);
     }
@@ -166,8 +171,8 @@ ExodusLayout exodus_layout(const Mesh &mesh, const std::vector<int> &gap_side_se
 
     std::vector<int> nodes;
     for (int i = 0; i < set.n_sides(); ++i)
-      for (const int k : hex_face_nodes[set.faces[i]])
-        nodes.push_back(mesh.connectivity[set.cells[i]][k]);
+      for (const int n : mesh.face_nodes(set.cells[i], set.faces[i]))
+        nodes.push_back(n);
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     layout.side_set_nodes.push_back(std::move(nodes));

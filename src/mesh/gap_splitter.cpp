@@ -20,7 +20,7 @@ std::map<FaceKey, std::vector<std::pair<int, int>>> face_cells(const Mesh &mesh)
 {
   std::map<FaceKey, std::vector<std::pair<int, int>>> faces;
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (int f = 0; f < n_hex_faces; ++f)
+    for (int f = 0; f < mesh.reference_cell(c).n_faces(); ++f)
       faces[mesh.face_key(c, f)].emplace_back(c, f);
   return faces;
 }
@@ -179,7 +179,7 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
     for (const int n : entry.first)
       node_parts[n];
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       if (auto it = node_parts.find(n); it != node_parts.end())
         it->second.insert(part[c]);
 
@@ -199,7 +199,7 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
     }
   }
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (int &n : mesh.connectivity[c])
+    for (int &n : mesh.cell_nodes(c))
       if (auto it = copy.find({n, part[c]}); it != copy.end())
         n = it->second;
 
@@ -212,11 +212,17 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
     auto side_a = faces.at(key)[0], side_b = faces.at(key)[1];
     if (part[side_a.first] > part[side_b.first])
       std::swap(side_a, side_b);
-    const auto areas = quad_nodal_areas(face_nodes(mesh, side_a.first, side_a.second));
-    GapFace gap_face{side_a.first, side_a.second, side_b.first, side_b.second, {-1, -1, -1, -1}, g};
-    for (int i = 0; i < 4; ++i)
+    const FaceNodalAreas areas = face_nodal_areas(mesh, side_a.first, side_a.second);
+    const int n_face_nodes = static_cast<int>(areas.area.size());
+    GapFace gap_face{side_a.first,
+                     side_a.second,
+                     side_b.first,
+                     side_b.second,
+                     std::vector<int>(n_face_nodes, -1),
+                     g};
+    for (int i = 0; i < n_face_nodes; ++i)
     {
-      const int a = mesh.connectivity[side_a.first][hex_face_nodes[side_a.second][i]];
+      const int a = mesh.face_node(side_a.first, side_a.second, i);
       const int b = copy.at({mesh.parent_node[a], part[side_b.first]});
       const auto [it, added] =
           pair_index.emplace(std::make_pair(a, b), static_cast<int>(mesh.gap_pairs.size()));

@@ -1,5 +1,7 @@
 #include "mesh/hex_geometry.hpp"
 
+#include "elements/finite_element.hpp"
+
 #include <cmath>
 
 namespace kiln
@@ -20,7 +22,7 @@ HexNodes cell_nodes(const Mesh &mesh, const int cell)
 {
   HexNodes x;
   for (int i = 0; i < n_hex_nodes; ++i)
-    x[i] = mesh.coordinates[mesh.connectivity[cell][i]];
+    x[i] = mesh.coordinates[mesh.cell_nodes(cell)[i]];
   return x;
 }
 
@@ -28,7 +30,7 @@ QuadNodes face_nodes(const Mesh &mesh, const int cell, const int face)
 {
   QuadNodes x;
   for (int i = 0; i < 4; ++i)
-    x[i] = mesh.coordinates[mesh.connectivity[cell][hex_face_nodes[face][i]]];
+    x[i] = mesh.coordinates[mesh.face_node(cell, face, i)];
   return x;
 }
 
@@ -100,28 +102,29 @@ bool append_orthonormal(std::vector<Point> &basis, Point v)
   return true;
 }
 
-QuadNodalAreas quad_nodal_areas(const QuadNodes &x)
+FaceNodalAreas face_nodal_areas(const CellType face_type, const Point *x)
 {
-  static constexpr double r[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  const double g = 1.0 / std::sqrt(3.0);
-  QuadNodalAreas out{};
-  for (int q = 0; q < 4; ++q)
+  const ReferenceValues &ref = ReferenceValues::of(face_type);
+  const int n = ref.n_shape;
+  FaceNodalAreas out;
+  out.area_vector.assign(n, Point{0.0, 0.0, 0.0});
+  out.area.assign(n, 0.0);
+  for (int q = 0; q < ref.n_qpoints; ++q)
   {
-    const double s = g * r[q][0], t = g * r[q][1];
+    const double *N = ref.shape.data() + q * n;
+    const Point *dN = ref.grad.data() + q * n;
     Point dx_ds{0, 0, 0}, dx_dt{0, 0, 0};
-    double N[4];
-    for (int i = 0; i < 4; ++i)
-    {
-      N[i] = 0.25 * (1 + r[i][0] * s) * (1 + r[i][1] * t);
+    for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
       {
-        dx_ds[d] += x[i][d] * 0.25 * r[i][0] * (1 + r[i][1] * t);
-        dx_dt[d] += x[i][d] * 0.25 * r[i][1] * (1 + r[i][0] * s);
+        dx_ds[d] += x[i][d] * dN[i][0];
+        dx_dt[d] += x[i][d] * dN[i][1];
       }
-    }
-    const Point da = internal::cross(dx_ds, dx_dt); // weight 1 per Gauss point
+    Point da = internal::cross(dx_ds, dx_dt);
+    for (double &v : da)
+      v *= ref.weights[q];
     const double da_norm = internal::norm(da);
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < n; ++i)
     {
       for (int d = 0; d < 3; ++d)
         out.area_vector[i][d] += N[i] * da[d];
@@ -129,6 +132,14 @@ QuadNodalAreas quad_nodal_areas(const QuadNodes &x)
     }
   }
   return out;
+}
+
+FaceNodalAreas face_nodal_areas(const Mesh &mesh, const int c, const int face)
+{
+  std::vector<Point> x;
+  for (const int n : mesh.face_nodes(c, face))
+    x.push_back(mesh.coordinates[n]);
+  return face_nodal_areas(mesh.reference_cell(c).face_type(face), x.data());
 }
 
 std::array<std::array<double, 3>, 3> rotation_matrix(const double phi_degrees,

@@ -27,15 +27,18 @@ const std::array<Point, 8> &hex_gauss_points();
 /// Volume by 2x2x2 Gauss quadrature (exact for trilinear maps).
 double hex_volume(const HexNodes &x);
 
-/// For each face node i: integral over the face of N_i n dA (the node's share of
-/// the area vector), and of N_i dA (its share of the area), by 2x2 Gauss
-/// quadrature. n follows the right-hand rule of the node order.
-struct QuadNodalAreas
+/// For each face node i: the integral over the face of N_i n dA (the node's share of the area
+/// vector) and of N_i dA (its share of the area), by the face type's quadrature. n follows
+/// the right-hand rule of the node order.
+struct FaceNodalAreas
 {
-  std::array<Point, 4> area_vector;
-  std::array<double, 4> area;
+  std::vector<Point> area_vector;
+  std::vector<double> area;
 };
-QuadNodalAreas quad_nodal_areas(const QuadNodes &x);
+/// Of a face of `face_type` with these node coordinates.
+FaceNodalAreas face_nodal_areas(CellType face_type, const Point *x);
+/// Of local face `face` of cell c.
+FaceNodalAreas face_nodal_areas(const Mesh &mesh, int c, int face);
 
 /// Rotation matrix A = Rx(theta) Ry(phi), angles in degrees, right-handed
 /// (see doc/mesh.md and the contact-box spec).

@@ -21,10 +21,11 @@ MeshBodies mesh_bodies(const Mesh &mesh)
 {
   std::vector<int> parent(mesh.n_nodes());
   std::iota(parent.begin(), parent.end(), 0);
-  for (const auto &cell : mesh.connectivity)
+  for (int c = 0; c < mesh.n_cells(); ++c)
   {
+    const Span<const int> cell = mesh.cell_nodes(c);
     const int first = root(parent, cell[0]);
-    for (int i = 1; i < 8; ++i)
+    for (int i = 1; i < cell.size(); ++i)
     {
       const int r = root(parent, cell[i]);
       if (r != first)
@@ -34,8 +35,9 @@ MeshBodies mesh_bodies(const Mesh &mesh)
   MeshBodies bodies;
   bodies.body.assign(mesh.n_nodes(), -1);
   std::vector<int> index_of_root(mesh.n_nodes(), -1);
-  for (const auto &cell : mesh.connectivity)
+  for (int c = 0; c < mesh.n_cells(); ++c)
   {
+    const Span<const int> cell = mesh.cell_nodes(c);
     int &index = index_of_root[root(parent, cell[0])];
     if (index < 0)
       index = bodies.count++;

@@ -1,11 +1,12 @@
 #include "mesh/mesh_checks.hpp"
 
 #include "base/errors.hpp"
-#include "mesh/hex_geometry.hpp"
+#include "elements/finite_element.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace kiln
@@ -15,12 +16,35 @@ namespace
 /// The largest distance from node 0 of a cell to its other nodes (std::hypot: the squares
 /// of a cell 1e-170 m across underflow to 0, which made a tiny Coordinate Scale look like a
 /// mesh of collapsed cells).
-double cell_extent(const HexNodes &x)
+double cell_extent(const Mesh &mesh, const int c)
 {
+  const Span<const int> nodes = mesh.cell_nodes(c);
+  const Point &x0 = mesh.coordinates[nodes[0]];
   double d = 0.0;
-  for (int i = 1; i < n_hex_nodes; ++i)
-    d = std::max(d, std::hypot(x[i][0] - x[0][0], x[i][1] - x[0][1], x[i][2] - x[0][2]));
+  for (const int n : nodes)
+  {
+    const Point &x = mesh.coordinates[n];
+    d = std::max(d, std::hypot(x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]));
+  }
   return d;
+}
+
+/// det(dx/dxi) of cell c at quadrature point q of its type's rule.
+double jacobian_determinant(const Mesh &mesh, const int c, const ReferenceValues &ref, const int q)
+{
+  const Span<const int> nodes = mesh.cell_nodes(c);
+  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; // J[d][r] = dx_d/dxi_r
+  for (int i = 0; i < nodes.size(); ++i)
+  {
+    const Point &x = mesh.coordinates[nodes[i]];
+    const Point &dN = ref.grad[q * ref.n_shape + i];
+    for (int d = 0; d < 3; ++d)
+      for (int r = 0; r < 3; ++r)
+        J[d][r] += x[d] * dN[r];
+  }
+  return J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+         J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+         J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
 }
 
 /// Cells outside [smallest_cell, largest_cell] metres come from a wrong scale, not from a
@@ -44,7 +68,7 @@ void check_scale(const Mesh &mesh, const std::string &where, const std::string &
   double smallest_extent = std::numeric_limits<double>::max(), largest_extent = 0.0;
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
-    const double extent = cell_extent(cell_nodes(mesh, c));
+    const double extent = cell_extent(mesh, c);
     if (extent < smallest_extent)
       smallest_extent = extent, smallest = c;
     if (extent > largest_extent)
@@ -79,43 +103,56 @@ void check_scale(const Mesh &mesh, const std::string &where, const std::string &
 void check_mesh(const Mesh &mesh, const std::string &where, const std::string &scale_parameter)
 {
   KILN_CHECK_INPUT(mesh.n_cells() > 0, where, "the mesh has no cells");
-  KILN_CHECK_INPUT(mesh.block_id.size() == mesh.connectivity.size(), where,
+  KILN_CHECK_INPUT(mesh.block_id.size() == mesh.cell_types.size(), where,
                    "the mesh has " << mesh.n_cells() << " cells but " << mesh.block_id.size()
                                    << " block ids");
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       KILN_CHECK_INPUT(n >= 0 && n < mesh.n_nodes(), where,
                        "cell " << c + 1 << " (block " << mesh.block_id[c] << ") refers to node "
                                << n + 1 << " but the mesh has " << mesh.n_nodes() << " nodes");
+  // Exodus keeps one element type per block: a block of two types cannot be written.
+  std::map<int, int> first_cell_of_block;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+  {
+    const int first = first_cell_of_block.emplace(mesh.block_id[c], c).first->second;
+    KILN_CHECK_INPUT(mesh.cell_type(c) == mesh.cell_type(first), where,
+                     "element block " << mesh.block_id[c] << " holds cell " << first + 1 << " ("
+                                      << mesh.reference_cell(first).name() << ") and cell " << c + 1
+                                      << " (" << mesh.reference_cell(c).name()
+                                      << "): a block has one element type; put the cells of "
+                                         "each type in a block of their own");
+  }
   std::vector<char> used(mesh.n_nodes(), 0);
-  for (const auto &cell : mesh.connectivity)
-    for (const int n : cell)
-      used[n] = 1;
+  for (const int n : mesh.cell_node_ids)
+    used[n] = 1;
   for (int n = 0; n < mesh.n_nodes(); ++n)
     KILN_CHECK_INPUT(used[n], where,
                      "node " << n + 1 << " belongs to no cell; remove unused nodes from the mesh");
   for (const auto &s : mesh.side_sets)
     for (int k = 0; k < s.n_sides(); ++k)
       KILN_CHECK_INPUT(s.cells[k] >= 0 && s.cells[k] < mesh.n_cells() && s.faces[k] >= 0 &&
-                           s.faces[k] < n_hex_faces,
+                           s.faces[k] < mesh.reference_cell(s.cells[k]).n_faces(),
                        where,
                        "side set " << s.id << " entry " << k + 1 << " (cell " << s.cells[k] + 1
                                    << ", side " << s.faces[k] + 1 << ") is not a face of the mesh");
   check_scale(mesh, where, scale_parameter);
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
-    const HexNodes x = cell_nodes(mesh, c);
     // A flat cell's determinant is round-off of either sign: count as non-positive anything
     // below 1e-12 (d/2)^3, d the largest distance from node 0 (det ~ (h/2)^3 for a cube of side h).
-    const double half = 0.5 * cell_extent(x), det_tolerance = 1e-12 * half * half * half;
-    for (const Point &xi : hex_gauss_points())
+    const double half = 0.5 * cell_extent(mesh, c), det_tolerance = 1e-12 * half * half * half;
+    const ReferenceValues &ref = ReferenceValues::of(mesh.cell_type(c));
+    for (int q = 0; q < ref.n_qpoints; ++q)
     {
-      const double det = hex_jacobian_determinant(x, xi);
+      const double det = jacobian_determinant(mesh, c, ref, q);
       KILN_CHECK_INPUT(det > det_tolerance, where,
-                       "cell " << c + 1 << " (block " << mesh.block_id[c]
+                       "cell " << c + 1 << " (block " << mesh.block_id[c] << ", "
+                               << mesh.reference_cell(c).name()
                                << ") has a non-positive Jacobian determinant " << det
                                << " at a quadrature point: it is inverted or degenerate, or "
-                                  "its nodes are not in Exodus HEX8 order; fix the mesh");
+                                  "its nodes are not in Exodus "
+                               << mesh.reference_cell(c).name() << " order; fix the mesh");
     }
   }
 }

@@ -16,15 +16,23 @@ namespace internal
 std::vector<int> metis_kway(const Mesh &mesh, const int n_parts)
 {
   // The dual graph of the unsplit mesh: a twin node counts as its parent.
+  // Cells are neighbours when they share a face: as many corners as the mesh's smallest face
+  // has (4 for hexahedra, 3 with triangles). The corners alone (not the mid-side nodes of
+  // quadratic cells, of which an edge has 3 with its corners) decide it.
   std::vector<idx_t> eptr(mesh.n_cells() + 1), eind;
-  eind.reserve(static_cast<std::size_t>(mesh.n_cells()) * n_hex_nodes);
+  eind.reserve(mesh.cell_node_ids.size());
+  idx_t ncommon = 4;
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
-    for (const int n : mesh.connectivity[c])
-      eind.push_back(mesh.parent_node.empty() ? n : mesh.parent_node[n]);
+    const Span<const int> nodes = mesh.cell_nodes(c);
+    const ReferenceCell &cell = mesh.reference_cell(c);
+    for (int i = 0; i < cell.n_vertices(); ++i)
+      eind.push_back(mesh.parent_node.empty() ? nodes[i] : mesh.parent_node[nodes[i]]);
     eptr[c + 1] = static_cast<idx_t>(eind.size());
+    for (int f = 0; f < cell.n_faces(); ++f)
+      ncommon = std::min<idx_t>(ncommon, ReferenceCell::of(cell.face_type(f)).n_vertices());
   }
-  idx_t ne = mesh.n_cells(), nn = mesh.n_nodes(), ncommon = 4, numflag = 0;
+  idx_t ne = mesh.n_cells(), nn = mesh.n_nodes(), numflag = 0;
   idx_t *xadj = nullptr, *adjncy = nullptr;
   int status =
       METIS_MeshToDual(&ne, &nn, eptr.data(), eind.data(), &ncommon, &numflag, &xadj, &adjncy);
@@ -107,7 +115,7 @@ std::vector<int> node_owners(const Mesh &mesh, const std::vector<int> &cell_rank
 {
   std::vector<int> low(mesh.n_nodes(), INT_MAX), high(mesh.n_nodes(), -1);
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
     {
       low[n] = std::min(low[n], cell_rank[c]);
       high[n] = std::max(high[n], cell_rank[c]);

@@ -86,8 +86,8 @@ std::vector<Point> condition_node_points(const BoundaryConditionInput &input)
   {
     const SideSet &set = *input.mesh.find_side_set(id);
     for (int s = 0; s < set.n_sides(); ++s)
-      for (const int i : hex_face_nodes[set.faces[s]])
-        points.push_back(input.mesh.coordinates[input.mesh.connectivity[set.cells[s]][i]]);
+      for (const int node : input.mesh.face_nodes(set.cells[s], set.faces[s]))
+        points.push_back(input.mesh.coordinates[node]);
   }
   return points;
 }

@@ -57,8 +57,8 @@ protected:
     {
       const SideSet &set = *mesh.find_side_set(id);
       for (int s = 0; s < set.n_sides(); ++s)
-        for (const int i : hex_face_nodes[set.faces[s]])
-          f(mesh.connectivity[set.cells[s]][i]);
+        for (const int node : mesh.face_nodes(set.cells[s], set.faces[s]))
+          f(node);
     }
   }
 

@@ -70,7 +70,7 @@ InteriorFaceCheck::InteriorFaceCheck(const Mesh &mesh) : mesh_(mesh)
   if (side_faces_.empty())
     return;
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (int f = 0; f < n_hex_faces; ++f)
+    for (int f = 0; f < mesh.reference_cell(c).n_faces(); ++f)
     {
       const FaceKey key = mesh.face_key(c, f);
       if (key < side_faces_.front() || side_faces_.back() < key)

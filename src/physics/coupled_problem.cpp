@@ -491,16 +491,18 @@ std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const 
   prepare(x);
   std::vector<ElasticityKernel::CellAverages> result;
   ElementValues fe;
-  ElasticityKernel::NodalValues T{};
-  ElasticityKernel::NodalDisplacements u{};
+  std::vector<double> T;
+  std::vector<Point> u;
   for (const int c : dofs_.owned_cells())
   {
-    for (int i = 0; i < n_hex_nodes; ++i)
+    T.clear();
+    u.clear();
+    for (const int n : mesh_.cell_nodes(c))
     {
-      T[i] = fields_->T(mesh_.connectivity[c][i]);
-      u[i] = fields_->u(mesh_.connectivity[c][i]);
+      T.push_back(fields_->T(n));
+      u.push_back(fields_->u(n));
     }
-    fe.reinit(cell_nodes(mesh_, c));
+    fe.reinit(mesh_, c);
     result.push_back(mechanics_->elasticity().cell_averages(fe, u, T));
   }
   return result;

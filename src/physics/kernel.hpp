@@ -23,15 +23,15 @@ struct FieldSlots
 };
 
 /// One cell: its shape functions and the nodal fields (constrained unknowns at their
-/// prescribed values), 8 local nodes in HEX8 order.
+/// prescribed values), one local node per node of the cell, in its type's order.
 struct CellState
 {
   const ElementValues &fe;
-  const std::array<double, n_hex_nodes> &T;     ///< [K] (T_ref without a temperature)
-  const std::array<double, n_hex_nodes> &T_dot; ///< [K/s]
-  const std::array<Point, n_hex_nodes> &u;      ///< [m] (0 without a displacement)
-  double dTdot_dT;                              ///< a in Tdot = a T + b [1/s]
-  double time;                                  ///< [s]
+  Span<const double> T;     ///< [K] (T_ref without a temperature)
+  Span<const double> T_dot; ///< [K/s]
+  Span<const Point> u;      ///< [m] (0 without a displacement)
+  double dTdot_dT;          ///< a in Tdot = a T + b [1/s]
+  double time;              ///< [s]
   FieldSlots slots;
 };
 
@@ -47,13 +47,13 @@ public:
   virtual bool constant_jacobian() const { return false; }
 };
 
-/// One boundary face: 4 local nodes in hex_face_nodes order.
+/// One boundary face: one local node per face node, in ReferenceCell::face_nodes order.
 struct FaceState
 {
   const FaceValues &fv;
-  const std::array<double, 4> &T; ///< [K]
-  const std::array<Point, 4> &u;  ///< [m]
-  double time;                    ///< [s]
+  Span<const double> T; ///< [K]
+  Span<const Point> u;  ///< [m]
+  double time;          ///< [s]
   FieldSlots slots;
 };
 
@@ -67,17 +67,17 @@ public:
 };
 
 /// One gap face: the side-a face, its two cells and the local nodes the kernel asked for
-/// (InterfaceKernel::nodes: the 4 side-a face nodes, their 4 twins, then any others).
+/// (InterfaceKernel::nodes: the side-a face nodes, their twins, then any others).
 struct InterfaceState
 {
-  const FaceValues &fv;      ///< the side-a face
-  const ElementValues &fe_a; ///< the side-a cell (set only if the kernel needs_cells())
-  const ElementValues &fe_b; ///< the side-b cell (likewise)
-  const std::array<int, n_hex_nodes> &cell_a; ///< the local node of each node of cell a
-  const std::array<int, n_hex_nodes> &cell_b; ///< likewise for cell b (-1 if absent)
-  const std::vector<double> &T;               ///< per local node [K]
-  const std::vector<Point> &u;                ///< per local node [m]
-  double time;                                ///< [s]
+  const FaceValues &fv;         ///< the side-a face
+  const ElementValues &fe_a;    ///< the side-a cell (set only if the kernel needs_cells())
+  const ElementValues &fe_b;    ///< the side-b cell (likewise)
+  Span<const int> cell_a;       ///< the local node of each node of cell a
+  Span<const int> cell_b;       ///< likewise for cell b (-1 if absent)
+  const std::vector<double> &T; ///< per local node [K]
+  const std::vector<Point> &u;  ///< per local node [m]
+  double time;                  ///< [s]
   FieldSlots slots;
 };
 
@@ -85,8 +85,8 @@ class InterfaceKernel
 {
 public:
   virtual ~InterfaceKernel() = default;
-  /// The nodes of the terms on a gap face: its 4 side-a nodes (hex_face_nodes order), their
-  /// 4 twins, then any other nodes the terms depend on.
+  /// The nodes of the terms on a gap face: its side-a nodes (face_nodes order), their twins,
+  /// then any other nodes the terms depend on.
   virtual std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const;
   /// Whether evaluate() reads the cells' shape functions (InterfaceState::fe_a, fe_b).
   virtual bool needs_cells() const { return false; }

@@ -3,7 +3,6 @@
 #include "base/errors.hpp"
 #include "discretization/element_values.hpp"
 #include "discretization/face_values.hpp"
-#include "mesh/hex_geometry.hpp"
 
 #include <algorithm>
 #include <array>
@@ -120,25 +119,28 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
                                    const Sink &sink) const
 {
   ElementValues fe;
-  LocalSystem local(n_hex_nodes, dofs_.n_node_fields(), jacobian);
-  std::vector<int> nodes(n_hex_nodes);
-  std::array<double, n_hex_nodes> T{}, T_dot{};
-  std::array<Point, n_hex_nodes> u{};
-  const CellState state{fe, T, T_dot, u, fields.a(), fields.time(), slots_};
+  LocalSystem local(0, dofs_.n_node_fields(), jacobian);
+  std::vector<int> nodes;
+  std::array<double, max_cell_nodes> T{}, T_dot{};
+  std::array<Point, max_cell_nodes> u{};
   for (const int c : dofs_.owned_cells())
   {
-    for (int i = 0; i < n_hex_nodes; ++i)
+    const Span<const int> cell = mesh_.cell_nodes(c);
+    const int n = cell.size();
+    nodes.assign(cell.begin(), cell.end());
+    for (int i = 0; i < n; ++i)
     {
-      nodes[i] = mesh_.connectivity[c][i];
       T[i] = fields.T(nodes[i]);
       T_dot[i] = fields.T_dot(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }
+    const CellState state{
+        fe, {T.data(), n}, {T_dot.data(), n}, {u.data(), n}, fields.a(), fields.time(), slots_};
     internal::naming(
         [&]
         {
-          fe.reinit(cell_nodes(mesh_, c));
-          local.clear();
+          fe.reinit(mesh_, c);
+          local.reset(n);
           for (const CellKernel *kernel : cell_kernels_)
             kernel->evaluate(state, local);
           sink(nodes, local);
@@ -153,24 +155,25 @@ void ResidualTerms::evaluate_faces(const NodalFields &fields, const bool jacobia
                                    const Sink &sink) const
 {
   FaceValues fv;
-  LocalSystem local(4, dofs_.n_node_fields(), jacobian);
-  std::vector<int> nodes(4);
-  std::array<double, 4> T{};
-  std::array<Point, 4> u{};
-  const FaceState state{fv, T, u, fields.time(), slots_};
+  LocalSystem local(0, dofs_.n_node_fields(), jacobian);
+  std::vector<int> nodes;
+  std::array<double, max_cell_nodes> T{};
+  std::array<Point, max_cell_nodes> u{};
   for (const BoundaryFace &face : faces_)
   {
-    for (int i = 0; i < 4; ++i)
+    nodes = mesh_.face_nodes(face.cell, face.face);
+    const int n = static_cast<int>(nodes.size());
+    for (int i = 0; i < n; ++i)
     {
-      nodes[i] = mesh_.connectivity[face.cell][hex_face_nodes[face.face][i]];
       T[i] = fields.T(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }
+    const FaceState state{fv, {T.data(), n}, {u.data(), n}, fields.time(), slots_};
     internal::naming(
         [&]
         {
-          fv.reinit(face_nodes(mesh_, face.cell, face.face));
-          local.clear();
+          fv.reinit(mesh_, face.cell, face.face);
+          local.reset(n);
           face.condition->evaluate(state, local);
           sink(nodes, local);
         },
@@ -187,10 +190,9 @@ void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jac
   const InterfaceKernel &kernel = *interface_kernel_;
   FaceValues fv;
   ElementValues fe_a, fe_b;
-  std::array<int, n_hex_nodes> cell_a{}, cell_b{};
+  std::vector<int> cell_a, cell_b;
   std::vector<double> T;
   std::vector<Point> u;
-  const InterfaceState state{fv, fe_a, fe_b, cell_a, cell_b, T, u, fields.time(), slots_};
   for (std::size_t f = 0; f < gap_faces_.size(); ++f)
   {
     const GapFace &face = mesh_.gap_faces[gap_faces_[f]];
@@ -205,7 +207,9 @@ void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jac
     internal::naming(
         [&]
         {
-          fv.reinit(face_nodes(mesh_, face.cell_a, face.face_a));
+          fv.reinit(mesh_, face.cell_a, face.face_a);
+          cell_a.clear();
+          cell_b.clear();
           if (kernel.needs_cells())
           {
             const auto local_of = [&](const int node)
@@ -213,14 +217,14 @@ void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jac
               const auto at = std::find(nodes.begin(), nodes.end(), node);
               return at == nodes.end() ? -1 : static_cast<int>(at - nodes.begin());
             };
-            for (int i = 0; i < n_hex_nodes; ++i)
-            {
-              cell_a[i] = local_of(mesh_.connectivity[face.cell_a][i]);
-              cell_b[i] = local_of(mesh_.connectivity[face.cell_b][i]);
-            }
-            fe_a.reinit(cell_nodes(mesh_, face.cell_a));
-            fe_b.reinit(cell_nodes(mesh_, face.cell_b));
+            for (const int node : mesh_.cell_nodes(face.cell_a))
+              cell_a.push_back(local_of(node));
+            for (const int node : mesh_.cell_nodes(face.cell_b))
+              cell_b.push_back(local_of(node));
+            fe_a.reinit(mesh_, face.cell_a);
+            fe_b.reinit(mesh_, face.cell_b);
           }
+          const InterfaceState state{fv, fe_a, fe_b, cell_a, cell_b, T, u, fields.time(), slots_};
           LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
           kernel.evaluate(state, local);
           sink(nodes, local);

@@ -22,12 +22,12 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
   ElementValues fe;
   for (const int c : dofs.owned_cells())
   {
-    fe.reinit(cell_nodes(mesh, c));
+    fe.reinit(mesh, c);
     for (int q = 0; q < fe.n_qpoints(); ++q)
     {
       double T = 0.0;
-      for (int i = 0; i < n_hex_nodes; ++i)
-        T += fe.shape(i, q) * fields.T(mesh.connectivity[c][i]);
+      for (int i = 0; i < fe.n_shape(); ++i)
+        T += fe.shape(i, q) * fields.T(mesh.cell_nodes(c)[i]);
       sums[0] += T * fe.JxW(q);
       sums[1] += fe.JxW(q);
     }

@@ -104,9 +104,9 @@ std::vector<kiln::Point> exact_displacements(const kiln::Mesh &mesh, const Unifo
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     double x_centroid = 0.0;
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       x_centroid += box_frame(n)[0] / kiln::n_hex_nodes;
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       side[n] = x_centroid < 0 ? -1.0 : 1.0;
   }
   double half_width = 0.0;
@@ -116,8 +116,7 @@ std::vector<kiln::Point> exact_displacements(const kiln::Mesh &mesh, const Unifo
   EXPECT_NE(rollers_y, nullptr);
   if (rollers_y == nullptr)
     return std::vector<Point>(n_nodes, Point{});
-  const double y_fixed = box_frame(
-      mesh.connectivity[rollers_y->cells[0]][kiln::hex_face_nodes[rollers_y->faces[0]][0]])[1];
+  const double y_fixed = box_frame(mesh.face_node(rollers_y->cells[0], rollers_y->faces[0], 0))[1];
   std::vector<Point> u(n_nodes);
   for (int n = 0; n < n_nodes; ++n)
   {

@@ -4,6 +4,7 @@
 /// kiln::rotation_matrix, so that the tests do not share the code under test), the exact
 /// displacement field of a uniform state, the spec's material, the Mesh blocks of the generated
 /// box and of the Cubit mesh, and a deck at uniform temperature.
+#include "mesh/hex_geometry.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/mechanics/elasticity_kernel.hpp"
 #include "support/tensors.hpp"

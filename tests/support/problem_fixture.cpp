@@ -136,7 +136,7 @@ kiln::Mesh distorted_box(const BoxShape &box, const double distortion, const int
     if (outer || gap)
       for (int s = 0; s < set.n_sides(); ++s)
         for (const int i : kiln::hex_face_nodes[set.faces[s]])
-          (outer ? on_boundary : on_gap)[mesh.connectivity[set.cells[s]][i]] = 1;
+          (outer ? on_boundary : on_gap)[mesh.cell_nodes(set.cells[s])[i]] = 1;
   }
   const auto A = kiln::rotation_matrix(box.phi, box.theta);
   std::mt19937 random(20240611u);
@@ -183,7 +183,7 @@ std::vector<char> ProblemFixture::nodes_of_side_set(const int id) const
   const kiln::SideSet &set = *mesh.find_side_set(id);
   for (int s = 0; s < set.n_sides(); ++s)
     for (const int i : kiln::hex_face_nodes[set.faces[s]])
-      on[mesh.connectivity[set.cells[s]][i]] = 1;
+      on[mesh.cell_nodes(set.cells[s])[i]] = 1;
   return on;
 }
 } // namespace kiln_test

@@ -5,6 +5,7 @@
 /// Σ_d ξ_d a_d, ξ in [0, 1]^3, the shape functions are products of the 1D linear functions
 /// ℓ(ξ) = ξ or 1 - ξ, so every integral is a product of 1D integrals (mass_1d, sign) and the
 /// cofactors of A = [a1 a2 a3] (∇φ = A^{-T} ∇_ξ φ̂, A^{-T} = cof(A) / det A).
+#include "discretization/face_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "support/tensors.hpp"
 
@@ -19,6 +20,17 @@ using Edges = std::array<Point, 3>;
 inline constexpr int hex_corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 inline constexpr int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+/// fe.reinit on a HEX8 with these corners.
+inline void reinit(kiln::ElementValues &fe, const kiln::HexNodes &x)
+{
+  fe.reinit(kiln::CellType::hex8, x.data());
+}
+/// fv.reinit on a QUAD4 face with these corners.
+inline void reinit(kiln::FaceValues &fv, const kiln::QuadNodes &x)
+{
+  fv.reinit(kiln::CellType::quad4, x.data());
+}
 
 /// The unit cube [0,1]^3 in Exodus HEX8 order.
 inline kiln::HexNodes unit_cube()

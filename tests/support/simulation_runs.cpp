@@ -102,7 +102,7 @@ double l2_error(const kiln::Simulation &sim, const std::vector<double> &nodal,
                              (1 + corner[i][2] * xi[2]) / 8.0;
             for (int k = 0; k < 3; ++k)
               p[k] += N * x[i][k];
-            T_h += N * nodal[sim.mesh().connectivity[c][i]];
+            T_h += N * nodal[sim.mesh().cell_nodes(c)[i]];
           }
           const double e = T_h - exact(p);
           sum += e * e * w[a] * w[b] * w[d] * kiln::hex_jacobian_determinant(x, xi);

@@ -5,6 +5,7 @@
 // relative.
 // KILN_TEST_NP: 1 2
 #include "io/input_reader.hpp"
+#include "mesh/hex_geometry.hpp"
 #include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
@@ -25,7 +26,7 @@ std::vector<int> mirror_nodes(const kiln::Mesh &mesh)
   // The side of each node: the block of its cells (1: x' < 0, 2: x' > 0).
   std::vector<int> block(mesh.n_nodes(), 0);
   for (int c = 0; c < mesh.n_cells(); ++c)
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       block[n] = mesh.block_id[c];
   const auto key = [&](const int n, const bool mirrored)
   {

@@ -14,6 +14,7 @@
 // Both capacities (Kiln/Thermal/"Capacity") are run; the default's lines are printed as
 // doc/verification/report.py reads them, the other's prefixed by its name.
 // KILN_TEST_NP: 2
+#include "mesh/hex_geometry.hpp"
 #include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>

@@ -38,16 +38,15 @@ public:
   };
   explicit ContactConductanceKernel(const Parameters &p) : p_(p) {}
 
-  /// fv: the side-a face; fe_a, fe_b: its two cells. Local nodes: 0-3 the face's nodes on
-  /// side a, 4-7 their twins; cell_a[i], cell_b[i]: the local node of each cell's node i.
+  /// fv: the side-a face; fe_a, fe_b: its two cells. Local nodes: 0..n-1 the face's n nodes
+  /// on side a, n..2n-1 their twins; cell_a[i], cell_b[i]: the local node of each cell's node i.
   /// T [K] and u [m] per local node. Adds [W] and [W/K], [W/m] to `local` (fields T_slot,
   /// u_slot..u_slot+2).
   void evaluate(const FaceValues &fv, const ElementValues &fe_a, const ElementValues &fe_b,
-                const std::array<int, 8> &cell_a, const std::array<int, 8> &cell_b,
-                const std::vector<double> &T, const std::vector<Point> &u, int T_slot, int u_slot,
-                LocalSystem &local) const;
+                Span<const int> cell_a, Span<const int> cell_b, const std::vector<double> &T,
+                const std::vector<Point> &u, int T_slot, int u_slot, LocalSystem &local) const;
 
-  /// The 4 side-a face nodes, their twins, then the other nodes of both cells (p depends on
+  /// The side-a face nodes, their twins, then the other nodes of both cells (p depends on
   /// them).
   std::vector<int> nodes(const Mesh &mesh, const GapFace &face) const override;
   bool needs_cells() const override { return true; }

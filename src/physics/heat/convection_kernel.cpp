@@ -4,7 +4,7 @@
 
 namespace kiln
 {
-void ConvectionKernel::evaluate(const FaceValues &fv, const std::array<double, 4> &T_nodes,
+void ConvectionKernel::evaluate(const FaceValues &fv, const Span<const double> T_nodes,
                                 const ValueAt &T_ambient_at, LocalSystem &local) const
 {
   constexpr int T_field = static_cast<int>(Field::T);

@@ -22,7 +22,7 @@ public:
   explicit ConvectionKernel(double coefficient) : h_(coefficient) {}
 
   /// T [K] at the face nodes, T_ambient [K]; adds [W] and [W/K].
-  void evaluate(const FaceValues &fv, const std::array<double, 4> &T, const ValueAt &T_ambient,
+  void evaluate(const FaceValues &fv, Span<const double> T, const ValueAt &T_ambient,
                 LocalSystem &local) const;
 
 private:

@@ -27,9 +27,9 @@ public:
 
   /// fv: the side-a face; T_a, T_b [K] at its nodes and at their twins. Adds [W] and
   /// [W/K] to an 8-node local system.
-  void evaluate(const FaceValues &fv, const std::array<double, 4> &T_a,
-                const std::array<double, 4> &T_b, LocalSystem &local) const;
-  /// The same from a gap face's state (local nodes 0-3 on side a, 4-7 their twins).
+  void evaluate(const FaceValues &fv, Span<const double> T_a, Span<const double> T_b,
+                LocalSystem &local) const;
+  /// The same from a gap face's state (local nodes 0..n-1 on side a, n..2n-1 their twins).
   void evaluate(const InterfaceState &state, LocalSystem &local) const override;
   /// A constant conductance.
   bool constant_jacobian() const override { return true; }

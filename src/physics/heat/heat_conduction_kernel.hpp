@@ -26,7 +26,7 @@ namespace kiln
 class HeatConductionKernel final : public CellKernel
 {
 public:
-  using NodalValues = std::array<double, n_hex_nodes>;
+  using NodalValues = Span<const double>;
   /// The capacity matrix: consistent ∫ φ_j φ_i, or lumped by rows' sums.
   enum class Capacity
   {
@@ -37,7 +37,7 @@ public:
   /// rho_c [J/(m^3 K)]; k(T) [W/(m K)].
   HeatConductionKernel(double rho_c, ConductivityModel conductivity, Capacity capacity);
 
-  /// Adds the cell's residual [W] and Jacobian [W/K] to `local` (8 nodes): T [K] and
+  /// Adds the cell's residual [W] and Jacobian [W/K] to `local` (a node per cell node): T [K] and
   /// T_dot [K/s] at the nodes, dTdot_dT = a [1/s].
   void evaluate(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
                 double dTdot_dT, LocalSystem &local) const;

@@ -54,9 +54,8 @@ void DisplacementCondition::add_constraints(const Mesh &mesh, NodalConstraints &
     const SideSet &set = *mesh.find_side_set(id);
     std::vector<char> seen(mesh.n_nodes(), 0);
     for (int s = 0; s < set.n_sides(); ++s)
-      for (const int i : hex_face_nodes[set.faces[s]])
+      for (const int node : mesh.face_nodes(set.cells[s], set.faces[s]))
       {
-        const int node = mesh.connectivity[set.cells[s]][i];
         if (seen[node]++)
           continue;
         const int value = values.at(node);

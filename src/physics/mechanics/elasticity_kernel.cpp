@@ -28,35 +28,16 @@ Tensor strain_at(const ElementValues &fe, const ElasticityKernel::NodalDisplacem
   return strain;
 }
 
-using ShapeValues = std::array<double, n_hex_nodes>;
-
-/// φ_j(x_q), copied once per Gauss point (the table lookup is not free in the inner loops).
-ShapeValues shape_values(const ElementValues &fe, const int q)
-{
-  ShapeValues phi;
-  for (int j = 0; j < n_hex_nodes; ++j)
-    phi[j] = fe.shape(j, q);
-  return phi;
-}
-
 /// T_j − T_ref at the nodes [K]. The difference is interpolated, not T: T ~ 300 K and
 /// T − T_ref ~ 1 K, so interpolating T first would leave a rounding error of ~1e-14 K that
 /// β turns into a spurious stress (and T = T_ref would not give exactly zero).
-ElasticityKernel::NodalValues temperature_change(const ElasticityKernel::NodalValues &T,
-                                                 const double T_ref)
-{
-  ElasticityKernel::NodalValues dT;
-  for (int j = 0; j < n_hex_nodes; ++j)
-    dT[j] = T[j] - T_ref;
-  return dT;
-}
-
-/// Σ_j φ_j v_j.
-double interpolate(const ShapeValues &phi, const ElasticityKernel::NodalValues &v)
+/// Σ_j φ_j (T_j − T_ref) at point q.
+double temperature_change_at(const ElementValues &fe, const ElasticityKernel::NodalValues &T,
+                             const double T_ref, const int q)
 {
   double value = 0.0;
-  for (int j = 0; j < n_hex_nodes; ++j)
-    value += phi[j] * v[j];
+  for (int j = 0; j < fe.n_shape(); ++j)
+    value += fe.shape(j, q) * (T[j] - T_ref);
   return value;
 }
 
@@ -97,34 +78,40 @@ void ElasticityKernel::evaluate(const CellState &state, LocalSystem &local) cons
   evaluate(state.fe, state.u, state.T, body_force_, state.slots.u, state.slots.T, local);
 }
 
-void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacements &u,
+/// The cell's terms with per-cell buffers of capacity N >= fe.n_shape(). With `exact` the
+/// cell has N nodes, a compile-time loop bound (the loops of the common HEX8 unroll);
+/// otherwise the loops run to fe.n_shape().
+template <int N, bool exact>
+void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacements &u,
                                 const NodalValues &T_nodes, const Point &body_force,
                                 const int u_slot, const int T_slot, LocalSystem &local) const
 {
-  KILN_ASSERT(local.n_nodes() == n_hex_nodes, "a cell has 8 nodes, not " << local.n_nodes());
-  KILN_ASSERT(u_slot >= 0 && u_slot + 3 <= local.n_fields(),
-              "u_slot " << u_slot << " out of range for " << local.n_fields() << " fields");
-  KILN_ASSERT(T_slot < local.n_fields() && (T_slot < u_slot || T_slot >= u_slot + 3),
-              "T_slot " << T_slot << " out of range or overlapping u_slot " << u_slot);
-  constexpr int n = n_hex_nodes;
+  const int n = exact ? N : fe.n_shape();
   const bool jacobian = local.has_jacobian();
   const bool coupled = T_slot >= 0 && jacobian;
 
-  // Accumulated over the Gauss points, scattered once at the end:
+  // Accumulated over the quadrature points, scattered once at the end:
   //   residual[i][d]  = R_{i,d}
   //   gg[i][j][k][l]  = ∫ ∂_k φ_i ∂_l φ_j dΩ  (j >= i only: gg[j][i] is its transpose)
   //   phi_grad[i][j][d] = ∫ φ_j ∂_d φ_i dΩ  (coupled only)
-  std::array<Point, n> residual{};
-  std::array<std::array<Tensor, n>, n> gg{};
-  std::array<std::array<Point, n>, n> phi_grad{};
-  std::array<Point, n> grad_JxW;
-  const NodalValues dT_nodes = temperature_change(T_nodes, T_ref_);
+  std::array<Point, N> residual{};
+  std::array<std::array<Tensor, N>, N> gg{};
+  std::array<std::array<Point, N>, N> phi_grad{};
+  std::array<Point, N> grad_JxW;
+  std::array<double, N> dT_nodes, phi;
+  for (int j = 0; j < n; ++j)
+    dT_nodes[j] = T_nodes[j] - T_ref_;
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     const double JxW = fe.JxW(q);
-    const ShapeValues phi = shape_values(fe, q);
-    const Tensor stress = hooke_stress(lambda_, G_, thermal_modulus_, strain_at(fe, u, q),
-                                       interpolate(phi, dT_nodes));
+    // φ_j(x_q), copied once per point (the table lookup is not free in the inner loops).
+    double dT = 0.0;
+    for (int j = 0; j < n; ++j)
+    {
+      phi[j] = fe.shape(j, q);
+      dT += phi[j] * dT_nodes[j];
+    }
+    const Tensor stress = hooke_stress(lambda_, G_, thermal_modulus_, strain_at(fe, u, q), dT);
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k)
         grad_JxW[i][k] = fe.grad(i, q)[k] * JxW;
@@ -181,18 +168,36 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
           local.jacobian(u_slot + d, i, T_slot, j) -= thermal_modulus_ * phi_grad[i][j][d];
 }
 
+void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacements &u,
+                                const NodalValues &T_nodes, const Point &body_force,
+                                const int u_slot, const int T_slot, LocalSystem &local) const
+{
+  KILN_ASSERT(local.n_nodes() == fe.n_shape() && u.size() == fe.n_shape() &&
+                  T_nodes.size() == fe.n_shape(),
+              "a cell of " << fe.n_shape() << " nodes, a local system of " << local.n_nodes());
+  KILN_ASSERT(u_slot >= 0 && u_slot + 3 <= local.n_fields(),
+              "u_slot " << u_slot << " out of range for " << local.n_fields() << " fields");
+  KILN_ASSERT(T_slot < local.n_fields() && (T_slot < u_slot || T_slot >= u_slot + 3),
+              "T_slot " << T_slot << " out of range or overlapping u_slot " << u_slot);
+  if (fe.n_shape() == small_cell_nodes)
+    assemble<small_cell_nodes, true>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
+  else if (fe.n_shape() < small_cell_nodes)
+    assemble<small_cell_nodes, false>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
+  else
+    assemble<max_cell_nodes, false>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
+}
+
 ElasticityKernel::CellAverages ElasticityKernel::cell_averages(const ElementValues &fe,
                                                                const NodalDisplacements &u,
                                                                const NodalValues &T_nodes) const
 {
   CellAverages averages{};
   double volume = 0.0;
-  const NodalValues dT_nodes = temperature_change(T_nodes, T_ref_);
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     const double JxW = fe.JxW(q);
     const Tensor strain = strain_at(fe, u, q);
-    const double dT = interpolate(shape_values(fe, q), dT_nodes);
+    const double dT = temperature_change_at(fe, T_nodes, T_ref_, q);
     add_to_voigt(JxW, strain, averages.strain);
     add_to_voigt(JxW, hooke_stress(lambda_, G_, thermal_modulus_, strain, dT), averages.stress);
     for (int d = 0; d < 3; ++d)

@@ -1,5 +1,5 @@
 #pragma once
-/// The volume kernel of small-strain isotropic linear thermo-elasticity on one Q1 cell.
+/// The volume kernel of small-strain isotropic linear thermo-elasticity on one cell.
 #include "discretization/element_values.hpp"
 #include "discretization/local_system.hpp"
 #include "physics/kernel.hpp"
@@ -19,7 +19,7 @@ using Voigt = std::array<double, 6>;
 ///   dR_{i,d}/du_{j,e}    = ∫ (λ ∂_d φ_i ∂_e φ_j + G (δ_de ∇φ_i·∇φ_j + ∂_e φ_i ∂_d φ_j)) dΩ
 ///   dR_{i,d}/dT_j        = −∫ β φ_j ∂_d φ_i dΩ
 ///
-/// u, ∇u and T are interpolated from the nodal values at the 2x2x2 Gauss points; the
+/// u, ∇u and T are interpolated from the nodal values at the element's quadrature points; the
 /// boundary terms are the BC kernels' (none: traction free). The residual is linear in u and
 /// T, so the Jacobian is exact. The u–u block is symmetric. Only the displacement rows
 /// (fields u_slot .. u_slot + 2) are touched, and the temperature columns (field T_slot) only
@@ -28,19 +28,19 @@ using Voigt = std::array<double, 6>;
 class ElasticityKernel final : public CellKernel
 {
 public:
-  /// u at the 8 nodes [m].
-  using NodalDisplacements = std::array<Point, n_hex_nodes>;
-  /// T at the 8 nodes [K].
-  using NodalValues = std::array<double, n_hex_nodes>;
+  /// u at the cell's nodes [m].
+  using NodalDisplacements = Span<const Point>;
+  /// T at the cell's nodes [K].
+  using NodalValues = Span<const double>;
 
   /// lambda, G [Pa]; alpha [1/K]; T_ref [K] (the temperature of zero thermal strain); the
   /// body force b [N/m^3] of evaluate(CellState).
   ElasticityKernel(double lambda, double G, double alpha, double T_ref,
                    const Point &body_force = Point{});
 
-  /// Adds to `local` (8 nodes) the residual [N] at local field index u_slot + d (d = 0, 1, 2)
-  /// of local node i, the Jacobian d/du_{j,e} [N/m] (field u_slot + e) and, if T_slot >= 0,
-  /// d/dT_j [N/K] (field T_slot). body_force b [N/m^3] is constant over the cell.
+  /// Adds to `local` (one node per cell node) the residual [N] at local field index u_slot + d (d =
+  /// 0, 1, 2) of local node i, the Jacobian d/du_{j,e} [N/m] (field u_slot + e) and, if T_slot >=
+  /// 0, d/dT_j [N/K] (field T_slot). body_force b [N/m^3] is constant over the cell.
   void evaluate(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
                 const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
   /// The same from a cell's state, with the body force given at construction.
@@ -56,7 +56,7 @@ public:
     Voigt strain;
     Voigt thermal_strain;
   };
-  /// ∫ (.) dΩ / ∫ dΩ, both by the 2x2x2 Gauss rule of `fe`.
+  /// ∫ (.) dΩ / ∫ dΩ, both by the quadrature rule of `fe`.
   CellAverages cell_averages(const ElementValues &fe, const NodalDisplacements &u,
                              const NodalValues &T) const;
 
@@ -70,6 +70,14 @@ public:
   double reference_temperature() const { return T_ref_; }
 
 private:
+  /// The capacity of the small cells' buffers: a cell of exactly this many nodes (HEX8, the
+  /// common case) runs with compile-time loop bounds; smaller ones share the buffers, larger
+  /// ones use max_cell_nodes.
+  static constexpr int small_cell_nodes = 8;
+  template <int N, bool exact>
+  void assemble(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
+                const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
+
   double lambda_;
   double G_;
   double alpha_;

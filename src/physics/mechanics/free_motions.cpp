@@ -48,7 +48,7 @@ BodyGeometry body_geometry(const Mesh &mesh, const DofManager &dofs, const std::
   {
     const auto k =
         std::lower_bound(block_ids.begin(), block_ids.end(), mesh.block_id[c]) - block_ids.begin();
-    has_block[body[mesh.connectivity[c][0]] * block_ids.size() + k] = 1;
+    has_block[body[mesh.cell_nodes(c)[0]] * block_ids.size() + k] = 1;
   }
   std::vector<double> total(sums.size()), low(lowest.size()), high(highest.size());
   std::vector<int> blocks(has_block.size());

@@ -40,10 +40,10 @@ void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
     const SideSet &set = *mesh.find_side_set(id);
     for (int s = 0; s < set.n_sides(); ++s)
     {
-      fv.reinit(face_nodes(mesh, set.cells[s], set.faces[s]));
-      for (int i = 0; i < 4; ++i)
+      fv.reinit(mesh, set.cells[s], set.faces[s]);
+      for (int i = 0; i < fv.n_shape(); ++i)
       {
-        const int node = mesh.connectivity[set.cells[s]][hex_face_nodes[set.faces[s]][i]];
+        const int node = mesh.face_node(set.cells[s], set.faces[s], i);
         if (dot(normal[node], normal[node]) == 0.0)
           touched.push_back(node);
         for (int q = 0; q < fv.n_qpoints(); ++q)

@@ -10,6 +10,7 @@
 #include "mesh/gap_splitter.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "support/reference_cells.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -57,7 +58,7 @@ struct Fixture
     kiln::LocalSystem cell(8, 1);
     for (const int c : dofs.owned_cells())
     {
-      fe.reinit(kiln::cell_nodes(mesh, c));
+      kiln_test::reinit(fe, kiln::cell_nodes(mesh, c));
       const auto lids = assembler.cell_lids(c);
       cell.clear();
       for (int q = 0; q < fe.n_qpoints(); ++q)
@@ -79,7 +80,7 @@ struct Fixture
       const auto &face = mesh.gap_faces[k];
       if (cell_rank[face.cell_a] != comm->getRank())
         continue;
-      face_values.reinit(kiln::face_nodes(mesh, face.cell_a, face.face_a));
+      kiln_test::reinit(face_values, kiln::face_nodes(mesh, face.cell_a, face.face_a));
       const auto lids = assembler.gap_face_lids(static_cast<int>(k));
       pair.clear();
       for (int q = 0; q < 4; ++q)
@@ -166,7 +167,7 @@ TEST(Assembler, GapFluxMatchesTheJumpTimesArea)
   std::vector<char> on_b(s.mesh.n_nodes(), 0);
   for (int c = 0; c < s.mesh.n_cells(); ++c)
     if (s.mesh.block_id[c] == 2)
-      for (const int n : s.mesh.connectivity[c])
+      for (const int n : s.mesh.cell_nodes(c))
         on_b[n] = 1;
   for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
     v[i] = on_b[map->getGlobalElement(static_cast<LO>(i))];
@@ -231,7 +232,7 @@ TEST(Assembler, LeavesOutTheTemperatureRowsDisplacementColumns)
       EXPECT_EQ(T_entries, depends ? u_entries : u_entries / 4) << "node " << n;
     }
     const int c = dofs.owned_cells().front();
-    const std::vector<int> nodes(mesh.connectivity[c].begin(), mesh.connectivity[c].end());
+    const std::vector<int> nodes(mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
     kiln::LocalSystem local(8, 4);
     local.jacobian(0, 0, 0, 0) = 1.0; // T-T
     local.jacobian(1, 0, 0, 0) = 1.0; // u-T

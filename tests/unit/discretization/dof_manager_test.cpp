@@ -50,7 +50,7 @@ protected:
     // node_owners' (tested in metis_partitioner_test.cpp), each one of those ranks.
     node_ranks.resize(mesh.n_nodes());
     for (int c = 0; c < mesh.n_cells(); ++c)
-      for (const int n : mesh.connectivity[c])
+      for (const int n : mesh.cell_nodes(c))
         node_ranks[n].insert(cell_rank[c]);
     node_owner = kiln::node_owners(mesh, cell_rank);
     for (int n = 0; n < mesh.n_nodes(); ++n)
@@ -106,14 +106,13 @@ protected:
     std::set<int> nodes;
     for (int c = 0; c < mesh.n_cells(); ++c)
       if (partition[c] == r)
-        nodes.insert(mesh.connectivity[c].begin(), mesh.connectivity[c].end());
+        nodes.insert(mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end());
     for (const auto &face : mesh.gap_faces)
       if (partition[face.cell_a] == r)
       {
         nodes.insert(face.node_b.begin(), face.node_b.end());
         if (layout.contact && layout.displacement)
-          nodes.insert(mesh.connectivity[face.cell_b].begin(),
-                       mesh.connectivity[face.cell_b].end());
+          nodes.insert(mesh.cell_nodes(face.cell_b).begin(), mesh.cell_nodes(face.cell_b).end());
       }
     return nodes;
   }
@@ -204,7 +203,7 @@ TEST_F(DofManagerTest, Twins)
     {
       const int na = the_twin(dofs, nb);
       ASSERT_GE(na, 0) << "side-b node " << nb << " has a twin";
-      const auto &cell = mesh.connectivity[face.cell_a];
+      const auto &cell = mesh.cell_nodes(face.cell_a);
       EXPECT_NE(std::find(cell.begin(), cell.end(), na), cell.end())
           << "twin " << na << " of " << nb << " in side-a cell " << face.cell_a;
     }
@@ -298,7 +297,7 @@ TEST_F(DofManagerTest, OverlapDofMap)
   const auto overlap = dofs.overlap_dof_map();
   // Every unknown of every node of an owned cell.
   for (const int c : dofs.owned_cells())
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       for (const GO g : node_dofs(n))
         EXPECT_TRUE(overlap->isNodeGlobalElement(g)) << "cell " << c << " unknown " << g;
   // The 4 unknowns of every overlap node, and nothing else.

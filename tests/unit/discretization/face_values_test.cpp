@@ -1,6 +1,6 @@
 // Tests src/discretization/face_values.cpp: areas, unit outward normals (rotated faces and the
 // six faces of a hexahedron), integrals of the shape functions, and the nodal areas of
-// quad_nodal_areas() reproduced on a non-affine face.
+// face_nodal_areas() reproduced on a non-affine face.
 // KILN_TEST_NP: 1
 #include "discretization/face_values.hpp"
 
@@ -37,7 +37,7 @@ TEST(FaceValues, RotatedRectangleAreaAndNormal)
   const QuadNodes x =
       mapped_face({{{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {0, 2, 0}}}, A, {1.0, 2.0, -3.0});
   FaceValues fe;
-  fe.reinit(x);
+  kiln_test::reinit(fe, x);
   ASSERT_EQ(fe.n_qpoints(), 4);
   ASSERT_EQ(fe.n_shape(), 4);
   EXPECT_NEAR(total_area(fe), 6.0, 1e-14);
@@ -52,7 +52,7 @@ TEST(FaceValues, RotatedRectangleAreaAndNormal)
   }
 
   // The reversed node order flips the normal.
-  fe.reinit({x[0], x[3], x[2], x[1]});
+  kiln_test::reinit(fe, {x[0], x[3], x[2], x[1]});
   for (int d = 0; d < 3; ++d)
     EXPECT_NEAR(fe.normal(0)[d], -expected[d], 1e-15);
 }
@@ -71,7 +71,7 @@ TEST(FaceValues, ShapeIntegralsOnParallelogram)
     x[3][d] = o[d] + b[d];
   }
   FaceValues fe;
-  fe.reinit(x);
+  kiln_test::reinit(fe, x);
   const double area = std::sqrt(13.0);
   EXPECT_NEAR(total_area(fe), area, 1e-14);
   for (int i = 0; i < 4; ++i)
@@ -106,9 +106,9 @@ TEST(FaceValues, TrapezoidMatchesQuadNodalAreas)
   // Non-affine: bottom edge 2 long, top edge 1, height 1 (area 1.5); see hex_geometry_test.
   const QuadNodes x = {{{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.5, 1, 0}}};
   FaceValues fe;
-  fe.reinit(x);
+  kiln_test::reinit(fe, x);
   EXPECT_NEAR(total_area(fe), 1.5, 1e-15);
-  const kiln::QuadNodalAreas expected = kiln::quad_nodal_areas(x);
+  const kiln::FaceNodalAreas expected = kiln::face_nodal_areas(kiln::CellType::quad4, x.data());
   for (int i = 0; i < 4; ++i)
   {
     double integral = 0.0;
@@ -130,7 +130,7 @@ TEST(FaceValues, HexFacesHaveOutwardNormals)
     QuadNodes x;
     for (int i = 0; i < 4; ++i)
       x[i] = times(A, cube[kiln::hex_face_nodes[f][i]]);
-    fe.reinit(x);
+    kiln_test::reinit(fe, x);
     const Point n = times(A, outward[f]);
     EXPECT_NEAR(total_area(fe), 1.0, 1e-14) << "face " << f;
     for (int q = 0; q < fe.n_qpoints(); ++q)
@@ -143,6 +143,6 @@ TEST(FaceValues, DegenerateFaceThrows)
 {
   const QuadNodes x = {{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 0, 0}}};
   FaceValues fe;
-  EXPECT_THROW(fe.reinit(x), kiln::InternalError);
+  EXPECT_THROW(kiln_test::reinit(fe, x), kiln::InternalError);
 }
 } // namespace

@@ -118,8 +118,7 @@ TEST(CollectiveChecks, OwnedRowsMustPartitionTheMesh)
   const MPI_Comm comm = MPI_COMM_WORLD;
   kiln::Mesh mesh;
   mesh.coordinates.resize(8, kiln::Point{});
-  mesh.connectivity.resize(1);
-  mesh.block_id = {1};
+  mesh.add_cell(kiln::CellType::hex8, {0, 1, 2, 3, 4, 5, 6, 7}, 1);
   const bool first = rank_of(comm) == 0;
   const std::vector<int> all_nodes{0, 1, 2, 3, 4, 5, 6, 7};
   const std::vector<int> nodes = first ? all_nodes : std::vector<int>{};

@@ -66,10 +66,11 @@ Mesh box_mesh()
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
       {
-        mesh.connectivity.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                                     node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
-                                     node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)});
-        mesh.block_id.push_back(i == 0 ? 1 : 7);
+        mesh.add_cell(kiln::CellType::hex8,
+                      {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                       node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                       node(i, j + 1, k + 1)},
+                      i == 0 ? 1 : 7);
       }
   return mesh;
 }
@@ -91,7 +92,7 @@ Ownership make_ownership(const Mesh &mesh, const int rank,
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     o.cell_rank.push_back(cell_owner(c));
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       node_rank[n] = std::min(node_rank[n], o.cell_rank[c]);
     if (o.cell_rank[c] == rank)
       o.owned_cells.push_back(c);
@@ -258,7 +259,7 @@ void check_h5_contents(const std::string &h5_path, const Mesh &mesh,
   for (hsize_t c = 0; c < n_cells; ++c)
   {
     for (int k = 0; k < 8; ++k)
-      EXPECT_EQ(connectivity[8 * c + k], mesh.connectivity[c][k]) << "cell " << c;
+      EXPECT_EQ(connectivity[8 * c + k], mesh.cell_nodes(c)[k]) << "cell " << c;
     EXPECT_EQ(block_id[c], mesh.block_id[c]) << "cell " << c;
     EXPECT_EQ(ranks[c], cell_rank[c]) << "cell " << c;
   }

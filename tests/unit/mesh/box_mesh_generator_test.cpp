@@ -133,7 +133,7 @@ void expect_box(const Box &box)
     EXPECT_NEAR(v, cell_volume, 1e-12 * cell_volume) << "cell " << c;
     volume += v;
     Point centroid{0, 0, 0};
-    for (const int n : mesh.connectivity[c])
+    for (const int n : mesh.cell_nodes(c))
       for (int d = 0; d < 3; ++d)
         centroid[d] += mesh.coordinates[n][d] / 8;
     const Point x = to_box_frame(A, box.shift, centroid);
@@ -182,7 +182,7 @@ void expect_box(const Box &box)
       const Point n = diagonal_normal(q);
       for (int d = 0; d < 3; ++d)
         EXPECT_NEAR(n[d], normal[d], 1e-14) << "entry " << s;
-      const kiln::QuadNodalAreas areas = kiln::quad_nodal_areas(q);
+      const kiln::FaceNodalAreas areas = kiln::face_nodal_areas(kiln::CellType::quad4, q.data());
       area += areas.area[0] + areas.area[1] + areas.area[2] + areas.area[3];
     }
     EXPECT_NEAR(area, side.area, 1e-14 * side.area);
@@ -210,7 +210,7 @@ void expect_box(const Box &box)
     const Point n = diagonal_normal(q);
     for (int d = 0; d < 3; ++d)
       EXPECT_NEAR(n[d], normal[d], 1e-14) << "entry " << s;
-    const kiln::QuadNodalAreas areas = kiln::quad_nodal_areas(q);
+    const kiln::FaceNodalAreas areas = kiln::face_nodal_areas(kiln::CellType::quad4, q.data());
     area[block - 1] += areas.area[0] + areas.area[1] + areas.area[2] + areas.area[3];
   }
   EXPECT_NEAR(area[0], Ly * Lz, 1e-14 * Ly * Lz);

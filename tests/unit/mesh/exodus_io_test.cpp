@@ -92,8 +92,8 @@ void expect_contact_box_mesh(const Mesh &mesh)
                             {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (const auto &e : edges)
-      EXPECT_NEAR(distance(mesh.coordinates[mesh.connectivity[c][e[0]]],
-                           mesh.coordinates[mesh.connectivity[c][e[1]]]),
+      EXPECT_NEAR(distance(mesh.coordinates[mesh.cell_nodes(c)[e[0]]],
+                           mesh.coordinates[mesh.cell_nodes(c)[e[1]]]),
                   cm, 1e-14)
           << "cell " << c << " edge " << e[0] << "-" << e[1];
 }
@@ -125,7 +125,7 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
     const kiln::SideSet &set = *mesh.find_side_set(plane.id);
     for (int i = 0; i < set.n_sides(); ++i)
     {
-      const auto &cell = mesh.connectivity[set.cells[i]];
+      const auto &cell = mesh.cell_nodes(set.cells[i]);
       const int *face = kiln::hex_face_nodes[set.faces[i]];
       for (int k = 0; k < 4; ++k)
         EXPECT_NEAR(mesh.coordinates[cell[face[k]]][plane.axis], plane.value, 1e-15)
@@ -148,7 +148,7 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     double x_sum = 0.0;
-    for (const int node : mesh.connectivity[c])
+    for (const int node : mesh.cell_nodes(c))
       x_sum += mesh.coordinates[node][0];
     EXPECT_EQ(x_sum < 0.0, mesh.block_id[c] == 1) << "cell " << c;
   }
@@ -169,7 +169,8 @@ TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
       EXPECT_NEAR(back.coordinates[i][d], mesh.coordinates[i][d],
                   1e-15 * std::abs(mesh.coordinates[i][d]))
           << "node " << i;
-  EXPECT_EQ(back.connectivity, mesh.connectivity);
+  EXPECT_EQ(back.cell_node_ids, mesh.cell_node_ids);
+  EXPECT_TRUE(back.cell_types == mesh.cell_types);
   EXPECT_EQ(back.block_id, mesh.block_id);
   ASSERT_EQ(back.side_sets.size(), mesh.side_sets.size());
   for (std::size_t s = 0; s < mesh.side_sets.size(); ++s)
@@ -236,7 +237,7 @@ TEST(ExodusIo, WrittenMeshHasBlockAndSetNamesNodeSetsAndTheMetresRecord)
     std::vector<int> expected;
     for (int i = 0; i < set.n_sides(); ++i)
       for (const int k : kiln::hex_face_nodes[set.faces[i]])
-        expected.push_back(mesh.connectivity[set.cells[i]][k] + 1);
+        expected.push_back(mesh.cell_nodes(set.cells[i])[k] + 1);
     std::sort(expected.begin(), expected.end());
     expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
     EXPECT_EQ(nodes, expected) << "node set " << set.id;
@@ -260,9 +261,9 @@ void write_one_element_file(const std::string &path, const int n_dim, const char
   const int exo = ex_create(path.c_str(), EX_CLOBBER, &comp_ws, &io_ws);
   ASSERT_GE(exo, 0);
   const std::string element_type = type;
-  const int n_nodes = element_type == "TETRA4"  ? 4
+  const int n_nodes = element_type == "SHELL4"  ? 4
                       : element_type == "QUAD4" ? 4
-                      : element_type == "HEX20" ? 20
+                      : element_type == "BAR2"  ? 2
                                                 : 8;
   const int n_side_sets = side_set_side < 0 ? 0 : 1;
   ASSERT_GE(ex_put_init(exo, "test", n_dim, n_nodes, 1, 1, 0, n_side_sets), 0);
@@ -313,15 +314,16 @@ TEST(ExodusIo, FileThatIsNotExodusNamesThePath)
   EXPECT_THAT(message, HasSubstr("not an Exodus II"));
 }
 
-TEST(ExodusIo, TetrahedronBlockIsRejected)
+TEST(ExodusIo, ShellBlockIsRejected)
 {
-  const TempFile file("tetra");
-  write_one_element_file(file.path(), 3, "TETRA4", 3, -1);
+  const TempFile file("shell");
+  write_one_element_file(file.path(), 3, "SHELL4", 3, -1);
   const std::string message = read_error(file.path());
   EXPECT_THAT(message, HasSubstr(file.path()));
   EXPECT_THAT(message, HasSubstr("element block 3"));
-  EXPECT_THAT(message, HasSubstr("\"TETRA4\""));
-  EXPECT_THAT(message, HasSubstr("HEX8"));
+  EXPECT_THAT(message, HasSubstr("\"SHELL4\""));
+  // The supported list.
+  EXPECT_THAT(message, HasSubstr("Kiln supports the volume elements HEX8"));
 }
 
 TEST(ExodusIo, TwoDimensionalMeshIsRejected)
@@ -384,13 +386,13 @@ TEST(ExodusIo, HexahedronWithEightNodesIsRead)
   }
 }
 
-TEST(ExodusIo, HexahedronWithTwentyNodesIsRejected)
+TEST(ExodusIo, BeamBlockIsRejected)
 {
-  const TempFile file("hex20");
-  write_one_element_file(file.path(), 3, "HEX20", 2, -1);
+  const TempFile file("beam");
+  write_one_element_file(file.path(), 3, "BAR2", 2, -1);
   const std::string message = read_error(file.path());
-  EXPECT_THAT(message, HasSubstr("element block 2 has element type \"HEX20\" with 20 nodes per "
-                                 "element; Kiln supports 8-node hexahedra only"));
+  EXPECT_THAT(message, HasSubstr("element block 2 has element type \"BAR2\" with 2 nodes per "
+                                 "element; Kiln supports the volume elements"));
 }
 
 TEST(ExodusIo, TruncatedFileIsReportedAsTruncated)

@@ -148,7 +148,7 @@ TEST(HexGeometry, QuadNodalAreasOfRotatedSquare)
       x[i][d] += shift[d];
   }
   const Point normal = times(A, {0, 0, 1});
-  const kiln::QuadNodalAreas a = kiln::quad_nodal_areas(x);
+  const kiln::FaceNodalAreas a = kiln::face_nodal_areas(kiln::CellType::quad4, x.data());
   double total = 0.0;
   Point total_vector{0, 0, 0};
   for (int i = 0; i < 4; ++i)
@@ -167,7 +167,7 @@ TEST(HexGeometry, QuadNodalAreasOfRotatedSquare)
 
   // The reversed node order flips the area vectors, not the areas.
   const QuadNodes reversed = {x[0], x[3], x[2], x[1]};
-  const kiln::QuadNodalAreas b = kiln::quad_nodal_areas(reversed);
+  const kiln::FaceNodalAreas b = kiln::face_nodal_areas(kiln::CellType::quad4, reversed.data());
   for (int d = 0; d < 3; ++d)
     EXPECT_NEAR(b.area_vector[0][d], -1.5 * normal[d], 1e-14);
   EXPECT_NEAR(b.area[0], 1.5, 1e-14);
@@ -182,7 +182,7 @@ TEST(HexGeometry, QuadNodalAreasOfTrapezoid)
   // int_{-1}^{1} (1-t)(3-t) dt = int 3 - 4t + t^2 = 6 + 2/3; (1+t)(3-t) = 3 + 2t - t^2 -> 6 - 2/3.
   // int_{-1}^{1} (1 -+ s) ds = 2. So N0, N1 shares = 2 (6 + 2/3) / 32, N2, N3 = 2 (6 - 2/3) / 32.
   const double bottom = 2 * (6 + 2.0 / 3) / 32, top = 2 * (6 - 2.0 / 3) / 32;
-  const kiln::QuadNodalAreas a = kiln::quad_nodal_areas(x);
+  const kiln::FaceNodalAreas a = kiln::face_nodal_areas(kiln::CellType::quad4, x.data());
   const double expected[4] = {bottom, bottom, top, top};
   for (int i = 0; i < 4; ++i)
   {
@@ -199,7 +199,7 @@ TEST(HexGeometry, QuadNodalAreasOfWarpedQuad)
   // The saddle z = c x y over [-1,1]^2 (its bilinear interpolant is itself).
   const double c = 0.1;
   const QuadNodes x = {{{-1, -1, c}, {1, -1, -c}, {1, 1, c}, {-1, 1, -c}}};
-  const kiln::QuadNodalAreas a = kiln::quad_nodal_areas(x);
+  const kiln::FaceNodalAreas a = kiln::face_nodal_areas(kiln::CellType::quad4, x.data());
 
   // The total area vector of any bilinear quad is half the cross product of its diagonals.
   Point d1, d2;

@@ -41,9 +41,9 @@ TEST(MeshBodies, TheGapSplitsTheBoxIntoTwoBodies)
   EXPECT_EQ(bodies.count, 2);
   ASSERT_EQ(bodies.body.size(), 150u); // 125 nodes and 25 twins
   // Every cell lies in one body, and the twins of every pair in different ones.
-  for (const auto &cell : mesh.connectivity)
-    for (const int n : cell)
-      EXPECT_EQ(bodies.body[n], bodies.body[cell[0]]);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (const int n : mesh.cell_nodes(c))
+      EXPECT_EQ(bodies.body[n], bodies.body[mesh.cell_nodes(c)[0]]);
   ASSERT_EQ(mesh.gap_pairs.size(), 25u);
   for (const kiln::GapPair &pair : mesh.gap_pairs)
     EXPECT_NE(bodies.body[pair.node_a], bodies.body[pair.node_b]);
@@ -51,7 +51,7 @@ TEST(MeshBodies, TheGapSplitsTheBoxIntoTwoBodies)
   EXPECT_EQ(std::count(bodies.body.begin(), bodies.body.end(), 0), 75);
   EXPECT_EQ(std::count(bodies.body.begin(), bodies.body.end(), 1), 75);
   // Numbered in the order of their first cells.
-  EXPECT_EQ(bodies.body[mesh.connectivity.front()[0]], 0);
+  EXPECT_EQ(bodies.body[mesh.cell_nodes(0)[0]], 0);
 }
 
 TEST(MeshBodies, ANodeOfNoCellIsInNoBody)

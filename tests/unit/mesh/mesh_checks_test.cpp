@@ -53,7 +53,7 @@ TEST(MeshChecks, MirroredCellIsRejected)
   // Cell 40 (0-based; block 2) with its bottom and top faces exchanged: a reflection, so the
   // Jacobian determinant is negative everywhere.
   Mesh mesh = box();
-  auto &cell = mesh.connectivity[40];
+  const auto cell = mesh.cell_nodes(40);
   for (int i = 0; i < 4; ++i)
     std::swap(cell[i], cell[i + 4]);
   const std::string message = check_error(mesh);
@@ -68,7 +68,7 @@ TEST(MeshChecks, CellWithTwoNodesSwappedIsRejected)
   // about -0.0305 at the two Gauss points nearest that edge (computed by hand with the HEX8
   // shape functions), while the other six stay positive.
   Mesh mesh = box();
-  std::swap(mesh.connectivity[5][0], mesh.connectivity[5][1]);
+  std::swap(mesh.cell_nodes(5)[0], mesh.cell_nodes(5)[1]);
   const std::string message = check_error(mesh);
   EXPECT_THAT(message, HasSubstr("cell 6 (block 1)"));
   EXPECT_THAT(message, HasSubstr("Jacobian"));
@@ -78,7 +78,7 @@ TEST(MeshChecks, FlatCellIsRejected)
 {
   // The top face moved onto the bottom one: zero volume, det(J) = 0.
   Mesh mesh = box();
-  auto &cell = mesh.connectivity[0];
+  const auto cell = mesh.cell_nodes(0);
   for (int i = 0; i < 4; ++i)
     mesh.coordinates[cell[i + 4]] = mesh.coordinates[cell[i]];
   const std::string message = check_error(mesh);
@@ -98,14 +98,14 @@ TEST(MeshChecks, UnusedNodeIsRejected)
 TEST(MeshChecks, NodeIdOutOfRangeIsRejected)
 {
   Mesh mesh = box();
-  mesh.connectivity[3][2] = 125; // one past the last node (0-based)
+  mesh.cell_nodes(3)[2] = 125; // one past the last node (0-based)
   const std::string message = check_error(mesh);
   EXPECT_THAT(message, HasSubstr("mesh.exo"));
   EXPECT_THAT(message, HasSubstr("cell 4 (block 1) refers to node 126"));
   EXPECT_THAT(message, HasSubstr("125 nodes"));
 
   Mesh negative = box();
-  negative.connectivity[63][7] = -1;
+  negative.cell_nodes(63)[7] = -1;
   EXPECT_THAT(check_error(negative), HasSubstr("cell 64 (block 2) refers to node 0"));
 }
 

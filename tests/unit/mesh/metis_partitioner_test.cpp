@@ -83,8 +83,8 @@ void expect_valid_partition(const Mesh &mesh)
   {
     int lowest = INT_MAX, highest = -1;
     for (int c = 0; c < mesh.n_cells(); ++c)
-      if (std::find(mesh.connectivity[c].begin(), mesh.connectivity[c].end(), n) !=
-          mesh.connectivity[c].end())
+      if (std::find(mesh.cell_nodes(c).begin(), mesh.cell_nodes(c).end(), n) !=
+          mesh.cell_nodes(c).end())
       {
         lowest = std::min(lowest, cell_rank[c]);
         highest = std::max(highest, cell_rank[c]);

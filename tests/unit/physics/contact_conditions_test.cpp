@@ -84,7 +84,7 @@ Vector state(const ProblemFixture &s, kiln::CoupledProblem &problem, const doubl
       v = noise * unit(random);
   std::vector<char> side_b(s.mesh.n_nodes(), 0);
   for (int c = 0; c < s.mesh.n_cells(); ++c)
-    for (const int node : s.mesh.connectivity[c])
+    for (const int node : s.mesh.cell_nodes(c))
       side_b[node] = s.mesh.block_id[c] == 2;
   Vector x(problem.solution_map());
   problem.initial_condition(0.0, x);

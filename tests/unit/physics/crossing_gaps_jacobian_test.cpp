@@ -82,11 +82,11 @@ Vector state(ProblemFixture &s, kiln::CoupledProblem &problem, const double T, c
     x.replaceLocalValue(static_cast<LO>(4 * i), T);
     // The body of node n: the side of the centre its cell lies on, along each box axis.
     int cell = 0;
-    while (std::find(s.mesh.connectivity[cell].begin(), s.mesh.connectivity[cell].end(), n) ==
-           s.mesh.connectivity[cell].end())
+    while (std::find(s.mesh.cell_nodes(cell).begin(), s.mesh.cell_nodes(cell).end(), n) ==
+           s.mesh.cell_nodes(cell).end())
       ++cell;
     Point centroid{};
-    for (const int m : s.mesh.connectivity[cell])
+    for (const int m : s.mesh.cell_nodes(cell))
       for (int d = 0; d < 3; ++d)
         centroid[d] += s.mesh.coordinates[m][d] / 8.0;
     Point u = jitter[n];

@@ -22,6 +22,7 @@
 #include "solvers/newton_solver.hpp"
 #include "support/jacobian_check.hpp"
 #include "support/parameter_lists.hpp"
+#include "support/reference_cells.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -93,7 +94,7 @@ kiln::LocalSystem face_terms(const kiln::BoundaryCondition &condition,
   const kiln::QuadNodes x = {Point{0.1, 0.2, 0.3}, Point{0.13, 0.21, 0.3}, Point{0.14, 0.24, 0.31},
                              Point{0.11, 0.23, 0.31}};
   kiln::FaceValues fv;
-  fv.reinit(x);
+  kiln_test::reinit(fv, x);
   const std::array<Point, 4> u{};
   kiln::LocalSystem local(4, 1);
   condition.evaluate(kiln::FaceState{fv, T, u, 0.0, kiln::FieldSlots{0, -1}}, local);
@@ -143,8 +144,8 @@ TEST(RadiationCondition, LocalJacobianMatchesFiniteDifferences)
   EXPECT_LT(worst, 1e-8 * largest);
   // A residual-only system gets the same residual and no Jacobian.
   kiln::FaceValues fv;
-  fv.reinit({Point{0.1, 0.2, 0.3}, Point{0.13, 0.21, 0.3}, Point{0.14, 0.24, 0.31},
-             Point{0.11, 0.23, 0.31}});
+  kiln_test::reinit(fv, kiln::QuadNodes{Point{0.1, 0.2, 0.3}, Point{0.13, 0.21, 0.3},
+                                        Point{0.14, 0.24, 0.31}, Point{0.11, 0.23, 0.31}});
   kiln::LocalSystem residual_only(4, 1, false);
   const std::array<Point, 4> u{};
   condition->evaluate(kiln::FaceState{fv, T, u, 0.0, kiln::FieldSlots{0, -1}}, residual_only);
@@ -274,7 +275,7 @@ TEST(RadiationCondition, SteadyBarIsTheAnalyticLinearProfile)
   std::vector<char> beyond(mesh.n_nodes(), 0);
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (mesh.block_id[c] == 2)
-      for (const int n : mesh.connectivity[c])
+      for (const int n : mesh.cell_nodes(c))
         beyond[n] = 1;
   const std::vector<double> T = problem.node_temperatures(x);
   const auto &owned = sim->dofs().owned_nodes();

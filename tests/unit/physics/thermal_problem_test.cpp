@@ -19,6 +19,7 @@
 #include "support/parallel.hpp"
 #include "support/parameter_lists.hpp"
 #include "support/problem_fixture.hpp"
+#include "support/reference_cells.hpp"
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
@@ -198,12 +199,12 @@ TEST(ThermalProblem, TemperatureRowsAreScaledIdentityRows)
   kiln::ElementValues fe;
   for (int c = 0; c < s.mesh.n_cells(); ++c)
   {
-    fe.reinit(kiln::cell_nodes(s.mesh, c));
+    kiln_test::reinit(fe, kiln::cell_nodes(s.mesh, c));
     for (int i = 0; i < 8; ++i)
       for (int q = 0; q < fe.n_qpoints(); ++q)
       {
         const Point &g = fe.grad(i, q);
-        scale[s.mesh.connectivity[c][i]] +=
+        scale[s.mesh.cell_nodes(c)[i]] +=
             k_table(300.0) * (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * fe.JxW(q);
       }
   }

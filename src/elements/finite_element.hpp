@@ -3,7 +3,7 @@
 /// shape functions of an element type and their reference gradients, and the quadrature rule
 /// Kiln integrates it with (deal.II's Quadrature). Tabulated once per type by ElementValues
 /// and FaceValues; kernels never see these, only the per-cell values.
-#include "mesh/reference_cell.hpp"
+#include "elements/reference_cell.hpp"
 
 #include <vector>
 
@@ -23,8 +23,10 @@ class FiniteElement
 {
 public:
   virtual ~FiniteElement() = default;
-  /// The basis of `type` (every CellType has one).
+  /// The basis of `type`; InternalError if none is registered.
   static const FiniteElement &of(CellType type);
+  /// The basis of `type`, or nullptr if none is registered.
+  static const FiniteElement *find(CellType type);
 
   virtual CellType type() const = 0;
   const ReferenceCell &cell() const { return ReferenceCell::of(type()); }
@@ -36,5 +38,17 @@ public:
   /// The rule that integrates this element's mass and stiffness integrands on affine cells
   /// exactly (hex8: 2x2x2 Gauss, as Kiln has always used; quad4: 2x2).
   virtual const Quadrature &quadrature() const = 0;
+};
+/// A basis tabulated at its quadrature points, once per element type: N_i(xi_q) =
+/// shape[q * n_shape + i], grad_xi N_i(xi_q) = grad[q * n_shape + i], weights w_q.
+struct ReferenceValues
+{
+  int n_shape = 0;
+  int n_qpoints = 0;
+  std::vector<double> shape;
+  std::vector<Point> grad;
+  std::vector<double> weights;
+  /// The table of `type` (computed on first use, then shared).
+  static const ReferenceValues &of(CellType type);
 };
 } // namespace kiln

@@ -3,6 +3,7 @@
 /// the reference domain and its faces, for every element type Kiln knows. Node numbering and
 /// face (side) numbering follow Exodus II. One immutable object per type, looked up by type.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ enum class CellType : unsigned char
   quad9, ///< faces of hex27
   tri6,  ///< faces of tet10
 };
+/// How many CellTypes there are (for tables indexed by type).
+inline constexpr int n_cell_types = static_cast<int>(CellType::tri6) + 1;
+/// The most nodes a cell of any type has (a capacity for per-cell buffers).
+inline constexpr int max_cell_nodes = 27;
 
 class ReferenceCell
 {
@@ -60,10 +65,13 @@ public:
 
   /// The XDMF topology type code of this type (Mixed topologies write it per cell).
   int xdmf_code() const { return xdmf_code_; }
+  /// XDMF's (VTK's) node order where it differs from Exodus': XDMF node i is node
+  /// xdmf_order()[i]; empty when the orders agree.
+  const std::vector<int> &xdmf_order() const { return xdmf_order_; }
 
   ReferenceCell(CellType type, std::string name, int dim, int degree, int n_vertices,
                 std::vector<Point> nodes, std::vector<std::vector<int>> faces,
-                std::vector<CellType> face_types, int xdmf_code);
+                std::vector<CellType> face_types, int xdmf_code, std::vector<int> xdmf_order = {});
 
 private:
   CellType type_;
@@ -75,5 +83,14 @@ private:
   std::vector<std::vector<int>> faces_;
   std::vector<CellType> face_types_;
   int xdmf_code_;
+  std::vector<int> xdmf_order_;
 };
+
+/// The volume type of an Exodus element block: its type name in any case and with or without
+/// the node count ("HEX8", "HEX", "HEXAHEDRON", "TETRA4", "TET", "TETRA", "WEDGE6", "WEDGE",
+/// "PYRAMID5", "PYRAMID", "TETRA10", "HEX20", ...) and its nodes per element; none if Kiln has
+/// no such volume type.
+std::optional<CellType> exodus_cell_type(const std::string &name, int n_nodes_per_element);
+/// "HEX8, TETRA4, ..." (the volume types Kiln supports), for messages.
+std::string supported_volume_types();
 } // namespace kiln
