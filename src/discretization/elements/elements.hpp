@@ -82,37 +82,39 @@ void simplex2_gradients(const Point &xi, const int dim, const int (&edges)[n_edg
 }
 
 /// The tensor-product quadratic Lagrange basis (QUAD9, HEX27) of `cell` (dim 2 or 3): node i
-/// at r has N_i = Π_k lagrange2(r_k, xi_k).
+/// at r has N_i = Π_k lagrange2(r_k, xi_k). The three 1D functions are evaluated once per
+/// coordinate, then multiplied node by node.
 inline void tensor2_values(const ReferenceCell &cell, const Point &xi, double *N)
 {
+  const int dim = cell.dim();
+  double l[3][3] = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}; // l[k][r + 1]
+  for (int k = 0; k < dim; ++k)
+    for (int r = -1; r <= 1; ++r)
+      l[k][r + 1] = lagrange2(r, xi[k]);
   for (int i = 0; i < cell.n_nodes(); ++i)
   {
     const Point &r = cell.node(i);
-    N[i] = 1.0;
-    for (int k = 0; k < cell.dim(); ++k)
-      N[i] *= lagrange2(r[k], xi[k]);
+    N[i] = l[0][static_cast<int>(r[0]) + 1] * l[1][static_cast<int>(r[1]) + 1] *
+           l[2][static_cast<int>(r[2]) + 1];
   }
 }
 inline void tensor2_gradients(const ReferenceCell &cell, const Point &xi, Point *dN)
 {
   const int dim = cell.dim();
+  double l[3][3] = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}, dl[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  for (int k = 0; k < dim; ++k)
+    for (int r = -1; r <= 1; ++r)
+    {
+      l[k][r + 1] = lagrange2(r, xi[k]);
+      dl[k][r + 1] = lagrange2_derivative(r, xi[k]);
+    }
   for (int i = 0; i < cell.n_nodes(); ++i)
   {
     const Point &r = cell.node(i);
-    double l[3], dl[3];
-    for (int k = 0; k < dim; ++k)
-    {
-      l[k] = lagrange2(r[k], xi[k]);
-      dl[k] = lagrange2_derivative(r[k], xi[k]);
-    }
-    dN[i] = {0, 0, 0};
-    for (int k = 0; k < dim; ++k)
-    {
-      dN[i][k] = dl[k];
-      for (int m = 0; m < dim; ++m)
-        if (m != k)
-          dN[i][k] *= l[m];
-    }
+    const int a = static_cast<int>(r[0]) + 1, b = static_cast<int>(r[1]) + 1,
+              c = static_cast<int>(r[2]) + 1;
+    dN[i] = {dl[0][a] * l[1][b] * l[2][c], l[0][a] * dl[1][b] * l[2][c],
+             l[0][a] * l[1][b] * dl[2][c]};
   }
 }
 

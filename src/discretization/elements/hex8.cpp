@@ -15,7 +15,7 @@ public:
   {
     for (int i = 0; i < 8; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       N[i] = 0.125 * (1 + r[0] * xi[0]) * (1 + r[1] * xi[1]) * (1 + r[2] * xi[2]);
     }
   }
@@ -23,7 +23,7 @@ public:
   {
     for (int i = 0; i < 8; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       const double f[3] = {1 + r[0] * xi[0], 1 + r[1] * xi[1], 1 + r[2] * xi[2]};
       dN[i] = {0.125 * r[0] * f[1] * f[2], 0.125 * r[1] * f[0] * f[2], 0.125 * r[2] * f[0] * f[1]};
     }
@@ -33,6 +33,9 @@ public:
     static const Quadrature q = quadrature::gauss_at_corners(cell());
     return q;
   }
+
+private:
+  const ReferenceCell &ref_ = ReferenceCell::of(CellType::hex8);
 };
 } // namespace
 

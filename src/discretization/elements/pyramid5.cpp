@@ -32,7 +32,7 @@ public:
     const double q = xi[0] * xi[1] / d;
     for (int i = 0; i < 4; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       N[i] = 0.25 * ((1 - xi[2]) + r[0] * xi[0] + r[1] * xi[1] + r[0] * r[1] * q);
     }
     N[4] = xi[2];
@@ -43,7 +43,7 @@ public:
     const double x = xi[0] / d, y = xi[1] / d;
     for (int i = 0; i < 4; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       const double s = r[0] * r[1];
       dN[i] = {0.25 * (r[0] + s * y), 0.25 * (r[1] + s * x), 0.25 * (-1 + s * x * y)};
     }
@@ -54,6 +54,9 @@ public:
     static const Quadrature q = quadrature::pyramid_collapsed();
     return q;
   }
+
+private:
+  const ReferenceCell &ref_ = ReferenceCell::of(CellType::pyramid5);
 };
 } // namespace
 

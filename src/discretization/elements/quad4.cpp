@@ -15,7 +15,7 @@ public:
   {
     for (int i = 0; i < 4; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       N[i] = 0.25 * (1 + r[0] * xi[0]) * (1 + r[1] * xi[1]);
     }
   }
@@ -23,7 +23,7 @@ public:
   {
     for (int i = 0; i < 4; ++i)
     {
-      const Point &r = cell().node(i);
+      const Point &r = ref_.node(i);
       dN[i] = {0.25 * r[0] * (1 + r[1] * xi[1]), 0.25 * r[1] * (1 + r[0] * xi[0]), 0.0};
     }
   }
@@ -32,6 +32,9 @@ public:
     static const Quadrature q = quadrature::gauss_at_corners(cell());
     return q;
   }
+
+private:
+  const ReferenceCell &ref_ = ReferenceCell::of(CellType::quad4);
 };
 } // namespace
 
