@@ -590,6 +590,25 @@ TEST(Hex27, ExodusCentroidThenFaceCentresMinusZPlusZMinusXPlusXMinusYPlusY)
     EXPECT_EQ(hex.face_nodes(f).back(), centre_of_side[f]) << "side " << f + 1;
 }
 
+TEST(Serendipity, HandDerivedValues)
+{
+  // QUAD8 at (1/2, -1/4): corner 0: (1 - x)(1 - y)(-x - y - 1)/4; mid-edge 4 (0, -1):
+  // (1 - x^2)(1 - y)/2; d/dx of corner 0: (1 - y)(2x + y)/4.
+  double q[8];
+  Point dq[8];
+  FiniteElement::of(CellType::quad8).values({0.5, -0.25, 0}, q);
+  FiniteElement::of(CellType::quad8).gradients({0.5, -0.25, 0}, dq);
+  EXPECT_DOUBLE_EQ(q[0], 0.25 * 0.5 * 1.25 * -1.25);
+  EXPECT_DOUBLE_EQ(q[4], 0.5 * 0.75 * 1.25);
+  EXPECT_DOUBLE_EQ(dq[0][0], 0.25 * 1.25 * 0.75);
+  // HEX20 at (1/2, 1/4, -1/2): corner 0: (1 - x)(1 - y)(1 - z)(-x - y - z - 2)/8; mid-edge 12
+  // (edge 0-4, at (-1, -1, 0)): (1 - x)(1 - y)(1 - z^2)/4.
+  double h[20];
+  FiniteElement::of(CellType::hex20).values({0.5, 0.25, -0.5}, h);
+  EXPECT_DOUBLE_EQ(h[0], 0.125 * 0.5 * 0.75 * 1.5 * -2.25);
+  EXPECT_DOUBLE_EQ(h[12], 0.25 * 0.5 * 0.75 * 0.75);
+}
+
 TEST(ReferenceCell, NamesAndXdmfCodes)
 {
   const std::vector<std::pair<CellType, std::pair<std::string, int>>> expected = {

@@ -1,12 +1,14 @@
 // Tests src/discretization/elements/ against Intrepid2's HGRAD bases (Trilinos 13.2): the
-// values and reference gradients of every type Intrepid2 has (all but HEX20 and QUAD8, which
-// finite_element_test checks against hand-derived values) agree to round-off at random points
-// and at the quadrature points, node for node: Kiln's Exodus numbering is Shards' (including
-// HEX27's centroid and face centres).
+// values and reference gradients of every type Intrepid2 has (all but HEX20 and QUAD8) agree to
+// round-off at random points and at the quadrature points, node for node: Kiln's Exodus numbering
+// is Shards' (including HEX27's centroid and face centres). HEX20 against the first Intrepid's
+// HGRAD_HEX_I2 (QUAD8: finite_element_test's hand-derived values).
 // KILN_TEST_NP: 1
 #include "discretization/finite_element.hpp"
 #include "support/intrepid2_bases.hpp"
 
+#include <Intrepid_FieldContainer.hpp>
+#include <Intrepid_HGRAD_HEX_I2_FEM.hpp>
 #include <Kokkos_Core.hpp>
 #include <gtest/gtest.h>
 
@@ -70,6 +72,34 @@ TEST_P(Intrepid2Agreement, ValuesAndGradients)
       for (int k = 0; k < dim; ++k)
         EXPECT_NEAR(g[i][k], dN(i, p, k), 1e-13)
             << fe.cell().name() << ": dN_" << i << "/dxi_" << k << " at point " << p;
+    }
+  }
+}
+
+TEST(IntrepidHex20, ValuesAndGradients)
+{
+  const FiniteElement &fe = FiniteElement::of(CellType::hex20);
+  Intrepid::Basis_HGRAD_HEX_I2_FEM<double, Intrepid::FieldContainer<double>> basis;
+  ASSERT_EQ(basis.getCardinality(), 20);
+  const std::vector<Point> points = sample_points(fe);
+  const int np = static_cast<int>(points.size());
+  Intrepid::FieldContainer<double> x(np, 3), N(20, np), dN(20, np, 3);
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < 3; ++k)
+      x(p, k) = points[p][k];
+  basis.getValues(N, x, Intrepid::OPERATOR_VALUE);
+  basis.getValues(dN, x, Intrepid::OPERATOR_GRAD);
+  std::vector<double> v(20);
+  std::vector<Point> g(20);
+  for (int p = 0; p < np; ++p)
+  {
+    fe.values(points[p], v.data());
+    fe.gradients(points[p], g.data());
+    for (int i = 0; i < 20; ++i)
+    {
+      EXPECT_NEAR(v[i], N(i, p), 1e-14) << "N_" << i << " at point " << p;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(g[i][k], dN(i, p, k), 1e-13) << "dN_" << i << "/dxi_" << k << " at " << p;
     }
   }
 }
