@@ -18,9 +18,15 @@ namespace
 constexpr CellType Q4 = CellType::quad4, T3 = CellType::tri3, Q8 = CellType::quad8,
                    Q9 = CellType::quad9, T6 = CellType::tri6;
 
+// Functions, not namespace-scope objects: ReferenceCell::of() may run during another file's
+// static initialisation.
+
 /// Hexahedron corners: [-1,1]^3, bottom (z = -1) counterclockwise seen from +z, then top.
-const std::vector<Point> hex_corners = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                        {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+std::vector<Point> hex_corners()
+{
+  return {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+}
 /// Exodus' hexahedron edges in mid-edge node order (nodes 8..19): bottom, verticals, top.
 constexpr int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
                                   {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
@@ -49,41 +55,65 @@ std::vector<Point> hex27_nodes()
 {
   // Exodus HEX27: node 20 the centroid, then the face centres in the order -z, +z, -x, +x,
   // -y, +y (sides 5, 6, 4, 2, 1, 3): Ioss_Hex27's face_node_order and Shards' Hexahedron<27>.
-  std::vector<Point> x = with_edge_midpoints(hex_corners, hex_edges);
+  std::vector<Point> x = with_edge_midpoints(hex_corners(), hex_edges);
   const std::vector<Point> centres = {{0, 0, 0}, {0, 0, -1}, {0, 0, 1}, {-1, 0, 0},
                                       {1, 0, 0}, {0, -1, 0}, {0, 1, 0}};
   x.insert(x.end(), centres.begin(), centres.end());
   return x;
 }
 
-const std::vector<Point> quad_corners = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-const std::vector<Point> tri_corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-const std::vector<Point> tet_corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+std::vector<Point> quad_corners()
+{
+  return {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+}
+std::vector<Point> tri_corners()
+{
+  return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+}
+std::vector<Point> tet_corners()
+{
+  return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+}
 
 std::vector<Point> quad9_nodes()
 {
-  std::vector<Point> x = with_edge_midpoints(quad_corners, quad_edges);
+  std::vector<Point> x = with_edge_midpoints(quad_corners(), quad_edges);
   x.push_back({0, 0, 0});
   return x;
 }
 
 // Faces, as Exodus numbers the sides (side s = face s - 1).
-const std::vector<std::vector<int>> hex8_faces = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                  {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-const std::vector<std::vector<int>> hex20_faces = {
-    {0, 1, 5, 4, 8, 13, 16, 12},  {1, 2, 6, 5, 9, 14, 17, 13}, {2, 3, 7, 6, 10, 15, 18, 14},
-    {0, 4, 7, 3, 12, 19, 15, 11}, {0, 3, 2, 1, 11, 10, 9, 8},  {4, 5, 6, 7, 16, 17, 18, 19}};
-const std::vector<std::vector<int>> hex27_faces = {
-    {0, 1, 5, 4, 8, 13, 16, 12, 25},  {1, 2, 6, 5, 9, 14, 17, 13, 24},
-    {2, 3, 7, 6, 10, 15, 18, 14, 26}, {0, 4, 7, 3, 12, 19, 15, 11, 23},
-    {0, 3, 2, 1, 11, 10, 9, 8, 21},   {4, 5, 6, 7, 16, 17, 18, 19, 22}};
-const std::vector<std::vector<int>> tet4_faces = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
-const std::vector<std::vector<int>> tet10_faces = {
-    {0, 1, 3, 4, 8, 7}, {1, 2, 3, 5, 9, 8}, {0, 3, 2, 7, 9, 6}, {0, 2, 1, 6, 5, 4}};
-const std::vector<std::vector<int>> wedge6_faces = {
-    {0, 1, 4, 3}, {1, 2, 5, 4}, {0, 3, 5, 2}, {0, 2, 1}, {3, 4, 5}};
-const std::vector<std::vector<int>> pyramid5_faces = {
-    {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 3, 2, 1}};
+std::vector<std::vector<int>> hex8_faces()
+{
+  return {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+}
+std::vector<std::vector<int>> hex20_faces()
+{
+  return {{0, 1, 5, 4, 8, 13, 16, 12},  {1, 2, 6, 5, 9, 14, 17, 13}, {2, 3, 7, 6, 10, 15, 18, 14},
+          {0, 4, 7, 3, 12, 19, 15, 11}, {0, 3, 2, 1, 11, 10, 9, 8},  {4, 5, 6, 7, 16, 17, 18, 19}};
+}
+std::vector<std::vector<int>> hex27_faces()
+{
+  return {{0, 1, 5, 4, 8, 13, 16, 12, 25},  {1, 2, 6, 5, 9, 14, 17, 13, 24},
+          {2, 3, 7, 6, 10, 15, 18, 14, 26}, {0, 4, 7, 3, 12, 19, 15, 11, 23},
+          {0, 3, 2, 1, 11, 10, 9, 8, 21},   {4, 5, 6, 7, 16, 17, 18, 19, 22}};
+}
+std::vector<std::vector<int>> tet4_faces()
+{
+  return {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
+}
+std::vector<std::vector<int>> tet10_faces()
+{
+  return {{0, 1, 3, 4, 8, 7}, {1, 2, 3, 5, 9, 8}, {0, 3, 2, 7, 9, 6}, {0, 2, 1, 6, 5, 4}};
+}
+std::vector<std::vector<int>> wedge6_faces()
+{
+  return {{0, 1, 4, 3}, {1, 2, 5, 4}, {0, 3, 5, 2}, {0, 2, 1}, {3, 4, 5}};
+}
+std::vector<std::vector<int>> pyramid5_faces()
+{
+  return {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 3, 2, 1}};
+}
 
 // XDMF topology codes (Xdmf2's XdmfTopology.h): Triangle 0x4, Quadrilateral 0x5, Tetrahedron
 // 0x6, Pyramid 0x7, Wedge 0x8, Hexahedron 0x9, Quad_9 0x23, Tri_6 0x24, Quad_8 0x25, Tet_10
@@ -92,15 +122,15 @@ const std::vector<std::vector<int>> pyramid5_faces = {
 std::array<ReferenceCell, 12> make_table()
 {
   return {{
-      {CellType::hex8, "HEX8", 3, 1, 8, hex_corners, hex8_faces, {Q4, Q4, Q4, Q4, Q4, Q4}, 0x9},
-      {CellType::tet4, "TETRA4", 3, 1, 4, tet_corners, tet4_faces, {T3, T3, T3, T3}, 0x6},
+      {CellType::hex8, "HEX8", 3, 1, 8, hex_corners(), hex8_faces(), {Q4, Q4, Q4, Q4, Q4, Q4}, 0x9},
+      {CellType::tet4, "TETRA4", 3, 1, 4, tet_corners(), tet4_faces(), {T3, T3, T3, T3}, 0x6},
       {CellType::wedge6,
        "WEDGE6",
        3,
        1,
        6,
        {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
-       wedge6_faces,
+       wedge6_faces(),
        {Q4, Q4, Q4, T3, T3},
        0x8},
       {CellType::pyramid5,
@@ -109,7 +139,7 @@ std::array<ReferenceCell, 12> make_table()
        1,
        5,
        {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}},
-       pyramid5_faces,
+       pyramid5_faces(),
        {T3, T3, T3, T3, Q4},
        0x7},
       {CellType::tet10,
@@ -117,8 +147,8 @@ std::array<ReferenceCell, 12> make_table()
        3,
        2,
        4,
-       with_edge_midpoints(tet_corners, tet_edges),
-       tet10_faces,
+       with_edge_midpoints(tet_corners(), tet_edges),
+       tet10_faces(),
        {T6, T6, T6, T6},
        0x26},
       {CellType::hex20,
@@ -126,8 +156,8 @@ std::array<ReferenceCell, 12> make_table()
        3,
        2,
        8,
-       with_edge_midpoints(hex_corners, hex_edges),
-       hex20_faces,
+       with_edge_midpoints(hex_corners(), hex_edges),
+       hex20_faces(),
        {Q8, Q8, Q8, Q8, Q8, Q8},
        0x30},
       {CellType::hex27,
@@ -136,22 +166,30 @@ std::array<ReferenceCell, 12> make_table()
        2,
        8,
        hex27_nodes(),
-       hex27_faces,
+       hex27_faces(),
        {Q9, Q9, Q9, Q9, Q9, Q9},
        0x32},
-      {CellType::quad4, "QUAD4", 2, 1, 4, quad_corners, {}, {}, 0x5},
-      {CellType::tri3, "TRI3", 2, 1, 3, tri_corners, {}, {}, 0x4},
+      {CellType::quad4, "QUAD4", 2, 1, 4, quad_corners(), {}, {}, 0x5},
+      {CellType::tri3, "TRI3", 2, 1, 3, tri_corners(), {}, {}, 0x4},
       {CellType::quad8,
        "QUAD8",
        2,
        2,
        4,
-       with_edge_midpoints(quad_corners, quad_edges),
+       with_edge_midpoints(quad_corners(), quad_edges),
        {},
        {},
        0x25},
       {CellType::quad9, "QUAD9", 2, 2, 4, quad9_nodes(), {}, {}, 0x23},
-      {CellType::tri6, "TRI6", 2, 2, 3, with_edge_midpoints(tri_corners, tri_edges), {}, {}, 0x24},
+      {CellType::tri6,
+       "TRI6",
+       2,
+       2,
+       3,
+       with_edge_midpoints(tri_corners(), tri_edges),
+       {},
+       {},
+       0x24},
   }};
 }
 } // namespace
