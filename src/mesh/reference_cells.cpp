@@ -110,9 +110,11 @@ std::vector<std::vector<int>> wedge6_faces()
 {
   return {{0, 1, 4, 3}, {1, 2, 5, 4}, {0, 3, 5, 2}, {0, 2, 1}, {3, 4, 5}};
 }
+/// Side 4 as the exodus library lists it ({0, 4, 3}: ex_get_side_set_node_list); Ioss writes
+/// the same oriented triangle from another corner ({3, 0, 4}).
 std::vector<std::vector<int>> pyramid5_faces()
 {
-  return {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 3, 2, 1}};
+  return {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 4, 3}, {0, 3, 2, 1}};
 }
 
 // XDMF topology codes (Xdmf2's XdmfTopology.h): Triangle 0x4, Quadrilateral 0x5, Tetrahedron
