@@ -10,9 +10,14 @@
 #include <Intrepid_FieldContainer.hpp>
 #include <Intrepid_HGRAD_HEX_I2_FEM.hpp>
 #include <Kokkos_Core.hpp>
+#include <Shards_BasicTopologies.hpp>
+#include <Shards_CellTopology.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -102,6 +107,39 @@ TEST(IntrepidHex20, ValuesAndGradients)
         EXPECT_NEAR(g[i][k], dN(i, p, k), 1e-13) << "dN_" << i << "/dxi_" << k << " at " << p;
     }
   }
+}
+
+TEST(Shards, SideNodeMapsAreTheFaceNodes)
+{
+  const std::vector<std::pair<CellType, shards::CellTopology>> topologies = {
+      {CellType::hex8, shards::getCellTopologyData<shards::Hexahedron<8>>()},
+      {CellType::tet4, shards::getCellTopologyData<shards::Tetrahedron<4>>()},
+      {CellType::wedge6, shards::getCellTopologyData<shards::Wedge<6>>()},
+      {CellType::pyramid5, shards::getCellTopologyData<shards::Pyramid<5>>()},
+      {CellType::tet10, shards::getCellTopologyData<shards::Tetrahedron<10>>()},
+      {CellType::hex20, shards::getCellTopologyData<shards::Hexahedron<20>>()},
+      {CellType::hex27, shards::getCellTopologyData<shards::Hexahedron<27>>()}};
+  std::vector<std::string> rotated; // the sides Shards starts at another corner
+  for (const auto &[type, topology] : topologies)
+  {
+    const kiln::ReferenceCell &cell = kiln::ReferenceCell::of(type);
+    ASSERT_EQ(static_cast<int>(topology.getNodeCount()), cell.n_nodes()) << cell.name();
+    ASSERT_EQ(static_cast<int>(topology.getSideCount()), cell.n_faces()) << cell.name();
+    for (int f = 0; f < cell.n_faces(); ++f)
+    {
+      std::vector<int> side;
+      for (unsigned k = 0; k < topology.getNodeCount(2, f); ++k)
+        side.push_back(static_cast<int>(topology.getNodeMap(2, f, k)));
+      if (side != cell.face_nodes(f))
+      {
+        rotated.push_back(cell.name() + " side " + std::to_string(f + 1));
+        std::rotate(side.begin(), std::find(side.begin(), side.end(), cell.face_nodes(f)[0]),
+                    side.end());
+      }
+      EXPECT_EQ(side, cell.face_nodes(f)) << cell.name() << " side " << f + 1;
+    }
+  }
+  EXPECT_EQ(rotated, std::vector<std::string>{"PYRAMID5 side 4"});
 }
 
 INSTANTIATE_TEST_SUITE_P(TypesIntrepid2Has, Intrepid2Agreement,
