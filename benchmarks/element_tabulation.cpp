@@ -4,7 +4,7 @@
 // points, as ElementValues does once per type) and to evaluate them at one point (as a
 // point search does per cell), per call, each the best of 5 runs of `repeat` calls.
 //   build/tests/benchmarks/bench_element_tabulation [repeat]   (default 20000)
-#include "discretization/finite_element.hpp"
+#include "elements/finite_element.hpp"
 #include "support/intrepid2_bases.hpp"
 
 #include <Kokkos_Core.hpp>

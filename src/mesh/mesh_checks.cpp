@@ -147,8 +147,7 @@ void check_mesh(const Mesh &mesh, const std::string &where, const std::string &s
     {
       const double det = jacobian_determinant(mesh, c, ref, q);
       KILN_CHECK_INPUT(det > det_tolerance, where,
-                       "cell " << c + 1 << " (block " << mesh.block_id[c] << ", "
-                               << mesh.reference_cell(c).name()
+                       "cell " << c + 1 << " (block " << mesh.block_id[c]
                                << ") has a non-positive Jacobian determinant " << det
                                << " at a quadrature point: it is inverted or degenerate, or "
                                   "its nodes are not in Exodus "

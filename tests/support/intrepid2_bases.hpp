@@ -3,7 +3,7 @@
 // compare Kiln's hand-written bases with (tests/unit/discretization/intrepid2_basis_test.cpp)
 // and time against them (benchmarks/element_tabulation.cpp). Header-only; the caller keeps
 // Kokkos initialised (Kokkos::ScopeGuard) while it uses them.
-#include "mesh/reference_cell.hpp"
+#include "elements/reference_cell.hpp"
 
 #include <Teuchos_RCP.hpp> // before Intrepid2: its getSubCellRefBasis() instantiates rcp()
 

@@ -7,11 +7,11 @@
 // the face type's basis equal to the cell basis restricted to it. Plus HEX8's tables equal
 // Kiln's hex_face_nodes and hex_gauss_points() exactly.
 // KILN_TEST_NP: 1
-#include "discretization/finite_element.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/finite_element.hpp"
+#include "elements/quadrature_rules.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/mesh.hpp"
-#include "mesh/reference_cell.hpp"
+#include "elements/reference_cell.hpp"
 
 #include <gtest/gtest.h>
 

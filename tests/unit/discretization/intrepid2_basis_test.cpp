@@ -4,7 +4,7 @@
 // is Shards' (including HEX27's centroid and face centres). HEX20 against the first Intrepid's
 // HGRAD_HEX_I2 (QUAD8: finite_element_test's hand-derived values).
 // KILN_TEST_NP: 1
-#include "discretization/finite_element.hpp"
+#include "elements/finite_element.hpp"
 #include "support/intrepid2_bases.hpp"
 
 #include <Intrepid_FieldContainer.hpp>

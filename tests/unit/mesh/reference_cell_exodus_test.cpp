@@ -3,7 +3,7 @@
 // ex_get_side_set_node_list(), whose per-side node lists (corners and mid-side nodes and
 // HEX27's face centres, in the library's own order) must equal ReferenceCell::face_nodes.
 // KILN_TEST_NP: 1
-#include "mesh/reference_cell.hpp"
+#include "elements/reference_cell.hpp"
 
 #include <exodusII.h>
 #include <gtest/gtest.h>

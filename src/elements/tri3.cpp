@@ -1,7 +1,7 @@
 /// TRI3: the linear triangle on the unit simplex (faces of TETRA4, WEDGE6, PYRAMID5).
 /// The 3-point rule of degree 2.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

@@ -5,8 +5,8 @@
 /// 8 points) integrates its mass and stiffness on affine pyramids exactly. At the apex the
 /// rational term's gradient has no limit; there (|1 - z| < 1e-12) it is taken as 0, as
 /// Intrepid2 does.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 /// The element types' makers (one file each in this folder), registered by
 /// FiniteElement::of() in finite_element_table.cpp; and the small 1D and barycentric
 /// Lagrange helpers several of them share.
-#include "discretization/finite_element.hpp"
+#include "elements/finite_element.hpp"
 
 #include <memory>
 

@@ -1,6 +1,6 @@
 /// FiniteElement::of(): the registration of the element types, one line each (style.md §9).
 /// A new type: a file in elements/ with its make_<type>() and a line here.
-#include "discretization/elements/elements.hpp"
+#include "elements/elements.hpp"
 
 #include "base/errors.hpp"
 
@@ -11,10 +11,19 @@ namespace kiln
 {
 const FiniteElement &FiniteElement::of(const CellType type)
 {
+  const FiniteElement *element = find(type);
+  if (element == nullptr)
+    throw InternalError("FiniteElement::of: no element for CellType " +
+                        std::to_string(static_cast<int>(type)));
+  return *element;
+}
+
+const FiniteElement *FiniteElement::find(const CellType type)
+{
   using Maker = std::unique_ptr<FiniteElement> (*)();
-  static const std::array<std::unique_ptr<FiniteElement>, 12> table = []
+  static const std::array<std::unique_ptr<FiniteElement>, n_cell_types> table = []
   {
-    std::array<std::unique_ptr<FiniteElement>, 12> t;
+    std::array<std::unique_ptr<FiniteElement>, n_cell_types> t;
     for (const Maker make :
          {elements::make_hex8, elements::make_tet4, elements::make_wedge6, elements::make_pyramid5,
           elements::make_tet10, elements::make_hex20, elements::make_hex27, elements::make_quad4,
@@ -27,8 +36,6 @@ const FiniteElement &FiniteElement::of(const CellType type)
     return t;
   }();
   const auto i = static_cast<std::size_t>(type);
-  if (i >= table.size() || !table[i])
-    throw InternalError("FiniteElement::of: no element for CellType " + std::to_string(i));
-  return *table[i];
+  return i < table.size() ? table[i].get() : nullptr;
 }
 } // namespace kiln

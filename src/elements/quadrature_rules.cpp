@@ -1,4 +1,4 @@
-#include "discretization/quadrature_rules.hpp"
+#include "elements/quadrature_rules.hpp"
 
 #include "base/errors.hpp"
 

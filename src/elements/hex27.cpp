@@ -1,8 +1,8 @@
 /// HEX27: the triquadratic Lagrange hexahedron on [-1,1]^3 (Exodus node order: corners,
 /// mid-edges, centroid, face centres -z, +z, -x, +x, -y, +y). 3x3x3 Gauss: degree 5 per
 /// coordinate, exact for mass (degree 4) and stiffness on affine cells.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

@@ -1,8 +1,8 @@
 /// HEX20: the quadratic serendipity hexahedron on [-1,1]^3 (Exodus node order: corners,
 /// then the mid-edge nodes of the bottom, vertical and top edges). 3x3x3 Gauss: degree 5 per
 /// coordinate.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

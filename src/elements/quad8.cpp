@@ -1,7 +1,7 @@
 /// QUAD8: the quadratic serendipity quadrilateral (faces of HEX20). 3x3 Gauss: degree 5
 /// per coordinate.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

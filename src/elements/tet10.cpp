@@ -1,7 +1,7 @@
 /// TETRA10: the quadratic tetrahedron on the unit simplex (Exodus mid-edge order 01, 12,
 /// 20, 03, 13, 23). Walkington's 14-point rule of degree 5 (mass: degree 4).
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

@@ -1,7 +1,7 @@
 /// QUAD9: the biquadratic Lagrange quadrilateral (faces of HEX27; corners, mid-edges,
 /// centre). 3x3 Gauss: degree 5 per coordinate.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

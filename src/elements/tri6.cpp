@@ -1,7 +1,7 @@
 /// TRI6: the quadratic triangle on the unit simplex (faces of TETRA10; mid-edge order
 /// 01, 12, 20). Radon's 7-point rule of degree 5.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

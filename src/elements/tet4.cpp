@@ -1,7 +1,7 @@
 /// TETRA4: the linear tetrahedron on the unit simplex. The 4-point rule of degree 2
 /// (exact for the mass matrix; the stiffness needs degree 0).
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

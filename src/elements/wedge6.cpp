@@ -2,8 +2,8 @@
 /// l the triangle's barycentric coordinates, bottom nodes 0-2 (z = -1), top 3-5. Quadrature:
 /// the 3-point triangle rule (degree 2) times 2-point Gauss in z (degree 3): exact for the
 /// mass and stiffness integrands on affine wedges.
-#include "discretization/elements/elements.hpp"
-#include "discretization/quadrature_rules.hpp"
+#include "elements/elements.hpp"
+#include "elements/quadrature_rules.hpp"
 
 namespace kiln::elements
 {

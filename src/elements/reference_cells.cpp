@@ -4,7 +4,7 @@
 /// faces list their corners so that the right-hand rule gives the outward normal (Exodus'
 /// side order), then their mid-edge nodes and centre in the face type's own order. Checked
 /// by tests/unit/discretization/reference_element_test.cpp. doc/elements.md has the pictures.
-#include "mesh/reference_cell.hpp"
+#include "elements/reference_cell.hpp"
 
 #include "base/errors.hpp"
 
@@ -117,6 +117,21 @@ std::vector<std::vector<int>> pyramid5_faces()
   return {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 4, 3}, {0, 3, 2, 1}};
 }
 
+/// XDMF's (VTK's) HEX20 order: the top edges (Exodus 16..19) before the vertical ones
+/// (Exodus 12..15).
+std::vector<int> hex20_xdmf_order()
+{
+  return {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
+}
+/// XDMF's (VTK's) HEX27 order: HEX20's, then the face centres -x, +x, -y, +y, -z, +z and the
+/// centroid (Exodus 23, 24, 25, 26, 21, 22, 20).
+std::vector<int> hex27_xdmf_order()
+{
+  std::vector<int> order = hex20_xdmf_order();
+  order.insert(order.end(), {23, 24, 25, 26, 21, 22, 20});
+  return order;
+}
+
 // XDMF topology codes (Xdmf2's XdmfTopology.h): Triangle 0x4, Quadrilateral 0x5, Tetrahedron
 // 0x6, Pyramid 0x7, Wedge 0x8, Hexahedron 0x9, Quad_9 0x23, Tri_6 0x24, Quad_8 0x25, Tet_10
 // 0x26, Hex_20 0x30, Hex_27 0x32. (XDMF orders the quadratic hexahedron's nodes as VTK does,
@@ -161,7 +176,8 @@ std::array<ReferenceCell, 12> make_table()
        with_edge_midpoints(hex_corners(), hex_edges),
        hex20_faces(),
        {Q8, Q8, Q8, Q8, Q8, Q8},
-       0x30},
+       0x30,
+       hex20_xdmf_order()},
       {CellType::hex27,
        "HEX27",
        3,
@@ -170,7 +186,8 @@ std::array<ReferenceCell, 12> make_table()
        hex27_nodes(),
        hex27_faces(),
        {Q9, Q9, Q9, Q9, Q9, Q9},
-       0x32},
+       0x32,
+       hex27_xdmf_order()},
       {CellType::quad4, "QUAD4", 2, 1, 4, quad_corners(), {}, {}, 0x5},
       {CellType::tri3, "TRI3", 2, 1, 3, tri_corners(), {}, {}, 0x4},
       {CellType::quad8,

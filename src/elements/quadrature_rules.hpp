@@ -1,7 +1,7 @@
 #pragma once
 /// The quadrature rules of Kiln's element types (doc/elements.md lists each rule, its points
 /// and the degree it integrates exactly). Built once per element type by its FiniteElement.
-#include "discretization/finite_element.hpp"
+#include "elements/finite_element.hpp"
 
 namespace kiln::quadrature
 {
