@@ -87,7 +87,7 @@ void GapCsvWriter::write_table(const internal::GapSurface &gap, const std::strin
         std::ofstream out(temporary, std::ios::trunc);
         out << "time [s],pair [-],x [m],y [m],z [m],s [m],t [m],gap_opening [m],"
                "contact_pressure [Pa],gap_heat_flux [W/m^2],contact_active [-],"
-               "temperature_a [K],temperature_b [K]\n";
+               "temperature_a [K],temperature_b [K],area [m^2]\n";
         const std::string time = history_number(time_);
         for (int p = 0; p < gap.n_points(); ++p)
         {
@@ -97,7 +97,7 @@ void GapCsvWriter::write_table(const internal::GapSurface &gap, const std::strin
                {gap.points[p][0], gap.points[p][1], gap.points[p][2], gap.s[p], gap.t[p],
                 value("gap_opening", p, a), value("contact_pressure", p, a),
                 value("gap_heat_flux", p, a), value("contact_active", p, a),
-                value("temperature", p, a), value("temperature", p, b)})
+                value("temperature", p, a), value("temperature", p, b), gap.area[p]})
             out << "," << history_number(v);
           out << "\n";
         }

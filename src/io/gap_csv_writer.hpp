@@ -24,8 +24,9 @@ class RowGather;
 /// for the others; NNNNNN: the output step, as /steps/NNNNNN of the HDF5 file), one
 /// row per pair of the gap (side a) with the time, the pair's position (x, y, z and the
 /// in-plane s, t of internal::GapSurface), the gap opening, the contact pressure (positive in
-/// compression), the heat flux across the gap, the contact state and the temperatures of
-/// both sides; "nan" for what the run does not have. Each header is "NAME [UNIT]". The gap
+/// compression), the heat flux across the gap, the contact state, the temperatures of
+/// both sides and the pair's area (its share of the gap's area: the normal force across the
+/// gap is the sum of contact_pressure x area); "nan" for what the run does not have. Each header is "NAME [UNIT]". The gap
 /// fields are the pairs' (write_gap_field()), else their nodes a's. The node fields are
 /// gathered to rank 0,
 /// which writes each file under a temporary name and renames it. Collective; InputError on
