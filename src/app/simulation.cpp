@@ -497,8 +497,9 @@ int Simulation::continue_results(const std::string &source, const double time)
   std::vector<ResultsWriter *> writers;
   for (const auto &w : writers_)
     writers.push_back(w.get());
-  const ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(),
-                        dofs_->owned_cells()};
+  ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells(), {}};
+  for (const GapPair &pair : mesh_.gap_pairs)
+    rows.gap_pairs.emplace_back(pair.node_a, pair.node_b);
   const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
   const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
                        : replay_results(source, time, rows, writers, *comm_);
