@@ -207,18 +207,7 @@ def restarted_gaps(kiln, inputs, work, n_ranks, mpiexec, check):
 def bonded_gap_12(kiln, inputs, work, n_ranks, mpiexec):
     """contact-box-crossing with gap 12 bonded; its fields at 50 s."""
     os.makedirs(work, exist_ok=True)
-    text = bonded_text(inputs)
-    deck = os.path.join(work, "crossing-bonded.xml")
-    with open(deck, "w", encoding="utf-8") as f:
-        f.write(text)
-    command = [kiln, deck]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"crossing-bonded: exit {done.returncode}")
+    run_deck(kiln, work, "crossing-bonded", bonded_text(inputs), n_ranks, mpiexec)
     with h5py.File(os.path.join(work, "results", "crossing-bonded.h5"), "r") as h5:
         step = next(h5["steps"][k] for k in sorted(h5["steps"].keys())
                     if float(h5["steps"][k].attrs["time"]) == 50.0)
@@ -234,17 +223,7 @@ def one_end_heated(kiln, inputs, work, n_ranks, mpiexec):
     heated = heated.replace('''<ParameterList name="Output">''', '''<ParameterList name="Output">
     <Parameter name="Format" type="string" value="HDF5 and Exodus"/>''', 1)
     assert heated.count('value="{1}"') == 1 and "HDF5 and Exodus" in heated
-    deck = os.path.join(work, "crossing-heated.xml")
-    with open(deck, "w", encoding="utf-8") as f:
-        f.write(heated)
-    command = [kiln, deck]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"crossing-heated: exit {done.returncode}")
+    run_deck(kiln, work, "crossing-heated", heated, n_ranks, mpiexec)
     return os.path.join(work, "results", "crossing-heated.exo")
 
 
