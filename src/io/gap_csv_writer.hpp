@@ -26,11 +26,10 @@ class RowGather;
 /// in-plane s, t of internal::GapSurface), the gap opening, the contact pressure (positive in
 /// compression), the heat flux across the gap, the contact state, the temperatures of
 /// both sides and the pair's area (its share of the gap's area: the normal force across the
-/// gap is the sum of contact_pressure x area); "nan" for what the run does not have. Each header is "NAME [UNIT]". The gap
-/// fields are the pairs' (write_gap_field()), else their nodes a's. The node fields are
-/// gathered to rank 0,
-/// which writes each file under a temporary name and renames it. Collective; InputError on
-/// every rank when a file cannot be written.
+/// gap is the sum of contact_pressure x area); "nan" for what the run does not have. Each header is
+/// "NAME [UNIT]". The gap fields are the pairs' (write_gap_field()), else their nodes a's. The node
+/// fields are gathered to rank 0, which writes each file under a temporary name and renames it.
+/// Collective; InputError on every rank when a file cannot be written.
 class GapCsvWriter final : public ResultsWriter
 {
 public:
