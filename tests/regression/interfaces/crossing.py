@@ -25,7 +25,8 @@ Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
    contact_area_gapID and active_pairs_gapID over the pairs in contact, gap_heat_flow_gapID =
    sum of gap_heat_flux x area, min/max_gap_gapID the extremes of gap_opening; the columns
    without suffix are the sums (extremes) over the gaps. The HDF5 file has a surface per gap
-   (/gap, /gap_ID; their fields the tables'), the XDMF file a Temporal collection per gap, the
+   (/gap, /gap_ID; their fields the tables'), the XDMF file a Temporal collection per gap (each data
+   item a dataset of the HDF5 file with its dimensions), the
    Exodus file a side set per gap (gap, gap_ID) and the columns as global variables. With
    gap 12 bonded, at 50 s its normal force is a tension (< -100 N; -930 N measured) where
    gap 10 is open (0), and at 150 s gap 10's is a compression (> 0). Heated at one end, heat
@@ -117,8 +118,15 @@ def gap_outputs(work, base, gap_ids, check, what):
         xmf = f.read()
     grids = re.findall(r'<Grid Name="(gap[_0-9]*)" GridType="Collection"', xmf)
     expected = ["gap"] + [f"gap_{i}" for i in gap_ids[1:]]
-    check(grids == expected and all(f"/{n}/coordinates" in xmf for n in expected),
-          f"{what}: XDMF gap collections {grids}")
+    # Every data item a dataset of the file with the item's dimensions.
+    items = re.findall(r'<DataItem Dimensions="([0-9 ]+)"[^>]*>[^:<]+:(/[^<]+)</DataItem>', xmf)
+    with h5py.File(results + ".h5", "r") as h5:
+        wrong = [p for d, p in items
+                 if p not in h5 or h5[p].shape != tuple(int(n) for n in d.split())]
+    check(grids == expected and all(f"/{n}/coordinates" in xmf for n in expected) and
+          not wrong and items,
+          f"{what}: XDMF gap collections {grids}, its {len(items)} data items in the HDF5 "
+          f"file {wrong[:3]}")
     return column
 
 
