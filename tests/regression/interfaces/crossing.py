@@ -25,9 +25,9 @@ Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
    contact_area_gapID and active_pairs_gapID over the pairs in contact, gap_heat_flow_gapID =
    sum of gap_heat_flux x area, min/max_gap_gapID the extremes of gap_opening; the columns
    without suffix are the sums (extremes) over the gaps. The HDF5 file has a surface per gap
-   (/gap, /gap_ID; their fields the tables'), the XDMF file a Temporal collection per gap (each data
-   item a dataset of the HDF5 file with its dimensions), the
-   Exodus file a side set per gap (gap, gap_ID) and the columns as global variables. With
+   (/gap, /gap_ID; their fields the tables'), the XDMF file a Temporal collection per gap
+   (each data item a dataset of the HDF5 file with its dimensions), the Exodus file a side
+   set per gap (gap, gap_ID) and the columns as global variables. With
    gap 12 bonded, at 50 s its normal force is a tension (< -100 N; -930 N measured) where
    gap 10 is open (0), and at 150 s gap 10's is a compression (> 0). Heated at one end, heat
    crosses gap 10 (|flow| > 0.1 W at 50 s; 21 W measured) and not gap 12 (< 1e-6 of it).
