@@ -51,22 +51,31 @@ void RunObserver::record(const TimeStepper::State &state, const NewtonSolver::Re
   const bool temperature = c_.layout.temperature;
   const bool displacement = c_.layout.displacement;
   const bool contact = s.n_pairs > 0;
-  const std::vector<double> row = {static_cast<double>(state.statistics.steps),
-                                   state.time,
-                                   state.statistics.steps > 0 ? state.last_step : 0.0,
-                                   static_cast<double>(newton.newton_iterations),
-                                   static_cast<double>(newton.linear_iterations),
-                                   temperature ? s.T_min : nan,
-                                   temperature ? s.T_max : nan,
-                                   temperature ? s.T_mean : nan,
-                                   temperature ? s.thermal_energy : nan,
-                                   displacement ? s.max_displacement : nan,
-                                   contact ? s.min_opening : nan,
-                                   contact ? s.max_opening : nan,
-                                   static_cast<double>(s.n_active),
-                                   contact ? s.contact_area : nan,
-                                   contact ? s.normal_force : nan,
-                                   c_.progress.wall_time()};
+  std::vector<double> row = {static_cast<double>(state.statistics.steps),
+                             state.time,
+                             state.statistics.steps > 0 ? state.last_step : 0.0,
+                             static_cast<double>(newton.newton_iterations),
+                             static_cast<double>(newton.linear_iterations),
+                             temperature ? s.T_min : nan,
+                             temperature ? s.T_max : nan,
+                             temperature ? s.T_mean : nan,
+                             temperature ? s.thermal_energy : nan,
+                             displacement ? s.max_displacement : nan,
+                             contact ? s.min_opening : nan,
+                             contact ? s.max_opening : nan,
+                             static_cast<double>(s.n_active),
+                             contact ? s.contact_area : nan,
+                             contact ? s.normal_force : nan,
+                             c_.progress.wall_time()};
+  // With several gaps, a block of columns per gap (history_columns(gap_side_sets)).
+  if (s.gaps.size() > 1)
+    for (const GapFigures &gap : s.gaps)
+    {
+      const bool held = gap.n_pairs > 0;
+      row.insert(row.end(), {held ? gap.min_opening : nan, held ? gap.max_opening : nan,
+                             static_cast<double>(gap.n_active), held ? gap.contact_area : nan,
+                             held ? gap.normal_force : nan, gap.heat_flow});
+    }
   c_.history.append(row);
   for (const auto &writer : c_.writers)
     writer->write_history(row);
@@ -124,10 +133,10 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
   info.output_steps = output_steps_;
   info.preconditioner_origin = c_.newton.preconditioner_origin();
   const CoupledProblem::ContactOutput contact = c_.problem.contact_output(*state.x);
-  for (const GapPair &pair : c_.mesh.gap_pairs)
+  for (std::size_t p = 0; p < c_.mesh.gap_pairs.size(); ++p)
   {
-    info.active.push_back(contact.active[pair.node_a] == 1.0 ? 1 : 0);
-    info.traction.push_back(contact.traction[pair.node_a]);
+    info.active.push_back(contact.pair_active[p] == 1.0 ? 1 : 0);
+    info.traction.push_back(contact.pair_traction[p]);
   }
   write_checkpoint(path, state, info, c_.fingerprint, *c_.comm);
   // BASE.h5 names the latest: a hard link (a copy where links are not possible), replaced

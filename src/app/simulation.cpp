@@ -350,9 +350,11 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
 {
   const MPI_Comm mpi_comm =
       *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  std::vector<HistoryColumn> columns = history_columns(mesh_.gap_side_sets);
   if (restart_.empty())
-    return HistoryCsv(mpi_comm, outputs_->history_path());
-  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps);
+    return HistoryCsv(mpi_comm, outputs_->history_path(), std::move(columns));
+  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps,
+                     std::move(columns));
   if (!history.warning().empty())
     *out_ << "warning: " << history.warning() << "\n";
   for (const auto &row : history.kept_rows())
@@ -400,11 +402,15 @@ Simulation::files_written(const std::string &checkpoint) const
       {"history", outputs_->history_path()}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
+    // A line per gap: "gap tables" (the first), "gap tables (2)" ...
     const int n = gap_tables_->next_step() - first_gap_step_;
-    files.emplace_back("gap tables", n == 1 ? gap_tables_->path(first_gap_step_)
-                                            : gap_tables_->path(first_gap_step_) + " to " +
-                                                  gap_tables_->path(gap_tables_->next_step() - 1) +
-                                                  " (" + std::to_string(n) + " files)");
+    for (int g = 0; g < gap_tables_->n_gaps(); ++g)
+      files.emplace_back(g == 0 ? std::string("gap tables")
+                                : "gap tables (" + std::to_string(g + 1) + ")",
+                         n == 1 ? gap_tables_->path(first_gap_step_, g)
+                                : gap_tables_->path(first_gap_step_, g) + " to " +
+                                      gap_tables_->path(gap_tables_->next_step() - 1, g) + " (" +
+                                      std::to_string(n) + " files)");
   }
   if (!checkpoint.empty())
     files.emplace_back("checkpoint", checkpoint);
@@ -491,8 +497,9 @@ int Simulation::continue_results(const std::string &source, const double time)
   std::vector<ResultsWriter *> writers;
   for (const auto &w : writers_)
     writers.push_back(w.get());
-  const ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(),
-                        dofs_->owned_cells()};
+  ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells(), {}};
+  for (const GapPair &pair : mesh_.gap_pairs)
+    rows.gap_pairs.emplace_back(pair.node_a, pair.node_b);
   const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
   const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
                        : replay_results(source, time, rows, writers, *comm_);

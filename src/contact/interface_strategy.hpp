@@ -86,11 +86,14 @@ public:
 
   /// Per mesh node, on every rank (collective): the normal traction across the gap at the
   /// last decision (-p, negative in compression) [Pa] and 1/0 for pairs that hold; NaN off the
-  /// gap.
+  /// gap. pair_traction and pair_active: the same per pair (ContactInterface::pairs() order
+  /// from node_values(); Mesh::gap_pairs order from CoupledProblem::contact_output()).
   struct NodeValues
   {
     std::vector<double> traction;
     std::vector<double> active;
+    std::vector<double> pair_traction;
+    std::vector<double> pair_active;
   };
   NodeValues node_values() const;
 

@@ -37,7 +37,8 @@ void check_results_write(const int status, const std::string &path, const std::s
 
 ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
                                      const std::vector<int> &cell_rank)
-    : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells())
+    : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells()),
+      columns_(history_columns(mesh.gap_side_sets))
 {
   const std::filesystem::path parent = std::filesystem::path(path_).parent_path();
   std::error_code ignored;
@@ -77,7 +78,7 @@ ExodusResultsFile::~ExodusResultsFile()
 void ExodusResultsFile::define_variables(const ExodusVariables &variables) const
 {
   std::vector<std::string> global_names;
-  for (const HistoryColumn &column : history_columns())
+  for (const HistoryColumn &column : columns_)
     global_names.push_back(column.name);
   const int n_globals = static_cast<int>(global_names.size());
   ExodusNames globals(global_names);
@@ -119,7 +120,7 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
     throw WriteError(path_ + ": the next step cannot be written (" + shortfall + "); " +
                      write_failure_advice());
   check_results_write(ex_put_time(exo_, exodus_step, &step.time), path_, what);
-  KILN_ASSERT(step.globals.size() == history_columns().size(), "one global per history column");
+  KILN_ASSERT(step.globals.size() == columns_.size(), "one global per history column");
   check_results_write(ex_put_var(exo_, exodus_step, EX_GLOBAL, 1, 0,
                                  static_cast<int64_t>(step.globals.size()), step.globals.data()),
                       path_, what);
@@ -150,7 +151,7 @@ void ExodusResultsFile::write_step(const Step &step, const ExodusVariables &vari
 
 void ExodusResultsFile::write_globals(const int index, const std::vector<double> &globals) const
 {
-  KILN_ASSERT(globals.size() == history_columns().size(), "one global per history column");
+  KILN_ASSERT(globals.size() == columns_.size(), "one global per history column");
   const std::string what = "writing the global variables of output step " + std::to_string(index);
   check_results_write(ex_put_var(exo_, index + 1, EX_GLOBAL, 1, 0,
                                  static_cast<int64_t>(globals.size()), globals.data()),

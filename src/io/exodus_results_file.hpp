@@ -1,13 +1,13 @@
 #pragma once
 /// Private to src/io: the Exodus II results file, as rank 0 writes it alone (the values come
 /// gathered). The mesh as exodus_layout() names it (with the element attribute "cell_rank"),
-/// one global variable per column of the time history (history_columns(), named as the
-/// columns), and the node and element variables of
-/// ExodusVariables, element variables on every block. Every member function throws an
-/// InputError naming the file when an Exodus call fails, a WriteError when the disk is full
-/// or the file-size limit reached (checked before each step, and the system's reason of a
-/// failed call); the destructor closes the file.
+/// one global variable per column of the time history (history_columns(mesh.gap_side_sets), named
+/// as the columns), and the node and element variables of ExodusVariables, element variables on
+/// every block. Every member function throws an InputError naming the file when an Exodus call
+/// fails, a WriteError when the disk is full or the file-size limit reached (checked before each
+/// step, and the system's reason of a failed call); the destructor closes the file.
 #include "io/exodus_variables.hpp"
+#include "io/history_csv.hpp"
 #include "mesh/exodus_io.hpp"
 
 #include <cstdint>
@@ -38,7 +38,7 @@ public:
   {
     int index;                          ///< 0-based (Exodus time step index + 1)
     double time;                        ///< [s]
-    const std::vector<double> &globals; ///< one per history column, history_columns() order
+    const std::vector<double> &globals; ///< one per history column, history_columns(gaps) order
     const std::vector<FieldSpec> &fields;
     const std::vector<std::vector<double>> &values; ///< per field
   };
@@ -57,6 +57,7 @@ private:
   int n_nodes_ = 0;
   int n_cells_ = 0;
   ExodusLayout layout_;
+  std::vector<HistoryColumn> columns_; ///< the global variables: history_columns(mesh's gaps)
   /// The file's size after the last step (or the mesh), and the largest growth of a step
   /// [bytes]: each step first checks for room for twice that (a WriteError if there is none).
   mutable std::uintmax_t size_before_step_ = 0;

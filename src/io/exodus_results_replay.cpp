@@ -139,8 +139,11 @@ int replay_exodus_results(const std::string &path, const double until, const Mes
                                          static_cast<int64_t>(globals.size()), globals.data()) < 0)
         throw std::runtime_error("cannot read the global variables of step " +
                                  std::to_string(s + 1));
-      Step step{
-          times[s], globals[dt_global], static_cast<int>(std::lround(globals[step_global])), {}};
+      Step step{times[s],
+                globals[dt_global],
+                static_cast<int>(std::lround(globals[step_global])),
+                {},
+                {}};
       const auto read = [&](const ExodusField &f, const bool on_nodes)
       {
         const int n_rows = on_nodes ? rows.n_nodes : rows.n_cells;

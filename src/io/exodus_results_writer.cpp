@@ -65,6 +65,7 @@ struct ExodusResultsWriter::Impl
   std::vector<double> last_row; ///< the last history row given, or empty
   /// Written output steps without their history row yet: (cycle, output step index).
   std::vector<std::pair<int, int>> pending;
+  std::size_t n_columns = 0; ///< of the history: history_columns(mesh's gaps)
   std::unique_ptr<internal::ExodusResultsFile> file;
 };
 
@@ -73,7 +74,8 @@ ExodusResultsWriter::Impl::Impl(const MPI_Comm communicator, const std::string &
                                 const std::vector<int> &owned_cells)
     : comm(communicator), base(base_path), path(base_path + ".running.exo"),
       node_rows(communicator, owned_nodes, mesh.n_nodes()),
-      cell_rows(communicator, owned_cells, mesh.n_cells())
+      cell_rows(communicator, owned_cells, mesh.n_cells()),
+      n_columns(history_columns(mesh.gap_side_sets).size())
 {
   MPI_Comm_rank(comm, &rank);
 }
@@ -128,7 +130,7 @@ std::vector<double> ExodusResultsWriter::Impl::step_globals()
   const std::size_t step_column = history_column("step");
   if (!last_row.empty() && last_row[step_column] == cycle)
     return last_row;
-  std::vector<double> globals(history_columns().size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> globals(n_columns, std::numeric_limits<double>::quiet_NaN());
   globals[step_column] = cycle;
   globals[history_column("time")] = time;
   globals[history_column("dt")] = dt;
@@ -214,9 +216,9 @@ void ExodusResultsWriter::end_step()
 void ExodusResultsWriter::write_history(const std::vector<double> &row)
 {
   Impl &m = *impl_;
-  internal::check_usage(row.size() == history_columns().size(),
-                        "row.size() == history_columns().size()",
-                        "a history row needs one value per column of history_columns()");
+  internal::check_usage(row.size() == m.n_columns, "row.size() == n_columns",
+                        "a history row needs one value per column of "
+                        "history_columns(mesh.gap_side_sets)");
   m.last_row = row;
   const double step = row[history_column("step")];
   std::vector<int> complete; // output steps of this row

@@ -6,8 +6,8 @@
 ///   per side set with the same id and name, the info record that the coordinates are in
 ///   metres;
 /// - per output step: the time, one global variable per column of the time history
-///   (history_columns(), named as the columns: the row of the step written, whose "step" is
-///   the output step's cycle; NaN but step, time and dt until that row comes, see
+///   (history_columns(mesh.gap_side_sets), named as the columns: the row of the step written, whose
+///   "step" is the output step's cycle; NaN but step, time and dt until that row comes, see
 ///   write_history()), one nodal or element
 ///   variable per component of each field: a 1-component field keeps its name, 3
 ///   components get _x _y _z, 6-component Voigt tensors (Kiln order xx yy zz xy xz yz)
@@ -64,9 +64,9 @@ public:
                         const std::vector<double> &values) override;
   /// Writes the step (the first one also defines the variables) and flushes the file.
   void end_step() override;
-  /// Keeps `row` (history_columns() order) for the global variables of the next step of its
-  /// cycle; if steps of its cycle were written before it (the earlier steps of a continued
-  /// run come before their rows), writes their global variables now and flushes the file.
+  /// Keeps `row` (history_columns(mesh.gap_side_sets) order) for the global variables of the next
+  /// step of its cycle; if steps of its cycle were written before it (the earlier steps of a
+  /// continued run come before their rows), writes their global variables now and flushes the file.
   void write_history(const std::vector<double> &row) override;
   /// Closes the file and renames it BASE.exo (the status shows in the log only).
   void finish(const std::string &status) override;

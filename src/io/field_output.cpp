@@ -10,8 +10,23 @@
 namespace kiln
 {
 FieldOutput::FieldOutput(CoupledProblem &problem, const Mesh &mesh, const DofManager &dofs)
-    : problem_(problem), mesh_(mesh), dofs_(dofs)
+    : problem_(problem), mesh_(mesh), dofs_(dofs), shown_pair_(mesh.n_nodes(), -1)
 {
+  for (std::size_t p = 0; p < mesh.gap_pairs.size(); ++p)
+    for (const int n : {mesh.gap_pairs[p].node_a, mesh.gap_pairs[p].node_b})
+      if (shown_pair_[n] < 0 || mesh.gap_pairs[shown_pair_[n]].gap > mesh.gap_pairs[p].gap)
+        shown_pair_[n] = static_cast<int>(p);
+}
+
+void FieldOutput::write_gap_field(ResultsWriter &writer, const std::string &name,
+                                  const std::vector<double> &per_pair) const
+{
+  writer.write_gap_field(name, per_pair);
+  std::vector<double> owned;
+  for (const int n : dofs_.owned_nodes())
+    owned.push_back(shown_pair_[n] < 0 ? std::numeric_limits<double>::quiet_NaN()
+                                       : per_pair[static_cast<std::size_t>(shown_pair_[n])]);
+  writer.write_node_field(name, 1, owned);
 }
 
 void FieldOutput::write(ResultsWriter &writer, const double time, const int cycle, const double dt,
@@ -54,27 +69,22 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
     writer.write_cell_field("pressure", 1, mean_pressure);
     writer.write_cell_field("principal_stress", 3, principal_stress);
   }
-  writer.write_node_field("gap_opening", 1, gap_opening(u));
+  write_gap_field(writer, "gap_opening", gap_opening(u));
   if (problem_.has_contact())
   {
-    const CoupledProblem::ContactOutput contact = problem_.contact_output(x);
+    CoupledProblem::ContactOutput contact = problem_.contact_output(x);
     // One sign for the gap everywhere: the pressure, positive in compression (+ 0.0: no -0).
-    std::vector<double> pressure, active;
-    for (const int n : dofs_.owned_nodes())
-    {
-      pressure.push_back(-contact.traction[n] + 0.0);
-      active.push_back(contact.active[n]);
-    }
-    writer.write_node_field("contact_pressure", 1, pressure);
-    writer.write_node_field("contact_active", 1, active);
+    for (double &p : contact.pair_traction)
+      p = -p + 0.0;
+    write_gap_field(writer, "contact_pressure", contact.pair_traction);
+    write_gap_field(writer, "contact_active", contact.pair_active);
   }
   if (layout.temperature && !mesh_.gap_pairs.empty())
   {
-    const std::vector<double> flux = problem_.gap_heat_flux(x);
-    std::vector<double> owned;
-    for (const int n : dofs_.owned_nodes())
-      owned.push_back(flux[n]);
-    writer.write_node_field("gap_heat_flux", 1, owned);
+    std::vector<double> flux = problem_.gap_heat_flow(x);
+    for (std::size_t p = 0; p < flux.size(); ++p)
+      flux[p] /= mesh_.gap_pairs[p].area;
+    write_gap_field(writer, "gap_heat_flux", flux);
   }
   writer.end_step();
 }
@@ -96,17 +106,14 @@ std::vector<double> FieldOutput::gap_opening(const std::vector<Point> &u_owned) 
   const auto displacement = [&](const int n) {
     return Point{u[3 * n], u[3 * n + 1], u[3 * n + 2]};
   };
-  std::vector<double> opening_of_node(n_nodes, std::numeric_limits<double>::quiet_NaN());
   // The width of the mesh's gap (zero where it was split) plus the opening by the
   // displacement: the displacements are subtracted before they meet the coordinates, which
   // would round them off.
+  std::vector<double> opening;
   for (const auto &p : mesh_.gap_pairs)
-    opening_of_node[p.node_a] = opening_of_node[p.node_b] =
+    opening.push_back(
         kiln::gap_opening(p.normal, mesh_.coordinates[p.node_a], mesh_.coordinates[p.node_b]) +
-        kiln::gap_opening(p.normal, displacement(p.node_a), displacement(p.node_b));
-  std::vector<double> result;
-  for (const int n : dofs_.owned_nodes())
-    result.push_back(opening_of_node[n]);
-  return result;
+        kiln::gap_opening(p.normal, displacement(p.node_a), displacement(p.node_b)));
+  return opening;
 }
 } // namespace kiln

@@ -11,7 +11,9 @@ namespace kiln
 {
 /// From the problem's state x: the nodal temperature and displacement, the cell averages of
 /// stress, strain and thermal strain, and at the gap the opening, the normal traction and
-/// the contact state (NaN off the gap), each for the fields the layout has.
+/// the contact state (NaN off the gap), each for the fields the layout has. The gap fields
+/// are given per pair (ResultsWriter::write_gap_field()) and per node; a node in several
+/// pairs (where gaps cross) shows its pair of the first gap (Mesh::gap_side_sets order).
 class FieldOutput
 {
 public:
@@ -22,12 +24,19 @@ public:
   void write(ResultsWriter &writer, double time, int cycle, double dt, const Vector &x);
 
 private:
-  /// The gap opening (gap_opening()) of the displaced positions at the owned nodes (NaN off
-  /// the gap); u_owned: the displacement of the owned nodes.
+  /// The gap opening (gap_opening()) of the displaced positions per pair of Mesh::gap_pairs;
+  /// u_owned: the displacement of the owned nodes.
   std::vector<double> gap_opening(const std::vector<Point> &u_owned) const;
+  /// A gap field of the pairs to `writer`: per pair, then at the owned nodes (the pair of
+  /// shown_pair_, NaN off the gap).
+  void write_gap_field(ResultsWriter &writer, const std::string &name,
+                       const std::vector<double> &per_pair) const;
 
   CoupledProblem &problem_;
   const Mesh &mesh_;
   const DofManager &dofs_;
+  /// Per mesh node, the pair (Mesh::gap_pairs) whose values its gap fields show: of the first
+  /// gap it lies on; -1 off the gap.
+  std::vector<int> shown_pair_;
 };
 } // namespace kiln

@@ -16,25 +16,36 @@ namespace kiln
 {
 GapCsvWriter::GapCsvWriter(const MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                            const std::vector<int> &owned_nodes, const int first_step)
-    : comm_(comm), base_(base_path), gap_(std::make_unique<internal::GapSurface>(mesh)),
+    : comm_(comm), base_(base_path),
       gather_(std::make_unique<internal::RowGather>(comm, owned_nodes, mesh.n_nodes())),
       step_(first_step)
 {
+  for (int g = 0; g < static_cast<int>(mesh.gap_side_sets.size()); ++g)
+  {
+    names_.push_back(mesh.gap_name(g));
+    gaps_.push_back(std::make_unique<internal::GapSurface>(mesh, g));
+  }
 }
 
 GapCsvWriter::~GapCsvWriter() = default;
 
-std::string GapCsvWriter::path(const int step) const
+std::string GapCsvWriter::path(const int step, const int gap) const
 {
   char number[16];
   std::snprintf(number, sizeof number, "%06d", step);
-  return base_ + ".gap-" + number + ".csv";
+  return base_ + "." + (names_.empty() ? std::string("gap") : names_[gap]) + "-" + number + ".csv";
 }
 
 void GapCsvWriter::begin_step(const double time, int, double)
 {
   time_ = time;
   fields_.clear();
+  pair_fields_.clear();
+}
+
+void GapCsvWriter::write_gap_field(const std::string &name, const std::vector<double> &per_pair)
+{
+  pair_fields_[name] = per_pair;
 }
 
 void GapCsvWriter::write_node_field(const std::string &name, const int n_components,
@@ -49,14 +60,25 @@ void GapCsvWriter::write_node_field(const std::string &name, const int n_compone
 
 void GapCsvWriter::end_step()
 {
-  const std::string file = path(step_);
+  for (int g = 0; g < n_gaps(); ++g)
+    write_table(*gaps_[g], path(step_, g));
+  fields_.clear();
+  pair_fields_.clear();
+  ++step_;
+}
+
+void GapCsvWriter::write_table(const internal::GapSurface &gap, const std::string &file) const
+{
   internal::run_on_rank_zero(
       comm_,
       [&]
       {
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        const auto value = [&](const char *field, const std::int64_t node)
+        // The pair's value where write_gap_field() gave it, else its node's.
+        const auto value = [&](const char *field, const int point, const std::int64_t node)
         {
+          if (const auto it = pair_fields_.find(field); it != pair_fields_.end())
+            return it->second[static_cast<std::size_t>(gap.pair[point])];
           const auto it = fields_.find(field);
           return it == fields_.end() ? nan : it->second[static_cast<std::size_t>(node)];
         };
@@ -65,16 +87,17 @@ void GapCsvWriter::end_step()
         std::ofstream out(temporary, std::ios::trunc);
         out << "time [s],pair [-],x [m],y [m],z [m],s [m],t [m],gap_opening [m],"
                "contact_pressure [Pa],gap_heat_flux [W/m^2],contact_active [-],"
-               "temperature_a [K],temperature_b [K]\n";
+               "temperature_a [K],temperature_b [K],area [m^2]\n";
         const std::string time = history_number(time_);
-        for (int p = 0; p < gap_->n_points(); ++p)
+        for (int p = 0; p < gap.n_points(); ++p)
         {
-          const std::int64_t a = gap_->node_a[p], b = gap_->node_b[p];
+          const std::int64_t a = gap.node_a[p], b = gap.node_b[p];
           out << time << "," << p;
           for (const double v :
-               {gap_->points[p][0], gap_->points[p][1], gap_->points[p][2], gap_->s[p], gap_->t[p],
-                value("gap_opening", a), value("contact_pressure", a), value("gap_heat_flux", a),
-                value("contact_active", a), value("temperature", a), value("temperature", b)})
+               {gap.points[p][0], gap.points[p][1], gap.points[p][2], gap.s[p], gap.t[p],
+                value("gap_opening", p, a), value("contact_pressure", p, a),
+                value("gap_heat_flux", p, a), value("contact_active", p, a),
+                value("temperature", p, a), value("temperature", p, b), gap.area[p]})
             out << "," << history_number(v);
           out << "\n";
         }
@@ -88,7 +111,5 @@ void GapCsvWriter::end_step()
                          "cannot write the gap table; check that the folder is writable and the "
                          "disk is not full");
       });
-  fields_.clear();
-  ++step_;
 }
 } // namespace kiln

@@ -9,28 +9,34 @@ namespace kiln
 {
 namespace internal
 {
-GapSurface::GapSurface(const Mesh &mesh)
+GapSurface::GapSurface(const Mesh &mesh, const int gap)
 {
-  // A node may be in several pairs (where gaps cross): a point per pair.
+  // A node is in one pair of each gap it lies on: a point per pair of this gap.
   std::map<std::pair<int, int>, std::int64_t> point_of_pair;
   Point normal{0.0, 0.0, 0.0}, centroid{0.0, 0.0, 0.0};
   double total_area = 0.0;
-  for (const GapPair &pair : mesh.gap_pairs)
+  for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
   {
-    point_of_pair[{pair.node_a, pair.node_b}] = static_cast<std::int64_t>(points.size());
-    points.push_back(mesh.coordinates[pair.node_a]);
-    node_a.push_back(pair.node_a);
-    node_b.push_back(pair.node_b);
-    area.push_back(pair.area);
-    total_area += pair.area;
+    const GapPair &gap_pair = mesh.gap_pairs[k];
+    if (gap_pair.gap != gap)
+      continue;
+    point_of_pair[{gap_pair.node_a, gap_pair.node_b}] = static_cast<std::int64_t>(points.size());
+    pair.push_back(static_cast<int>(k));
+    points.push_back(mesh.coordinates[gap_pair.node_a]);
+    node_a.push_back(gap_pair.node_a);
+    node_b.push_back(gap_pair.node_b);
+    area.push_back(gap_pair.area);
+    total_area += gap_pair.area;
     for (int d = 0; d < 3; ++d)
     {
-      normal[d] += pair.area * pair.normal[d];
-      centroid[d] += pair.area * mesh.coordinates[pair.node_a][d];
+      normal[d] += gap_pair.area * gap_pair.normal[d];
+      centroid[d] += gap_pair.area * mesh.coordinates[gap_pair.node_a][d];
     }
   }
   for (const GapFace &face : mesh.gap_faces)
   {
+    if (face.gap != gap)
+      continue;
     std::array<std::int64_t, 4> quad{};
     for (int i = 0; i < 4; ++i)
       quad[i] = point_of_pair.at({mesh.face_node(face.cell_a, face.face_a, i), face.node_b[i]});

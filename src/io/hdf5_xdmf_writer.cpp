@@ -24,10 +24,23 @@ struct Hdf5XdmfWriter::Impl
        const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells);
   /// The unit, components and meaning of a field of the catalog on its dataset in `group`.
   void describe(hid_t group, const std::string &name) const;
-  /// /gap: the gap surface's points, quadrilaterals, nodes and areas (rank 0 writes).
-  void write_gap_surface() const;
-  /// The values of a node field at the gap points this rank owns.
-  std::vector<double> gap_values(const std::vector<double> &values, int n_components) const;
+  /// A gap's surface (an HDF5 group /NAME, NAME = Mesh::gap_name()), the points whose node
+  /// (side a) this rank owns and the group of the step in progress.
+  struct GapGrid
+  {
+    std::string name;
+    internal::GapSurface surface;
+    std::vector<int> owned_points;
+    std::vector<std::size_t> value_row; ///< for each owned point, its node's owned position
+    internal::OwnedRows rows;
+    internal::H5Handle step_group;
+  };
+  /// /NAME: the gap surface's points, quadrilaterals, nodes and areas (rank 0 writes).
+  void write_gap_surface(const GapGrid &grid) const;
+  /// The values of a node field at the points of `grid` this rank owns: the pairs' values of
+  /// write_gap_field() where given, else the values at their nodes a.
+  std::vector<double> gap_values(const GapGrid &grid, const std::string &name,
+                                 const std::vector<double> &values, int n_components) const;
   /// The history rows held back, into /history (collective).
   void write_pending_history();
 
@@ -50,13 +63,12 @@ struct Hdf5XdmfWriter::Impl
   internal::OwnedRows cell_rows;
   internal::ParallelHdf5File file;
   internal::XdmfIndex index;
-  internal::GapSurface gap;
-  internal::OwnedRows gap_rows;           ///< the gap points whose node (side a) this rank owns
-  std::vector<std::size_t> gap_value_row; ///< for each of them, its node's owned position
+  std::vector<HistoryColumn> columns;               ///< of the history
   std::vector<std::vector<double>> pending_history; ///< rows not yet in /history
   // After the file: closed before it.
+  std::vector<GapGrid> gaps; ///< those with pairs, Mesh::gap_side_sets order
+  std::map<std::string, std::vector<double>> gap_fields; ///< this step's, per mesh pair
   internal::H5Handle step_group;
-  internal::H5Handle gap_step_group;
   bool in_step = false;
   /// The file's size after the last step (or the mesh), and the largest growth of a step [bytes].
   std::uintmax_t size_before_step = 0;
@@ -70,21 +82,30 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
       cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".running.h5"),
       index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells(),
             internal::xdmf_topology(mesh, own_topology_dataset)),
-      gap(mesh), gap_rows({}, 0)
+      columns(history_columns(mesh.gap_side_sets))
 {
   std::map<int, std::size_t> owned_position;
   for (std::size_t i = 0; i < owned_nodes.size(); ++i)
     owned_position[owned_nodes[i]] = i;
-  std::vector<int> owned_points;
-  for (int p = 0; p < gap.n_points(); ++p)
-    if (const auto it = owned_position.find(static_cast<int>(gap.node_a[p]));
-        it != owned_position.end())
-    {
-      owned_points.push_back(p);
-      gap_value_row.push_back(it->second);
-    }
-  gap_rows = internal::OwnedRows(owned_points, gap.n_points());
-  index.set_gap(gap.n_points(), gap.n_quads());
+  for (int g = 0; g < static_cast<int>(mesh.gap_side_sets.size()); ++g)
+  {
+    internal::GapSurface surface(mesh, g);
+    if (surface.n_points() == 0)
+      continue;
+    std::vector<int> owned_points;
+    std::vector<std::size_t> value_row;
+    for (int p = 0; p < surface.n_points(); ++p)
+      if (const auto it = owned_position.find(static_cast<int>(surface.node_a[p]));
+          it != owned_position.end())
+      {
+        owned_points.push_back(p);
+        value_row.push_back(it->second);
+      }
+    const internal::OwnedRows rows(owned_points, surface.n_points());
+    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_quads());
+    gaps.push_back({mesh.gap_name(g), std::move(surface), std::move(owned_points),
+                    std::move(value_row), rows, internal::H5Handle()});
+  }
 }
 
 void Hdf5XdmfWriter::Impl::describe(const hid_t group, const std::string &name) const
@@ -189,29 +210,39 @@ void Hdf5XdmfWriter::Impl::write_field(const FieldSpec &field, const std::vector
   file.write_rows(step_group.get(), name, field.center == Center::node ? node_rows : cell_rows,
                   field.n_components, values);
   describe(step_group.get(), name);
-  if (gap_step_group.valid() && field.center == Center::node)
-  {
-    file.write_rows(gap_step_group.get(), name, gap_rows, field.n_components,
-                    gap_values(values, field.n_components));
-    describe(gap_step_group.get(), name);
-  }
+  if (field.center == Center::node)
+    for (const GapGrid &grid : gaps)
+    {
+      file.write_rows(grid.step_group.get(), name, grid.rows, field.n_components,
+                      gap_values(grid, name, values, field.n_components));
+      describe(grid.step_group.get(), name);
+    }
   index.add_field(field);
 }
 
-std::vector<double> Hdf5XdmfWriter::Impl::gap_values(const std::vector<double> &values,
+std::vector<double> Hdf5XdmfWriter::Impl::gap_values(const GapGrid &grid, const std::string &name,
+                                                     const std::vector<double> &values,
                                                      const int n_components) const
 {
   std::vector<double> at_gap;
-  at_gap.reserve(gap_value_row.size() * static_cast<std::size_t>(n_components));
-  for (const std::size_t row : gap_value_row)
+  at_gap.reserve(grid.value_row.size() * static_cast<std::size_t>(n_components));
+  const auto of_pairs = gap_fields.find(name);
+  if (of_pairs != gap_fields.end() && n_components == 1)
+  {
+    for (const int p : grid.owned_points)
+      at_gap.push_back(of_pairs->second[static_cast<std::size_t>(grid.surface.pair[p])]);
+    return at_gap;
+  }
+  for (const std::size_t row : grid.value_row)
     for (int c = 0; c < n_components; ++c)
       at_gap.push_back(values[row * static_cast<std::size_t>(n_components) + c]);
   return at_gap;
 }
 
-void Hdf5XdmfWriter::Impl::write_gap_surface() const
+void Hdf5XdmfWriter::Impl::write_gap_surface(const GapGrid &grid) const
 {
-  const internal::H5Handle group = file.create_group("gap");
+  const internal::GapSurface &gap = grid.surface;
+  const internal::H5Handle group = file.create_group(grid.name);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // Rank 0 writes every row (the gap is small and replicated).
@@ -245,14 +276,13 @@ void Hdf5XdmfWriter::Impl::write_gap_surface() const
   file.write_rows(group.get(), "area", points, 1, area);
   file.write_rows(group.get(), "s", points, 1, s);
   file.write_rows(group.get(), "t", points, 1, t);
-  file.create_group("gap/steps");
+  file.create_group(grid.name + "/steps");
 }
 
 void Hdf5XdmfWriter::Impl::write_pending_history()
 {
   if (pending_history.empty())
     return;
-  const auto &columns = history_columns();
   const internal::H5Handle group(H5Gopen2(file.root(), "history", H5P_DEFAULT), H5Gclose);
   file.check_io(group.valid(), "opening group /history");
   for (std::size_t c = 0; c < columns.size(); ++c)
@@ -281,12 +311,12 @@ Hdf5XdmfWriter::Hdf5XdmfWriter(const MPI_Comm comm, const std::string &base_path
                                 {"run_fingerprint", metadata.run_fingerprint}},
                                "writing the run's metadata");
   impl_->write_mesh(mesh, owned_nodes, owned_cells, cell_rank);
-  if (impl_->gap.n_points() > 0)
-    impl_->write_gap_surface();
+  for (const Impl::GapGrid &grid : impl_->gaps)
+    impl_->write_gap_surface(grid);
   {
     // The history's datasets, empty until the first rows, each with its unit and meaning.
     const internal::H5Handle group = impl_->file.create_group("history");
-    for (const HistoryColumn &c : history_columns())
+    for (const HistoryColumn &c : impl_->columns)
     {
       impl_->file.append_rows(group.get(), c.name, {});
       const internal::H5Handle dataset = impl_->file.open_dataset(group.get(), c.name);
@@ -310,9 +340,10 @@ void Hdf5XdmfWriter::begin_step(const double time, const int cycle, const double
   // Room for twice the largest step so far (the mesh before the first), and the metadata.
   m.file.reserve(2 * m.largest_step + (std::uintmax_t{64} << 10));
   m.step_group = m.file.create_group("steps/" + internal::step_group_name(m.index.n_steps()));
-  if (m.gap.n_points() > 0)
-    m.gap_step_group =
-        m.file.create_group("gap/steps/" + internal::step_group_name(m.index.n_steps()));
+  for (Impl::GapGrid &grid : m.gaps)
+    grid.step_group =
+        m.file.create_group(grid.name + "/steps/" + internal::step_group_name(m.index.n_steps()));
+  m.gap_fields.clear();
   m.index.add_step(time);
   m.in_step = true;
   m.file.write_attributes(m.step_group.get(),
@@ -326,6 +357,11 @@ void Hdf5XdmfWriter::write_node_field(const std::string &name, const int n_compo
   impl_->write_field({name, Center::node, n_components}, values);
 }
 
+void Hdf5XdmfWriter::write_gap_field(const std::string &name, const std::vector<double> &per_pair)
+{
+  impl_->gap_fields[name] = per_pair;
+}
+
 void Hdf5XdmfWriter::write_cell_field(const std::string &name, const int n_components,
                                       const std::vector<double> &values)
 {
@@ -334,9 +370,9 @@ void Hdf5XdmfWriter::write_cell_field(const std::string &name, const int n_compo
 
 void Hdf5XdmfWriter::write_history(const std::vector<double> &row)
 {
-  internal::check_usage(row.size() == history_columns().size(),
-                        "row.size() == history_columns().size()",
-                        "a history row needs one value per column of history_columns()");
+  internal::check_usage(row.size() == impl_->columns.size(), "row.size() == columns.size()",
+                        "a history row needs one value per column of "
+                        "history_columns(mesh.gap_side_sets)");
   impl_->pending_history.push_back(row);
 }
 
@@ -345,7 +381,9 @@ void Hdf5XdmfWriter::end_step()
   Impl &m = *impl_;
   internal::check_end_step(m.in_step);
   m.step_group.reset();
-  m.gap_step_group.reset();
+  for (Impl::GapGrid &grid : m.gaps)
+    grid.step_group.reset();
+  m.gap_fields.clear();
   m.in_step = false;
   m.write_pending_history();
   m.file.flush();

@@ -12,8 +12,10 @@
 ///                       (nodes x c), cell fields (cells) or (cells x c)
 ///   /gap/               the gap surface, if the mesh has a gap: coordinates (points x 3),
 ///                       connectivity (quads x 4), node_a, node_b, area, s, t (points)
-///   /gap/steps/NNNNNN/  every node field of step NNNNNN at the gap points
-///   /history/NAME       one dataset per history column (history_columns()), a row per
+///   /gap/steps/NNNNNN/  every node field of step NNNNNN at the gap points (the pairs'
+///                       values of write_gap_field() where given)
+///   /gap_ID/...         the same for each further gap, ID its side set (Mesh::gap_name())
+///   /history/NAME       one dataset per history column (history_columns(mesh's gaps)), a row per
 ///                       step; rows are held back and written at each end_step and finish
 /// Rows are in global-id order whatever the number of ranks: each rank writes
 /// the rows it owns. The root holds the run's metadata (kiln_version, created,
@@ -63,6 +65,8 @@ public:
   /// `values` holds n_components values per owned cell, cell after cell.
   void write_cell_field(const std::string &name, int n_components,
                         const std::vector<double> &values) override;
+  /// Kept for the gap surfaces' datasets of the node field `name` of this step.
+  void write_gap_field(const std::string &name, const std::vector<double> &per_pair) override;
   /// Closes the step group, writes the history rows held back, flushes the file and
   /// rewrites the XDMF file.
   void end_step() override;

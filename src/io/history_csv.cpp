@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace kiln
 {
@@ -20,10 +21,10 @@ namespace internal
 namespace
 {
 /// "step [-],time [s],...", or without the units as Kiln wrote it before changelog 0032.
-std::string header_line(const bool units = true)
+std::string header_line(const std::vector<HistoryColumn> &columns, const bool units = true)
 {
   std::string line;
-  for (const HistoryColumn &c : history_columns())
+  for (const HistoryColumn &c : columns)
     line += (line.empty() ? "" : ",") + c.name + (units ? " [" + c.unit + "]" : "");
   return line;
 }
@@ -37,7 +38,7 @@ std::string row_line(const std::vector<double> &row)
 }
 
 /// The values of a CSV line, or false if it has another number of values or a bad one.
-bool parse_row(const std::string &line, std::vector<double> &row)
+bool parse_row(const std::string &line, const std::size_t n_columns, std::vector<double> &row)
 {
   row.clear();
   std::istringstream in(line);
@@ -50,7 +51,7 @@ bool parse_row(const std::string &line, std::vector<double> &row)
       return false;
     row.push_back(value);
   }
-  return row.size() == history_columns().size();
+  return row.size() == n_columns;
 }
 } // namespace
 } // namespace internal
@@ -77,6 +78,32 @@ const std::vector<HistoryColumn> &history_columns()
   return columns;
 }
 
+std::vector<std::string> gap_history_columns(const int id)
+{
+  const std::string suffix = "_gap" + std::to_string(id);
+  return {"min_gap" + suffix,      "max_gap" + suffix,      "active_pairs" + suffix,
+          "contact_area" + suffix, "normal_force" + suffix, "gap_heat_flow" + suffix};
+}
+
+std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets)
+{
+  std::vector<HistoryColumn> columns = history_columns();
+  if (gap_side_sets.size() < 2)
+    return columns;
+  for (const int id : gap_side_sets)
+  {
+    const std::vector<std::string> names = gap_history_columns(id);
+    const std::string of = " of gap side set " + std::to_string(id);
+    columns.push_back({names[0], "m", "smallest gap opening over the pairs" + of});
+    columns.push_back({names[1], "m", "largest gap opening over the pairs" + of});
+    columns.push_back({names[2], "-", "pairs in contact" + of});
+    columns.push_back({names[3], "m^2", "area of the pairs in contact" + of});
+    columns.push_back({names[4], "N", "normal force across the gap" + of + ", compression > 0"});
+    columns.push_back({names[5], "W", "heat across the gap" + of + " from side a to side b"});
+  }
+  return columns;
+}
+
 std::string history_number(const double value)
 {
   if (std::isnan(value))
@@ -86,13 +113,16 @@ std::string history_number(const double value)
   return std::string(text, result.ptr);
 }
 
-HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path) : comm_(comm), path_(path)
+HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path,
+                       std::vector<HistoryColumn> columns)
+    : comm_(comm), path_(path), columns_(std::move(columns))
 {
   start({});
 }
 
-HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int step)
-    : comm_(comm), path_(path)
+HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int step,
+                       std::vector<HistoryColumn> columns)
+    : comm_(comm), path_(path), columns_(std::move(columns))
 {
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
@@ -106,8 +136,8 @@ HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int s
                  " (the earlier run's history) is missing; the history starts at the "
                  "restart, step " +
                  std::to_string(step);
-    else if (!std::getline(in, line) ||
-             (line != internal::header_line() && line != internal::header_line(false)))
+    else if (!std::getline(in, line) || (line != internal::header_line(columns_) &&
+                                         line != internal::header_line(columns_, false)))
     {
       in.close();
       std::error_code ignored;
@@ -121,7 +151,7 @@ HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int s
       int last = -1;
       while (std::getline(in, line))
       {
-        if (!internal::parse_row(line, row))
+        if (!internal::parse_row(line, columns_.size(), row))
         {
           warning_ = path_ + ": a line after step " + std::to_string(last) +
                      " cannot be read; the rows from there are dropped";
@@ -146,7 +176,7 @@ HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int s
   MPI_Bcast(&n_values, 1, MPI_LONG_LONG, 0, comm_);
   flat.resize(static_cast<std::size_t>(n_values));
   MPI_Bcast(flat.data(), static_cast<int>(n_values), MPI_DOUBLE, 0, comm_);
-  const std::size_t n_columns = history_columns().size();
+  const std::size_t n_columns = columns_.size();
   for (std::size_t i = 0; i < flat.size(); i += n_columns)
     kept_.emplace_back(flat.begin() + static_cast<std::ptrdiff_t>(i),
                        flat.begin() + static_cast<std::ptrdiff_t>(i + n_columns));
@@ -162,7 +192,7 @@ void HistoryCsv::start(const std::vector<std::vector<double>> &rows)
         const std::string temporary = path_ + ".tmp";
         errno = 0;
         std::ofstream out(temporary, std::ios::trunc);
-        out << internal::header_line() << "\n";
+        out << internal::header_line(columns_) << "\n";
         for (const auto &row : rows)
           out << internal::row_line(row) << "\n";
         out.close();

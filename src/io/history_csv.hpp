@@ -19,6 +19,13 @@ struct HistoryColumn
 /// The columns, in order; a row holds one value per column (NaN where the run has no such
 /// quantity, e.g. temperatures without a temperature).
 const std::vector<HistoryColumn> &history_columns();
+/// The columns of a run on a mesh split at `gap_side_sets` (Mesh::gap_side_sets): those of
+/// history_columns(), and with several gaps a block per gap after them, named after the
+/// gap's side set ID: min_gap_gapID, max_gap_gapID, active_pairs_gapID, contact_area_gapID,
+/// normal_force_gapID, gap_heat_flow_gapID (the columns without suffix are over every gap).
+std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets);
+/// The names of the columns of gap ID's block (history_columns(gap_side_sets) order).
+std::vector<std::string> gap_history_columns(int id);
 
 /// `value` as the CSV writes it: the shortest text that reads back as the same double
 /// ("0.04", "53", "1e-06"), "nan" for NaN.
@@ -32,20 +39,23 @@ std::string history_number(double value);
 class HistoryCsv
 {
 public:
-  /// A new file (an earlier one is replaced) at `path`.
-  HistoryCsv(MPI_Comm comm, const std::string &path);
+  /// A new file (an earlier one is replaced) at `path`, with `columns`.
+  HistoryCsv(MPI_Comm comm, const std::string &path,
+             std::vector<HistoryColumn> columns = history_columns());
   /// Continues the file of an earlier run at `path` after its step `step` (a restart): its
   /// rows of steps up to `step` are kept (the rest, written after the checkpoint, are
   /// dropped) and returned on every rank by kept_rows(). A missing file, or one with other
   /// columns (moved aside to PATH.old), starts anew, and warning() says so.
-  HistoryCsv(MPI_Comm comm, const std::string &path, int step);
+  HistoryCsv(MPI_Comm comm, const std::string &path, int step,
+             std::vector<HistoryColumn> columns = history_columns());
 
   const std::string &path() const { return path_; }
   /// The rows kept from the earlier run (every rank).
   const std::vector<std::vector<double>> &kept_rows() const { return kept_; }
   /// Why the earlier rows could not be kept (all or some), or "" (every rank).
   const std::string &warning() const { return warning_; }
-  /// Appends a row (history_columns() order; rank 0's values are written).
+  const std::vector<HistoryColumn> &columns() const { return columns_; }
+  /// Appends a row (columns() order; rank 0's values are written).
   void append(const std::vector<double> &row);
 
 private:
@@ -54,6 +64,7 @@ private:
 
   MPI_Comm comm_;
   std::string path_;
+  std::vector<HistoryColumn> columns_;
   std::vector<std::vector<double>> kept_;
   std::string warning_;
 };

@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace kiln
@@ -31,6 +33,63 @@ std::vector<std::string> links_of(const hid_t group)
       },
       &names);
   return names;
+}
+
+/// The values of the dataset `name` in `group` as `T` (double or int64), all its rows.
+template <typename T> std::vector<T> read_all(const hid_t group, const std::string &name)
+{
+  const H5Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  const H5Handle space(set.valid() ? H5Dget_space(set.get()) : H5I_INVALID_HID, H5Sclose);
+  if (!space.valid())
+    throw std::runtime_error("cannot open " + name);
+  std::vector<T> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
+  if (H5Dread(set.get(), std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64, H5S_ALL,
+              H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    throw std::runtime_error("cannot read " + name);
+  return values;
+}
+
+/// The gap fields of step `step` in the file's gap surfaces (/gap, /gap_ID), per pair of
+/// `gap_pairs` ((node_a, node_b) of Mesh::gap_pairs; NaN where no surface has the pair).
+std::vector<std::pair<std::string, std::vector<double>>>
+read_gap_fields(const hid_t file, const std::string &step,
+                const std::vector<std::pair<int, int>> &gap_pairs)
+{
+  std::vector<std::pair<std::string, std::vector<double>>> fields;
+  if (gap_pairs.empty())
+    return fields;
+  std::map<std::pair<int, int>, std::size_t> pair_of;
+  for (std::size_t p = 0; p < gap_pairs.size(); ++p)
+    pair_of[gap_pairs[p]] = p;
+  for (const std::string &surface : links_of(file))
+  {
+    if (surface != "gap" && surface.rfind("gap_", 0) != 0)
+      continue;
+    const H5Handle group(H5Gopen2(file, (surface + "/steps/" + step).c_str(), H5P_DEFAULT),
+                         H5Gclose);
+    if (!group.valid())
+      continue;
+    const H5Handle points(H5Gopen2(file, surface.c_str(), H5P_DEFAULT), H5Gclose);
+    const std::vector<std::int64_t> a = read_all<std::int64_t>(points.get(), "node_a");
+    const std::vector<std::int64_t> b = read_all<std::int64_t>(points.get(), "node_b");
+    for (const char *name : {"gap_opening", "contact_pressure", "contact_active", "gap_heat_flux"})
+    {
+      if (H5Lexists(group.get(), name, H5P_DEFAULT) <= 0)
+        continue;
+      const std::vector<double> values = read_all<double>(group.get(), name);
+      auto at = std::find_if(fields.begin(), fields.end(),
+                             [&](const auto &f) { return f.first == name; });
+      if (at == fields.end())
+        at = fields.insert(fields.end(),
+                           {name, std::vector<double>(gap_pairs.size(),
+                                                      std::numeric_limits<double>::quiet_NaN())});
+      for (std::size_t p = 0; p < values.size() && p < a.size() && p < b.size(); ++p)
+        if (const auto it = pair_of.find({static_cast<int>(a[p]), static_cast<int>(b[p])});
+            it != pair_of.end())
+          at->second[it->second] = values[p];
+    }
+  }
+  return fields;
 }
 
 template <typename T> T read_attribute(const hid_t object, const char *name)
@@ -56,6 +115,8 @@ int internal::write_replayed(const std::string &path, const std::string &error,
     for (ResultsWriter *writer : writers)
     {
       writer->begin_step(step.time, step.cycle, step.dt);
+      for (const auto &[name, per_pair] : step.gap_fields)
+        writer->write_gap_field(name, per_pair);
       for (const ReplayField &f : step.fields)
         if (f.on_nodes)
           writer->write_node_field(f.name, f.n_components, f.values);
@@ -134,6 +195,7 @@ int replay_results(const std::string &path, const double until, const ReplayRows
       Step step{internal::read_attribute<double>(group.get(), "time"),
                 internal::read_attribute<double>(group.get(), "dt"),
                 internal::read_attribute<int>(group.get(), "cycle"),
+                {},
                 {}};
       if (step.time > until + 1e-12 * std::max(1.0, std::abs(until)))
         break;
@@ -169,6 +231,7 @@ int replay_results(const std::string &path, const double until, const ReplayRows
             v = -v + 0.0;
         step.fields.push_back(std::move(f));
       }
+      step.gap_fields = internal::read_gap_fields(file.get(), name, rows.gap_pairs);
       steps.push_back(std::move(step));
     }
   }

@@ -5,6 +5,7 @@
 #include <Teuchos_Comm.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -16,6 +17,9 @@ struct ReplayRows
   int n_cells = 0;
   std::vector<int> owned_nodes; ///< increasing
   std::vector<int> owned_cells; ///< increasing
+  /// (node_a, node_b) of each pair of Mesh::gap_pairs: the gap surfaces' fields of the HDF5
+  /// file are replayed per pair (ResultsWriter::write_gap_field).
+  std::vector<std::pair<int, int>> gap_pairs;
 };
 
 namespace internal
@@ -34,6 +38,8 @@ struct ReplayStep
   double time, dt;
   int cycle;
   std::vector<ReplayField> fields;
+  /// The gap fields per pair of Mesh::gap_pairs (NaN where the file has none), by name.
+  std::vector<std::pair<std::string, std::vector<double>>> gap_fields;
 };
 /// Checks (collectively) that the steps were read without `error` (else InputError naming
 /// `path`), then writes them into each of `writers`; returns their number. Collective.

@@ -32,6 +32,14 @@ public:
                                 const std::vector<double> &values) = 0;
   virtual void write_cell_field(const std::string &name, int n_components,
                                 const std::vector<double> &values) = 0;
+  /// A field of the gap pairs: one value per pair of Mesh::gap_pairs, the same on every rank.
+  /// Given before the node field of the same name, it is what the gap surfaces and tables
+  /// show at each pair (a node where gaps cross is in a pair of each, and a node field holds
+  /// one of them); a writer without gap surfaces ignores it.
+  virtual void write_gap_field(const std::string & /*name*/,
+                               const std::vector<double> & /*per_pair*/)
+  {
+  }
   /// Completes the step on disk (a run that stops later leaves it readable).
   virtual void end_step() = 0;
   /// One row of the run's time history (history_columns() order, io/history_csv.hpp), between

@@ -136,10 +136,10 @@ void XdmfIndex::rename(const std::string &xmf_path, const std::string &h5_path)
   h5_name_ = file_name_of(h5_path);
 }
 
-void XdmfIndex::set_gap(const int n_points, const int n_quads)
+void XdmfIndex::add_gap(const std::string &name, const int n_points, const int n_quads)
 {
-  n_gap_points_ = n_points;
-  n_gap_quads_ = n_quads;
+  if (n_points > 0)
+    gaps_.push_back({name, n_points, n_quads});
 }
 
 void XdmfIndex::add_step(const double time)
@@ -223,25 +223,28 @@ void XdmfIndex::write_attribute(std::ostream &out, const std::string &indent, co
 }
 
 /// The gap surface at one step: its quadrilaterals and the step's node fields at its points.
-void XdmfIndex::write_gap_grid(std::ostream &out, const std::string &indent, const Step &step,
-                               const int index) const
+void XdmfIndex::write_gap_grid(std::ostream &out, const std::string &indent, const Gap &gap,
+                               const Step &step, const int index) const
 {
   const std::string in1 = indent + "  ";
   const std::string in2 = in1 + "  ";
-  const std::string points = std::to_string(n_gap_points_);
-  const std::string quads = std::to_string(n_gap_quads_);
-  out << indent << "<Grid Name=\"gap_" << step_group_name(index) << "\" GridType=\"Uniform\">\n";
+  const std::string points = std::to_string(gap.n_points);
+  const std::string quads = std::to_string(gap.n_quads);
+  const std::string group = "/" + gap.name;
+  out << indent << "<Grid Name=\"" << gap.name << "_" << step_group_name(index)
+      << "\" GridType=\"Uniform\">\n";
   out << in1 << "<Time Value=\"" << std::setprecision(17) << step.time << "\"/>\n";
   out << in1 << "<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << quads
       << "\" NodesPerElement=\"4\">\n";
-  write_data_item(out, in2, "/gap/connectivity", quads + " 4", "Int", 8);
+  write_data_item(out, in2, group + "/connectivity", quads + " 4", "Int", 8);
   out << in1 << "</Topology>\n";
   out << in1 << "<Geometry GeometryType=\"XYZ\">\n";
-  write_data_item(out, in2, "/gap/coordinates", points + " 3", "Float", 8);
+  write_data_item(out, in2, group + "/coordinates", points + " 3", "Float", 8);
   out << in1 << "</Geometry>\n";
   for (const auto &f : step.fields)
     if (f.center == Center::node)
-      write_attribute(out, in1, f, points, "/gap/steps/" + step_group_name(index) + "/" + f.name);
+      write_attribute(out, in1, f, points,
+                      group + "/steps/" + step_group_name(index) + "/" + f.name);
   out << indent << "</Grid>\n";
 }
 
@@ -255,12 +258,13 @@ std::string XdmfIndex::text() const
     write_grid(out, "    ", nullptr, 0);
   else
   {
-    // The gap first: meshio's TimeSeriesReader reads the last Temporal collection.
-    if (n_gap_points_ > 0)
+    // The gaps first: meshio's TimeSeriesReader reads the last Temporal collection.
+    for (const Gap &gap : gaps_)
     {
-      out << "    <Grid Name=\"gap\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      out << "    <Grid Name=\"" << gap.name
+          << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
       for (std::size_t s = 0; s < steps_.size(); ++s)
-        write_gap_grid(out, "      ", steps_[s], static_cast<int>(s));
+        write_gap_grid(out, "      ", gap, steps_[s], static_cast<int>(s));
       out << "    </Grid>\n";
     }
     out << "    <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";

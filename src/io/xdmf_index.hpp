@@ -2,9 +2,10 @@
 /// Private to src/io: the XDMF file beside a results HDF5 file, which tells ParaView what the
 /// HDF5 file holds (doc/output-format.md). Before the first step it shows the mesh alone
 /// (one Uniform grid, no time); after, a Temporal collection with one Uniform grid per step:
-/// the mesh, the mesh attributes block_id and cell_rank, and the step's fields. With a gap,
-/// a Temporal collection "gap" comes first: per step the gap surface (quadrilaterals) with
-/// the step's node fields at its points.
+/// the mesh, the mesh attributes block_id and cell_rank, and the step's fields. With gaps,
+/// a Temporal collection per gap comes first, named as the gap's HDF5 group ("gap", "gap_ID":
+/// Mesh::gap_name()): per step the gap surface (quadrilaterals) with the step's node fields
+/// at its points.
 #include "io/field_spec.hpp"
 #include "mesh/mesh.hpp"
 
@@ -47,8 +48,9 @@ public:
   /// From now on the index is `xmf_path` and points at `h5_path` (the final names).
   void rename(const std::string &xmf_path, const std::string &h5_path);
 
-  /// The gap surface (/gap) has `n_points` points and `n_quads` quadrilaterals (0: no gap).
-  void set_gap(int n_points, int n_quads);
+  /// A gap surface, the HDF5 group /NAME, of `n_points` points and `n_quads` quadrilaterals
+  /// (none: not shown).
+  void add_gap(const std::string &name, int n_points, int n_quads);
   /// Adds an output step at `time` [s]; add_field() adds its fields.
   void add_step(double time);
   /// Adds a field to the last step.
@@ -70,8 +72,14 @@ private:
     std::vector<FieldSpec> fields;
   };
   void write_grid(std::ostream &out, const std::string &indent, const Step *step, int index) const;
-  void write_gap_grid(std::ostream &out, const std::string &indent, const Step &step,
-                      int index) const;
+  struct Gap
+  {
+    std::string name;
+    int n_points = 0;
+    int n_quads = 0;
+  };
+  void write_gap_grid(std::ostream &out, const std::string &indent, const Gap &gap,
+                      const Step &step, int index) const;
   void write_attribute(std::ostream &out, const std::string &indent, const FieldSpec &f,
                        const std::string &rows, const std::string &path) const;
   void write_data_item(std::ostream &out, const std::string &indent, const std::string &path,
@@ -83,8 +91,7 @@ private:
   int n_nodes_;
   int n_cells_;
   XdmfTopology topology_;
-  int n_gap_points_ = 0;
-  int n_gap_quads_ = 0;
+  std::vector<Gap> gaps_;
   std::vector<Step> steps_;
 };
 } // namespace internal

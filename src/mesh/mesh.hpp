@@ -90,6 +90,12 @@ struct Mesh
   {
     return std::find(gap_side_sets.begin(), gap_side_sets.end(), id) != gap_side_sets.end();
   }
+  /// The name of gap `gap` (an index into gap_side_sets) in the results: "gap" for the first,
+  /// "gap_ID" for the others (ID: the side set's id), as the Exodus side sets are named.
+  std::string gap_name(const int gap) const
+  {
+    return gap == 0 ? std::string("gap") : "gap_" + std::to_string(gap_side_sets[gap]);
+  }
   int n_cells() const { return static_cast<int>(cell_types.size()); }
   /// The nodes of cell c (0-based ids, in its type's Exodus order).
   Span<const int> cell_nodes(const int c) const

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace kiln
@@ -384,26 +385,30 @@ int CoupledProblem::resume(const double time, const Vector &x)
   return active;
 }
 
-std::vector<double> CoupledProblem::gap_heat_flux(const Vector &x)
+std::vector<double> CoupledProblem::gap_heat_flow(const Vector &x)
 {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> flux(mesh_.n_nodes(), nan);
+  std::vector<double> flow(mesh_.gap_pairs.size(), std::numeric_limits<double>::quiet_NaN());
   if (!thermal_ || mesh_.gap_pairs.empty())
-    return flux;
+    return flow;
   prepare(x);
-  // The gap terms' heat rows at the side-a nodes [W], summed over the ranks.
-  std::vector<double> local(mesh_.n_nodes(), 0.0), flow(local.size(), 0.0);
+  // The gap terms' heat rows at the side-a nodes of each face [W], into the face's pairs (a
+  // node where gaps cross is in a pair of each), summed over the ranks.
+  std::map<std::pair<int, int>, int> pair_of; // (gap, node a) -> pair
+  for (std::size_t p = 0; p < mesh_.gap_pairs.size(); ++p)
+    pair_of[{mesh_.gap_pairs[p].gap, mesh_.gap_pairs[p].node_a}] = static_cast<int>(p);
+  std::vector<double> local(flow.size(), 0.0);
+  const std::vector<int> &faces = terms_->evaluated_gap_faces();
+  std::size_t call = 0;
   terms_->evaluate_gap_faces(*fields_, false,
                              [&](const std::vector<int> &nodes, LocalSystem &system)
                              {
+                               const int gap = mesh_.gap_faces[faces[call++]].gap;
                                for (int i = 0; i < 4; ++i)
-                                 local[nodes[i]] += system.residual(slots_.T, i);
+                                 local[pair_of.at({gap, nodes[i]})] += system.residual(slots_.T, i);
                              });
   Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
                      static_cast<int>(local.size()), local.data(), flow.data());
-  for (const GapPair &pair : mesh_.gap_pairs)
-    flux[pair.node_a] = flux[pair.node_b] = flow[pair.node_a] / pair.area;
-  return flux;
+  return flow;
 }
 
 StateSummary CoupledProblem::summary(const Vector &x)
@@ -422,6 +427,16 @@ StateSummary CoupledProblem::summary(const Vector &x)
   if (thermal_)
     summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction().heat_capacity(), s);
   summarize_displacement(dofs_, *fields_, s);
+  // The heat across each gap, for the history's columns per gap (several gaps only).
+  s.gaps.resize(mesh_.gap_side_sets.size());
+  if (thermal_ && mesh_.gap_side_sets.size() > 1)
+  {
+    for (GapFigures &gap : s.gaps)
+      gap.heat_flow = 0.0;
+    const std::vector<double> flow = gap_heat_flow(x);
+    for (std::size_t p = 0; p < flow.size(); ++p)
+      s.gaps[mesh_.gap_pairs[p].gap].heat_flow += flow[p];
+  }
   return s;
 }
 
@@ -446,23 +461,34 @@ int CoupledProblem::n_active_pairs(const Vector &x)
 
 CoupledProblem::ContactOutput CoupledProblem::contact_output(const Vector &x)
 {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t n_pairs = mesh_.gap_pairs.size();
+  ContactOutput out{std::vector<double>(mesh_.n_nodes(), nan),
+                    std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(n_pairs, nan),
+                    std::vector<double>(n_pairs, nan)};
   if (interfaces_.empty())
-  {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    return {std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(mesh_.n_nodes(), nan)};
-  }
+    return out;
   decide(x);
+  // The k-th pair of gap g's interface is the k-th pair of gap g in Mesh::gap_pairs.
+  std::vector<std::vector<int>> mesh_pairs(mesh_.gap_side_sets.size());
+  for (std::size_t p = 0; p < n_pairs; ++p)
+    mesh_pairs[mesh_.gap_pairs[p].gap].push_back(static_cast<int>(p));
   // A node on several gaps shows its pair of the first (the gaps in the input's order).
-  ContactOutput out = interfaces_.front()->node_values();
-  for (std::size_t i = 1; i < interfaces_.size(); ++i)
+  for (const auto &strategy : interfaces_)
   {
-    const ContactOutput more = interfaces_[i]->node_values();
+    const ContactOutput more = strategy->node_values();
     for (std::size_t n = 0; n < out.traction.size(); ++n)
       if (std::isnan(out.traction[n]))
       {
         out.traction[n] = more.traction[n];
         out.active[n] = more.active[n];
       }
+    const std::vector<int> &of_gap = mesh_pairs[strategy->interface().gap()];
+    for (std::size_t k = 0; k < of_gap.size(); ++k)
+    {
+      out.pair_traction[of_gap[k]] = more.pair_traction[k];
+      out.pair_active[of_gap[k]] = more.pair_active[k];
+    }
   }
   return out;
 }

@@ -98,13 +98,15 @@ public:
   /// Volume averages over each owned cell (owned_cells() order).
   std::vector<ElasticityKernel::CellAverages> cell_averages(const Vector &x);
   /// Contact per mesh node, on every rank: the normal traction across the gap (-p, negative
-  /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap.
+  /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap. A node where gaps
+  /// cross shows its pair of the first gap (Mesh::gap_side_sets order). pair_traction and
+  /// pair_active: the same per pair of Mesh::gap_pairs (NaN for a gap without interface).
   using ContactOutput = InterfaceStrategy::NodeValues;
   ContactOutput contact_output(const Vector &x);
-  /// The heat flux across the gap at x per mesh node, on every rank: at the nodes of side a,
-  /// the heat their gap-face terms carry to side b divided by the pair's area, the same at
-  /// the twin (negative: heat flows from b to a) [W/m^2]; NaN off the gap.
-  std::vector<double> gap_heat_flux(const Vector &x);
+  /// The heat across the gap at x per pair of Mesh::gap_pairs, on every rank: what the gap
+  /// faces of the pair's gap carry from its node a to side b (negative: heat flows from b to
+  /// a) [W]; divided by the pair's area, the gap_heat_flux [W/m^2]. NaN without temperature.
+  std::vector<double> gap_heat_flow(const Vector &x);
   /// The figures of the state x for a time history.
   StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.

@@ -37,6 +37,8 @@ public:
   bool constant_jacobian() const;
   /// The gap-face terms alone (the heat across the gap, for output).
   void evaluate_gap_faces(const NodalFields &fields, bool jacobian, const Sink &sink) const;
+  /// The Mesh::gap_faces that evaluate_gap_faces() gives the sink, in the order of its calls.
+  const std::vector<int> &evaluated_gap_faces() const { return gap_faces_; }
 
 private:
   void evaluate_cells(const NodalFields &fields, bool jacobian, const Sink &sink) const;

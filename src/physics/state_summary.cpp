@@ -63,38 +63,60 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
                        const NodalFields &fields, const Teuchos::Comm<int> &comm,
                        StateSummary &summary)
 {
-  double sums[3] = {0.0, 0.0, 0.0}; // in contact, area, force
-  double extremes[2] = {-std::numeric_limits<double>::infinity(),
-                        -std::numeric_limits<double>::infinity()}; // g, -g
-  int n_pairs = 0;
+  if (interfaces.empty())
+    return;
+  const std::size_t n_gaps = interfaces.front()->interface().mesh().gap_side_sets.size();
+  // Per gap: in contact, area, force (sums); g, -g (maxima).
+  std::vector<double> sums(3 * n_gaps, 0.0),
+      extremes(2 * n_gaps, -std::numeric_limits<double>::infinity());
+  std::vector<int> n_pairs(n_gaps, 0);
   for (const InterfaceStrategy *contact : interfaces)
   {
     const ContactInterface &interface = contact->interface();
-    n_pairs += interface.n_pairs();
+    const std::size_t g = static_cast<std::size_t>(interface.gap());
+    n_pairs[g] += interface.n_pairs();
     const auto &owned = interface.owned_pairs();
     for (std::size_t i = 0; i < owned.size(); ++i)
     {
       const ContactInterface::Pair &pair = interface.pairs()[owned[i]];
-      const double g = gap_opening(pair.normal, fields.u(pair.a), fields.u(pair.b));
-      extremes[0] = std::max(extremes[0], g);
-      extremes[1] = std::max(extremes[1], -g);
+      const double opening = gap_opening(pair.normal, fields.u(pair.a), fields.u(pair.b));
+      extremes[2 * g] = std::max(extremes[2 * g], opening);
+      extremes[2 * g + 1] = std::max(extremes[2 * g + 1], -opening);
       if (contact->active()[i])
       {
-        sums[0] += 1.0;
-        sums[1] += pair.area;
-        sums[2] += pair.area * contact->pressure()[i];
+        sums[3 * g] += 1.0;
+        sums[3 * g + 1] += pair.area;
+        sums[3 * g + 2] += pair.area * contact->pressure()[i];
       }
     }
   }
-  double totals[3] = {0.0, 0.0, 0.0}, maxima[2] = {0.0, 0.0};
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, sums, totals);
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, extremes, maxima);
-  summary.n_pairs = n_pairs;
-  summary.n_active = static_cast<int>(totals[0]);
-  summary.contact_area = totals[1];
-  summary.normal_force = totals[2];
-  summary.max_opening = n_pairs > 0 ? maxima[0] : 0.0;
-  summary.max_penetration = n_pairs > 0 ? std::max(maxima[1], 0.0) : 0.0;
-  summary.min_opening = n_pairs > 0 ? -maxima[1] : 0.0;
+  std::vector<double> totals(sums.size(), 0.0), maxima(extremes.size(), 0.0);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(),
+                     totals.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, static_cast<int>(extremes.size()), extremes.data(),
+                     maxima.data());
+  summary.gaps.assign(n_gaps, GapFigures{});
+  double all_max[2] = {-std::numeric_limits<double>::infinity(),
+                       -std::numeric_limits<double>::infinity()};
+  for (std::size_t g = 0; g < n_gaps; ++g)
+  {
+    GapFigures &gap = summary.gaps[g];
+    gap.n_pairs = n_pairs[g];
+    gap.n_active = static_cast<int>(totals[3 * g]);
+    gap.contact_area = totals[3 * g + 1];
+    gap.normal_force = totals[3 * g + 2];
+    gap.max_opening = gap.n_pairs > 0 ? maxima[2 * g] : 0.0;
+    gap.min_opening = gap.n_pairs > 0 ? -maxima[2 * g + 1] : 0.0;
+    summary.n_pairs += gap.n_pairs;
+    summary.n_active += gap.n_active;
+    summary.contact_area += gap.contact_area;
+    summary.normal_force += gap.normal_force;
+    all_max[0] = std::max(all_max[0], maxima[2 * g]);
+    all_max[1] = std::max(all_max[1], maxima[2 * g + 1]);
+  }
+  const bool any = summary.n_pairs > 0;
+  summary.max_opening = any ? all_max[0] : 0.0;
+  summary.max_penetration = any ? std::max(all_max[1], 0.0) : 0.0;
+  summary.min_opening = any ? -all_max[1] : 0.0;
 }
 } // namespace kiln

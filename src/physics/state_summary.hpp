@@ -5,8 +5,22 @@
 #include "discretization/dof_manager.hpp"
 #include "physics/nodal_fields.hpp"
 
+#include <limits>
+#include <vector>
+
 namespace kiln
 {
+/// The contact figures of one gap (every rank alike): as StateSummary's, over its pairs.
+struct GapFigures
+{
+  int n_pairs = 0;                                             ///< pairs with an interface
+  int n_active = 0;                                            ///< pairs in contact
+  double contact_area = 0.0;                                   ///< [m^2]
+  double normal_force = 0.0;                                   ///< compression > 0 [N]
+  double max_opening = 0.0, min_opening = 0.0;                 ///< [m] (0 without pairs)
+  double heat_flow = std::numeric_limits<double>::quiet_NaN(); ///< from side a to b [W]
+};
+
 /// Over the whole mesh (every rank alike).
 struct StateSummary
 {
@@ -21,6 +35,8 @@ struct StateSummary
   double max_opening = 0.0;        ///< max over the pairs of g [m] (0 without pairs)
   double min_opening = 0.0;        ///< min over the pairs of g, negative if penetrated [m]
   double max_penetration = 0.0;    ///< max over the pairs of -g, at least 0 [m]
+  /// Per gap (Mesh::gap_side_sets order); the totals above are over all of them.
+  std::vector<GapFigures> gaps;
 };
 
 /// The temperature figures at `fields` (rho_c: the heat capacity [J/(m^3 K)]; 0 without a
@@ -30,7 +46,8 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
 /// The largest displacement at `fields` (0 without a displacement). Collective.
 void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                             StateSummary &summary);
-/// The contact figures of the decision at `fields`' state. Collective.
+/// The contact figures of the decision at `fields`' state, in all and per gap (`summary.gaps`
+/// sized to the mesh's gaps). Collective.
 void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
                        const NodalFields &fields, const Teuchos::Comm<int> &comm,
                        StateSummary &summary);

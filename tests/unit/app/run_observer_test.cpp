@@ -203,9 +203,9 @@ TEST(RunObserver, OutputsHistoryAndGapTables)
   EXPECT_EQ(last.names,
             (std::vector<std::string>{"time", "pair", "x", "y", "z", "s", "t", "gap_opening",
                                       "contact_pressure", "gap_heat_flux", "contact_active",
-                                      "temperature_a", "temperature_b"}));
+                                      "temperature_a", "temperature_b", "area"}));
   EXPECT_EQ(last.units, (std::vector<std::string>{"s", "-", "m", "m", "m", "m", "m", "m", "Pa",
-                                                  "W/m^2", "-", "K", "K"}));
+                                                  "W/m^2", "-", "K", "K", "m^2"}));
   // The closed gap in compression: a positive pressure in the volume's field (NaN off the
   // gap), the gap surface's and the table's, and a positive normal force in the history.
   {

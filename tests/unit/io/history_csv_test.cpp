@@ -12,6 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -160,4 +161,43 @@ TEST(HistoryCsv, RowsAppendedAndContinuedAfterARestart)
     std::filesystem::remove(path);
     std::filesystem::remove(path + ".old");
   }
+}
+
+// A mesh with one gap (or none) keeps the columns of history_columns() (gold files and tools
+// read them by name); with several, a block of six columns per gap follows them, named after
+// the gap's side set.
+TEST(HistoryCsv, ColumnsPerGapOnlyWithSeveralGaps)
+{
+  const auto names = [](const std::vector<kiln::HistoryColumn> &columns)
+  {
+    std::vector<std::string> out;
+    for (const auto &c : columns)
+      out.push_back(c.name);
+    return out;
+  };
+  const std::vector<std::string> base = names(kiln::history_columns());
+  EXPECT_EQ(names(kiln::history_columns(std::vector<int>{})), base);
+  EXPECT_EQ(names(kiln::history_columns(std::vector<int>{10})), base);
+  const std::vector<std::string> two = names(kiln::history_columns(std::vector<int>{10, 12}));
+  ASSERT_EQ(two.size(), base.size() + 12);
+  EXPECT_TRUE(std::equal(base.begin(), base.end(), two.begin()));
+  const std::vector<std::string> block = {"min_gap_gap12",      "max_gap_gap12",
+                                          "active_pairs_gap12", "contact_area_gap12",
+                                          "normal_force_gap12", "gap_heat_flow_gap12"};
+  EXPECT_EQ(kiln::gap_history_columns(12), block);
+  EXPECT_TRUE(std::equal(block.begin(), block.end(), two.end() - 6));
+  EXPECT_EQ(two[base.size()], "min_gap_gap10");
+  // A CSV with these columns: the header names them, a restart reads its rows back.
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string path = kiln_test::temporary_base("history_csv_gaps", *comm) + ".history.csv";
+  std::vector<double> row(two.size(), 1.5);
+  row[0] = 0.0;
+  {
+    kiln::HistoryCsv history(raw(*comm), path, kiln::history_columns(std::vector<int>{10, 12}));
+    history.append(row);
+  }
+  kiln::HistoryCsv again(raw(*comm), path, 0, kiln::history_columns(std::vector<int>{10, 12}));
+  EXPECT_EQ(again.warning(), "");
+  ASSERT_EQ(again.kept_rows().size(), 1u);
+  EXPECT_EQ(again.kept_rows()[0], row);
 }
