@@ -5,6 +5,16 @@
 
 namespace kiln_test
 {
+kiln::PointInput point(const kiln::Voigt &strain, const double T, const double dt)
+{
+  kiln::PointInput in;
+  in.strain = strain;
+  in.temperature = T;
+  in.temperature_old = T;
+  in.time_step = dt;
+  return in;
+}
+
 Evaluation evaluate(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
                     const std::vector<double> &old_state)
 {

@@ -22,6 +22,9 @@ DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const k
                                    const std::vector<double> &old_state, double strain_step,
                                    double temperature_step);
 
+/// A point at strain, temperature T (now and at the last step) and time step dt.
+kiln::PointInput point(const kiln::Voigt &strain, double T, double dt);
+
 /// The response and new state of one evaluation.
 struct Evaluation
 {

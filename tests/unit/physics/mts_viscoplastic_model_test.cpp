@@ -21,6 +21,8 @@ using testing::HasSubstr;
 
 namespace
 {
+using kiln_test::point;
+
 // The aluminium of Truchas' viscoplastic-ring (the defaults).
 Teuchos::ParameterList mts()
 {
@@ -38,16 +40,6 @@ std::unique_ptr<kiln::MtsViscoplasticModel> make(const Teuchos::ParameterList &u
   auto model = kiln::create_constitutive_model(user, "test.xml", "Kiln/Model");
   return std::unique_ptr<kiln::MtsViscoplasticModel>(
       dynamic_cast<kiln::MtsViscoplasticModel *>(model.release()));
-}
-
-kiln::PointInput point(const kiln::Voigt &strain, const double T, const double dt)
-{
-  kiln::PointInput in;
-  in.strain = strain;
-  in.temperature = T;
-  in.temperature_old = T;
-  in.time_step = dt;
-  return in;
 }
 
 // Truchas' strain_rate_mts_st, written out.

@@ -21,6 +21,8 @@ using testing::HasSubstr;
 
 namespace
 {
+using kiln_test::point;
+
 Teuchos::ParameterList power_law(const double A, const double n, const double Q = 0.0,
                                  const double R = 8.314462618, const double Tref = 0.0)
 {
@@ -46,16 +48,6 @@ std::unique_ptr<kiln::ConstitutiveModel> make(const Teuchos::ParameterList &p)
 std::string error_of(const Teuchos::ParameterList &p)
 {
   return kiln_test::input_error_message([&] { make(p); });
-}
-
-kiln::PointInput point(const kiln::Voigt &strain, const double T, const double dt)
-{
-  kiln::PointInput in;
-  in.strain = strain;
-  in.temperature = T;
-  in.temperature_old = T;
-  in.time_step = dt;
-  return in;
 }
 
 const kiln::Voigt uniaxial{2e-3, 0, 0, 0, 0, 0};
