@@ -126,38 +126,44 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const do
 {
   const double G = elasticity_.shear_modulus();
   const double dt = in.time_step;
-  const auto residual = [&](const double x, double &slope)
+  // r(x) = x - dt g(q_tr - 3G x): r(x_max) <= 0 means that the deviator relaxes to zero.
+  if (dt * flow_rate(0.0, in.temperature).value >= x_max)
+    return x_max;
+  // Newton on the equivalent phi(x) = ln x - ln(dt g(q_tr - 3G x)), increasing in x: the log
+  // tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
+  const auto phi = [&](const double x, double &slope)
   {
     const FlowRate g = flow_rate(std::max(q_trial - 3.0 * G * x, 0.0), in.temperature);
-    slope = 1.0 + 3.0 * G * dt * g.d_stress;
-    return x - dt * g.value;
+    slope = 1.0 / x + 3.0 * G * g.d_stress / g.value;
+    return g.value > 0.0 ? std::log(x / (dt * g.value)) : INFINITY;
   };
-  double slope = 0.0;
   // The explicit estimate bounds the root from above when g grows with the stress; else the
-  // bracket is [estimate, x_max]. r(x_max) <= 0: the deviator relaxes to zero.
+  // bracket is [estimate, x_max].
   double lo = 0.0;
   double hi = std::min(dt * flow_rate(q_trial, in.temperature).value, x_max);
   if (!(hi > 0.0))
     return 0.0;
-  if (hi < x_max && residual(hi, slope) < 0.0)
+  double slope = 0.0;
+  if (hi < x_max && phi(hi, slope) < 0.0)
   {
     lo = hi;
     hi = x_max;
   }
-  if (hi >= x_max && residual(x_max, slope) <= 0.0)
-    return x_max;
-  double x = hi;
+  // At x_max the stress is round-off and phi's slope singular: start inside instead.
+  double x = hi < x_max ? hi : 0.5 * (lo + hi);
   for (int iteration = 0; iteration < max_iterations_; ++iteration)
   {
-    const double r = residual(x, slope);
-    if (r == 0.0)
+    const double f = phi(x, slope);
+    if (f == 0.0)
       return x;
-    (r > 0.0 ? hi : lo) = x;
-    const double step = r / slope;
-    if (std::abs(step) <= tolerance_ * x)
+    (f > 0.0 ? hi : lo) = x;
+    const double step = f / slope;
+    const bool newton = std::isfinite(step) && slope > 0.0;
+    // A small step with a large f is the singular slope where q_tr - 3G x is round-off.
+    if (newton && std::abs(step) <= tolerance_ * x && std::abs(f) <= 1e-3)
       return x - step;
-    x -= step;
-    if (!std::isfinite(x) || x <= lo || x >= hi)
+    x = newton ? x - step : lo;
+    if (!(x > lo && x < hi))
       x = 0.5 * (lo + hi); // bisection
     if (hi - lo <= tolerance_ * hi)
       return x;

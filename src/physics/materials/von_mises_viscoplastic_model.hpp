@@ -16,7 +16,8 @@ namespace kiln
 /// stress σ_tr = C : (ε − ε_th − ε_p,n) (deviator s_tr, von Mises q_tr), the increment
 /// Δε_eq = x solves the scalar equation
 ///   r(x) = x − Δt g(q_tr − 3G x, T) = 0,   0 <= x <= q_tr / (3G)
-/// by a safeguarded Newton iteration (bisection when a step leaves the bracket); then
+/// by Newton's method on the equivalent ln x = ln(Δt g) (the log tames exponential laws),
+/// safeguarded by a bracket (bisection when a step leaves it); then
 ///   s = (1 − 3G x / q_tr) s_tr,   Δε_p = (3/2) x s_tr / q_tr.
 /// If even x = q_tr/(3G) (zero deviator) leaves r <= 0 (a law with g(0, T) > 0), the deviator
 /// relaxes to zero. The tangent is the consistent (algorithmic) one of this update, ∂σ/∂T
