@@ -60,7 +60,12 @@ VonMisesViscoplasticModel::FlowRate PowerLawViscoplasticModel::flow_rate(const d
   const double coefficient = A_ * arrhenius;
   FlowRate g;
   g.value = coefficient * std::pow(q, n_);
-  g.d_stress = n_ == 0.0 ? 0.0 : coefficient * n_ * std::pow(q, n_ - 1.0);
+  if (n_ == 0.0)
+    g.d_stress = 0.0;
+  else if (q > 0.0)
+    g.d_stress = coefficient * n_ * std::pow(q, n_ - 1.0);
+  else // the limit q -> 0, without pow(0, negative), which traps in debug builds
+    g.d_stress = n_ < 1.0 ? INFINITY : (n_ == 1.0 ? coefficient : 0.0);
   g.d_temperature = Q_ == 0.0 ? 0.0 : g.value * Q_ / (R_ * dT * dT);
   return g;
 }

@@ -134,8 +134,10 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const do
   const auto phi = [&](const double x, double &slope)
   {
     const FlowRate g = flow_rate(std::max(q_trial - 3.0 * G * x, 0.0), in.temperature);
+    if (!(g.value > 0.0))
+      return INFINITY;
     slope = 1.0 / x + 3.0 * G * g.d_stress / g.value;
-    return g.value > 0.0 ? std::log(x / (dt * g.value)) : INFINITY;
+    return std::log(x / (dt * g.value));
   };
   // The explicit estimate bounds the root from above when g grows with the stress; else the
   // bracket is [estimate, x_max].
@@ -157,8 +159,9 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const do
     if (f == 0.0)
       return x;
     (f > 0.0 ? hi : lo) = x;
-    const double step = f / slope;
-    const bool newton = std::isfinite(step) && slope > 0.0;
+    // No division that traps (debug builds trap FE_DIVBYZERO and FE_INVALID).
+    const bool newton = std::isfinite(f) && std::isfinite(slope) && slope > 0.0;
+    const double step = newton ? f / slope : 0.0;
     // A small step with a large f is the singular slope where q_tr - 3G x is round-off.
     if (newton && std::abs(step) <= tolerance_ * x && std::abs(f) <= 1e-3)
       return x - step;
