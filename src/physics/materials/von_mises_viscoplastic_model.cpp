@@ -131,7 +131,7 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const do
     return x_max;
   // Newton on the equivalent phi(x) = ln x - ln(dt g(q_tr - 3G x)), increasing in x: the log
   // tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
-  const auto phi = [&](const double x, double &slope)
+  const auto phi = [&](const double x, double &slope) -> double
   {
     const FlowRate g = flow_rate(std::max(q_trial - 3.0 * G * x, 0.0), in.temperature);
     if (!(g.value > 0.0))
