@@ -95,7 +95,8 @@ TEST(MtsViscoplasticModel, TangentsMatchFiniteDifferences)
         for (const double dt : {0.0, 1.0})
         {
           const kiln::PointInput in = point(strains[s], T, dt);
-          const std::vector<double> old_state(8, 0.0);
+          // An earlier plastic strain (deviatoric) shifts the trial stress.
+          const std::vector<double> old_state{2e-4, -1e-4, -1e-4, 5e-5, 0, -3e-5, 2.5e-4, 0};
           const auto errors = kiln_test::derivative_errors(*model, in, old_state, 1e-10, 1e-3);
           EXPECT_LT(errors.tangent, 1e-6)
               << "strain " << s << " T " << T << " dt " << dt << " alpha " << alpha;
@@ -143,6 +144,21 @@ TEST(MtsViscoplasticModel, TruchasParameterChecksAreInputErrors)
         kiln_test::input_error_message([&] { make(p); }),
         HasSubstr("test.xml: Kiln/Model/\"" + std::string(nonnegative) + "\" = -1: must be >= 0"));
   }
+}
+
+// With sigma_a = 0 Truchas' law has a rate at zero stress (epsdot_0i exp(-G0)); a point
+// without a deviator still does not flow (no direction).
+TEST(MtsViscoplasticModel, NoFlowWithoutDeviatoricStress)
+{
+  Teuchos::ParameterList p = mts();
+  p.set("MTS sig_a", 0.0);
+  const auto model = make(p);
+  EXPECT_GT(model->flow_rate(0.0, 600.0).value, 0.0);
+  const auto e = kiln_test::evaluate(*model, point({1e-3, 1e-3, 1e-3, 0, 0, 0}, 600.0, 1.0),
+                                     std::vector<double>(8));
+  for (int i = 0; i < 8; ++i)
+    EXPECT_EQ(e.state[i], 0.0) << i;
+  EXPECT_EQ(e.response.tangent[3][3], 2.0 * 2.6e10);
 }
 
 TEST(MtsViscoplasticModel, NonpositiveShearModulusIsARunError)

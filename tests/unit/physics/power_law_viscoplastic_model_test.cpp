@@ -87,6 +87,40 @@ TEST(PowerLawViscoplasticModel, ReproducesTruchasViscoplastic1d)
   }
 }
 
+// Relaxation at a fixed shear strain with n = 1: the von Mises stress obeys q' = -3G A q, so
+// q = q0 exp(-3G A t); backward Euler gives q_k = q0 / (1 + 3G A dt)^k exactly, first order in
+// dt. The state carries the plastic strain from step to step.
+TEST(PowerLawViscoplasticModel, RelaxationIsBackwardEuler)
+{
+  const double G = 1e9, A = 1e-10; // 3 G A = 0.3 /s
+  const auto model = make(power_law(A, 1.0));
+  const kiln::PointInput at_rest = point(shear, 100.0, 0.0);
+  const double q0 = kiln_test::von_mises_of(
+      kiln_test::evaluate(*model, at_rest, std::vector<double>(8)).response.stress);
+  double previous_error = 0.0;
+  for (const int n_steps : {10, 20, 40})
+  {
+    const double dt = 2.0 / n_steps;
+    std::vector<double> state(8, 0.0);
+    double q = 0.0;
+    for (int k = 1; k <= n_steps; ++k)
+    {
+      const kiln_test::Evaluation e = kiln_test::evaluate(*model, point(shear, 100.0, dt), state);
+      state = e.state;
+      q = kiln_test::von_mises_of(e.response.stress);
+      EXPECT_NEAR(q, q0 / std::pow(1.0 + 3.0 * G * A * dt, k), 1e-10 * q0) << k;
+    }
+    // The plastic strain is what the stress lost: 2G eps_p,xy = sigma_xy(0) - sigma_xy(t).
+    EXPECT_NEAR(state[3], (q0 - q) / (std::sqrt(3.0) * 2.0 * G), 1e-10 * state[3]);
+    const double error = std::abs(q - q0 * std::exp(-3.0 * G * A * 2.0));
+    if (previous_error > 0.0)
+    {
+      EXPECT_NEAR(previous_error / error, 2.0, 0.1) << n_steps; // first order
+    }
+    previous_error = error;
+  }
+}
+
 TEST(PowerLawViscoplasticModel, TangentsMatchFiniteDifferences)
 {
   // n = 3 with an Arrhenius factor: at T = 600 K the rate at 2 MPa is about 1e-4 /s, so a 1 s
