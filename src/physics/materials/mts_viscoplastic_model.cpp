@@ -58,24 +58,32 @@ MtsViscoplasticModel::MtsViscoplasticModel(const Teuchos::ParameterList &params,
 {
 }
 
-VonMisesViscoplasticModel::FlowRate MtsViscoplasticModel::flow_rate(const double q,
-                                                                    const double T) const
+VonMisesViscoplasticModel::TemperatureFactors
+MtsViscoplasticModel::temperature_factors(const double T) const
 {
   // mu(T) = mu_0 - D/(E - 1), E = exp(T_0/T); dE/dT = -E T_0/T^2.
   const double E = std::exp(temp_0_ / T);
   const double mu = mu_0_ - D_ / (E - 1.0);
   const double dmu_dT = -D_ * E * temp_0_ / (T * T * (E - 1.0) * (E - 1.0));
-  const double sigma_hat = mu * sig_i_ / mu_0_;
-  const double dsigma_hat_dT = dmu_dT * sig_i_ / mu_0_;
   const double b3_g_k = b_ * b_ * b_ * g_0i_ / k_;
   const double G0 = mu * b3_g_k / T;
-  const double dG0_dT = b3_g_k * (dmu_dT / T - mu / (T * T));
+  return {G0, b3_g_k * (dmu_dT / T - mu / (T * T)), mu * sig_i_ / mu_0_, dmu_dT * sig_i_ / mu_0_,
+          edot_0i_ * std::exp(-G0)};
+}
 
+VonMisesViscoplasticModel::FlowRate
+MtsViscoplasticModel::flow_rate_at(const double q, const TemperatureFactors &factors) const
+{
+  const double G0 = factors[0], dG0_dT = factors[1];
+  const double sigma_hat = factors[2], dsigma_hat_dT = factors[3];
   FlowRate g;
   if (q < sig_a_)
   {
-    g.value = edot_0i_ * std::exp(-G0) * std::pow(q / sig_a_, 5);
-    g.d_stress = 5.0 * edot_0i_ * std::exp(-G0) * std::pow(q / sig_a_, 4) / sig_a_;
+    // edot_0i exp(-G0) (q/sigma_a)^5, continuous with the middle range at sigma_a.
+    const double ratio = q / sig_a_;
+    const double ratio4 = (ratio * ratio) * (ratio * ratio);
+    g.value = factors[4] * ratio4 * ratio;
+    g.d_stress = 5.0 * factors[4] * ratio4 / sig_a_;
     g.d_temperature = -g.value * dG0_dT;
   }
   else if (q > sigma_hat + sig_a_)
@@ -84,19 +92,18 @@ VonMisesViscoplasticModel::FlowRate MtsViscoplasticModel::flow_rate(const double
   {
     // g = edot_0i exp(-G0 h), h = y^q_i, y = 1 - x^p_i, x = (q - sigma_a)/sigma_hat.
     const double x = (q - sig_a_) / sigma_hat;
-    const double y = 1.0 - std::pow(x, p_i_);
+    const double x_p = std::pow(x, p_i_);
+    const double y = 1.0 - x_p;
     const double h = std::pow(y, q_i_);
     g.value = edot_0i_ * std::exp(-G0 * h);
-    // dh/dx = -q_i y^(q_i - 1) p_i x^(p_i - 1), written to stay finite where x or y is 0 and
-    // an exponent is >= 1.
-    const double dy_dx = x == 0.0 ? (p_i_ == 1.0 ? -1.0 : (p_i_ > 1.0 ? 0.0 : -INFINITY))
-                                  : -p_i_ * std::pow(x, p_i_ - 1.0);
-    const double dh_dy = y == 0.0 ? (q_i_ == 1.0 ? 1.0 : (q_i_ > 1.0 ? 0.0 : INFINITY))
-                                  : q_i_ * std::pow(y, q_i_ - 1.0);
-    const double dh_dx = dh_dy * dy_dx;
-    g.d_stress = -g.value * G0 * dh_dx / sigma_hat;
+    // dy/dx = -p_i x^(p_i - 1) and dh/dy = q_i y^(q_i - 1), by their limits where x or y is 0.
+    const double dy_dx =
+        x == 0.0 ? (p_i_ == 1.0 ? -1.0 : (p_i_ > 1.0 ? 0.0 : -INFINITY)) : -p_i_ * x_p / x;
+    const double dh_dy =
+        y == 0.0 ? (q_i_ == 1.0 ? 1.0 : (q_i_ > 1.0 ? 0.0 : INFINITY)) : q_i_ * h / y;
+    g.d_stress = -g.value * G0 * dh_dy * dy_dx / sigma_hat;
     // dx/dT = -x dsigma_hat_dT / sigma_hat, and x dy/dx = -p_i x^p_i stays finite.
-    const double dh_dT = dh_dy * p_i_ * std::pow(x, p_i_) * dsigma_hat_dT / sigma_hat;
+    const double dh_dT = dh_dy * p_i_ * x_p * dsigma_hat_dT / sigma_hat;
     g.d_temperature = -g.value * (dG0_dT * h + G0 * dh_dT);
   }
   return g;

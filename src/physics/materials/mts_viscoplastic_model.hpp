@@ -23,7 +23,9 @@ public:
   /// From a validated list; `where` names it in messages.
   MtsViscoplasticModel(const Teuchos::ParameterList &params, const std::string &where);
 
-  FlowRate flow_rate(double q, double T) const override;
+  /// [G0, ∂G0/∂T, σ̂, ∂σ̂/∂T, ε̇0i exp(−G0)]
+  TemperatureFactors temperature_factors(double T) const override;
+  FlowRate flow_rate_at(double q, const TemperatureFactors &factors) const override;
   std::string temperature_problem(double T) const override;
 
 private:

@@ -52,21 +52,28 @@ PowerLawViscoplasticModel::PowerLawViscoplasticModel(const Teuchos::ParameterLis
                    "8.314462618 J/(mol K)");
 }
 
-VonMisesViscoplasticModel::FlowRate PowerLawViscoplasticModel::flow_rate(const double q,
-                                                                         const double T) const
+VonMisesViscoplasticModel::TemperatureFactors
+PowerLawViscoplasticModel::temperature_factors(const double T) const
 {
+  if (Q_ == 0.0)
+    return {A_, 0.0};
   const double dT = T - T_ref_;
-  const double arrhenius = Q_ == 0.0 ? 1.0 : std::exp(-Q_ / (R_ * dT));
-  const double coefficient = A_ * arrhenius;
+  return {A_ * std::exp(-Q_ / (R_ * dT)), Q_ / (R_ * dT * dT)};
+}
+
+VonMisesViscoplasticModel::FlowRate
+PowerLawViscoplasticModel::flow_rate_at(const double q, const TemperatureFactors &factors) const
+{
+  const double coefficient = factors[0];
   FlowRate g;
   g.value = coefficient * std::pow(q, n_);
   if (n_ == 0.0)
     g.d_stress = 0.0;
   else if (q > 0.0)
-    g.d_stress = coefficient * n_ * std::pow(q, n_ - 1.0);
+    g.d_stress = n_ * g.value / q;
   else // the limit q -> 0, without pow(0, negative), which traps in debug builds
     g.d_stress = n_ < 1.0 ? INFINITY : (n_ == 1.0 ? coefficient : 0.0);
-  g.d_temperature = Q_ == 0.0 ? 0.0 : g.value * Q_ / (R_ * dT * dT);
+  g.d_temperature = g.value * factors[1];
   return g;
 }
 

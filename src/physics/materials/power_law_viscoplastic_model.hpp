@@ -19,7 +19,9 @@ public:
   /// From a validated list; `where` names it in messages.
   PowerLawViscoplasticModel(const Teuchos::ParameterList &params, const std::string &where);
 
-  FlowRate flow_rate(double q, double T) const override;
+  /// [A exp(−Q/(R (T − Tref))), Q/(R (T − Tref)²)]
+  TemperatureFactors temperature_factors(double T) const override;
+  FlowRate flow_rate_at(double q, const TemperatureFactors &factors) const override;
   std::string temperature_problem(double T) const override;
 
 private:

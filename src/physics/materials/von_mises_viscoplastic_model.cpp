@@ -79,8 +79,9 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   const std::string problem = temperature_problem(in.temperature);
   if (!problem.empty())
     fail(in, q_trial, problem);
+  const TemperatureFactors factors = temperature_factors(in.temperature);
   const double x_max = q_trial / (3.0 * G);
-  const double x = solve_increment(in, q_trial, x_max);
+  const double x = solve_increment(in, factors, q_trial, x_max);
   const bool relaxed = x >= x_max;
   const double beta = relaxed ? 1.0 : 3.0 * G * x / q_trial;
 
@@ -97,7 +98,7 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   double c = 0.0, d = 0.0;
   if (!relaxed)
   {
-    const FlowRate g = flow_rate(q_trial - 3.0 * G * x, in.temperature);
+    const FlowRate g = flow_rate_at(q_trial - 3.0 * G * x, factors);
     if (std::isfinite(g.d_stress))
     {
       const double denominator = 1.0 + 3.0 * G * in.time_step * g.d_stress;
@@ -121,19 +122,20 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   }
 }
 
-double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const double q_trial,
-                                                  const double x_max) const
+double VonMisesViscoplasticModel::solve_increment(const PointInput &in,
+                                                  const TemperatureFactors &factors,
+                                                  const double q_trial, const double x_max) const
 {
   const double G = elasticity_.shear_modulus();
   const double dt = in.time_step;
   // r(x) = x - dt g(q_tr - 3G x): r(x_max) <= 0 means that the deviator relaxes to zero.
-  if (dt * flow_rate(0.0, in.temperature).value >= x_max)
+  if (dt * flow_rate_at(0.0, factors).value >= x_max)
     return x_max;
   // Newton on the equivalent phi(x) = ln x - ln(dt g(q_tr - 3G x)), increasing in x: the log
   // tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
   const auto phi = [&](const double x, double &slope) -> double
   {
-    const FlowRate g = flow_rate(std::max(q_trial - 3.0 * G * x, 0.0), in.temperature);
+    const FlowRate g = flow_rate_at(std::max(q_trial - 3.0 * G * x, 0.0), factors);
     if (!(g.value > 0.0))
       return INFINITY;
     slope = 1.0 / x + 3.0 * G * g.d_stress / g.value;
@@ -142,7 +144,7 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in, const do
   // The explicit estimate bounds the root from above when g grows with the stress; else the
   // bracket is [estimate, x_max].
   double lo = 0.0;
-  double hi = std::min(dt * flow_rate(q_trial, in.temperature).value, x_max);
+  double hi = std::min(dt * flow_rate_at(q_trial, factors).value, x_max);
   if (!(hi > 0.0))
     return 0.0;
   double slope = 0.0;

@@ -4,6 +4,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,9 +43,20 @@ public:
   double equivalent_plastic_strain(const double *state) const final { return state[6]; }
   double plastic_strain_rate(const double *state) const final { return state[7]; }
 
+  /// What a flow law computes once per point from T (Truchas' set_temperature): the local
+  /// solve then evaluates the law at many stresses for the price of the stress terms alone.
+  using TemperatureFactors = std::array<double, 6>;
+
   const LinearElasticModel &elasticity() const { return elasticity_; }
   /// The flow law: the equivalent plastic strain rate at von Mises stress q >= 0 and T.
-  virtual FlowRate flow_rate(double q, double T) const = 0;
+  FlowRate flow_rate(const double q, const double T) const
+  {
+    return flow_rate_at(q, temperature_factors(T));
+  }
+  /// The law's factors at T (which temperature_problem() accepts).
+  virtual TemperatureFactors temperature_factors(double T) const = 0;
+  /// The law at q >= 0 with the factors of T; d_temperature is ∂g/∂T.
+  virtual FlowRate flow_rate_at(double q, const TemperatureFactors &factors) const = 0;
   /// Why the flow law cannot be evaluated at T ("" when it can), e.g. T <= 0 K.
   virtual std::string temperature_problem(double T) const = 0;
 
@@ -58,7 +70,8 @@ protected:
 
 private:
   /// Δε_eq = x by the safeguarded Newton iteration; throws RunError when it does not converge.
-  double solve_increment(const PointInput &in, double q_trial, double x_max) const;
+  double solve_increment(const PointInput &in, const TemperatureFactors &factors, double q_trial,
+                         double x_max) const;
   [[noreturn]] void fail(const PointInput &in, double q_trial, const std::string &why) const;
 
   LinearElasticModel elasticity_;
