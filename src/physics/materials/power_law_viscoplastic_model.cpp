@@ -71,7 +71,7 @@ PowerLawViscoplasticModel::flow_rate_at(const double q, const TemperatureFactors
     g.d_stress = 0.0;
   else if (q > 0.0)
     g.d_stress = n_ * g.value / q;
-  else // the limit q -> 0, without pow(0, negative), which traps in debug builds
+  else // the limit q -> 0, without pow(0, negative) (FE_DIVBYZERO)
     g.d_stress = n_ < 1.0 ? INFINITY : (n_ == 1.0 ? coefficient : 0.0);
   g.d_temperature = g.value * factors[1];
   return g;

@@ -161,7 +161,8 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in,
     if (f == 0.0)
       return x;
     (f > 0.0 ? hi : lo) = x;
-    // No division that traps (debug builds trap FE_DIVBYZERO and FE_INVALID).
+    // No division by zero nor inf/inf (style.md §8: debug builds may trap FE_DIVBYZERO and
+    // FE_INVALID).
     const bool newton = std::isfinite(f) && std::isfinite(slope) && slope > 0.0;
     const double step = newton ? f / slope : 0.0;
     // A small step with a large f is the singular slope where q_tr - 3G x is round-off.
@@ -176,7 +177,7 @@ double VonMisesViscoplasticModel::solve_increment(const PointInput &in,
   std::ostringstream why;
   why << "the local Newton solve for the equivalent plastic strain increment did not converge in "
       << max_iterations_ << " iterations (\"Local Iterations\"; bracket [" << lo << ", " << hi
-      << "])";
+      << "]); a smaller time step or a looser \"Local Tolerance\" may help";
   fail(in, q_trial, why.str());
 }
 
@@ -190,8 +191,7 @@ void VonMisesViscoplasticModel::fail(const PointInput &in, const double q_trial,
     << in.time_step << " s, strain [";
   for (int i = 0; i < 6; ++i)
     s << (i == 0 ? "" : ", ") << in.strain[i];
-  s << "] and trial von Mises stress " << q_trial << " Pa: " << why
-    << "; the step is cut (a smaller time step or a looser \"Local Tolerance\" may help)";
+  s << "] and trial von Mises stress " << q_trial << " Pa: " << why << "; the step is cut";
   throw RunError(s.str());
 }
 } // namespace kiln
