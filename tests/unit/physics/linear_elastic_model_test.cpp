@@ -4,7 +4,9 @@
 // KILN_TEST_NP: 1
 #include "physics/materials/linear_elastic_model.hpp"
 
+#include "physics/mechanics/elasticity_kernel.hpp"
 #include "support/constitutive_model_check.hpp"
+#include "support/reference_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,6 +39,33 @@ TEST(LinearElasticModel, StressIsHookesLawWithThermalStrain)
   EXPECT_TRUE(model.constant_linear());
   EXPECT_EQ(model.n_state(), 0);
   EXPECT_TRUE(model.state_names().empty());
+}
+
+// The same stress as the elasticity kernel's: u = eps x on the unit cube, uniform T, the
+// kernel's cell average (hooke_stress at each Gauss point).
+TEST(LinearElasticModel, StressIsTheElasticityKernels)
+{
+  const kiln::LinearElasticModel model(lambda, G, alpha, T_ref);
+  const kiln::ElasticityKernel kernel(lambda, G, alpha, T_ref);
+  const kiln::Voigt strain{1e-3, -2e-4, 3e-4, 5e-4, -1e-4, 2e-4};
+  static constexpr int index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  const kiln::HexNodes x = kiln_test::unit_cube();
+  kiln::ElasticityKernel::NodalDisplacements u{};
+  for (int i = 0; i < 8; ++i)
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k)
+        u[i][d] += strain[index[d][k]] * x[i][k];
+  kiln::ElasticityKernel::NodalValues T;
+  T.fill(350.0);
+  kiln::ElementValues fe;
+  fe.reinit(x);
+  const kiln::Voigt expected = kernel.cell_averages(fe, u, T).stress;
+  kiln::PointInput in;
+  in.strain = strain;
+  in.temperature = 350.0;
+  const kiln::Voigt stress = kiln_test::evaluate(model, in, {}).response.stress;
+  for (int i = 0; i < 6; ++i)
+    EXPECT_NEAR(stress[i], expected[i], 1e-12 * 1e8) << i;
 }
 
 TEST(LinearElasticModel, DerivativesMatchFiniteDifferences)
