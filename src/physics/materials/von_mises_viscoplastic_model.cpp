@@ -1,0 +1,197 @@
+#include "physics/materials/von_mises_viscoplastic_model.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace kiln
+{
+namespace
+{
+/// The weight of a Voigt component in a tensor contraction a : b (shears count twice).
+constexpr double contraction_weight(const int i)
+{
+  return i < 3 ? 1.0 : 2.0;
+}
+} // namespace
+
+Teuchos::ParameterList VonMisesViscoplasticModel::common_parameters(const std::string &name)
+{
+  Teuchos::ParameterList p = LinearElasticModel::valid_parameters();
+  p.setName(name);
+  p.set("Local Tolerance", 1e-12,
+        "the local Newton solve for the equivalent plastic strain increment x stops when its "
+        "step is below this times x; must be > 0 and < 1e-3 [-]",
+        double_range_validator(1e-16, 1e-3));
+  p.set("Local Iterations", 50,
+        "at most this many local Newton iterations per point; a point that does not converge "
+        "fails the step, which is then cut; must be > 0 [-]",
+        positive_int_validator());
+  return p;
+}
+
+VonMisesViscoplasticModel::VonMisesViscoplasticModel(const Teuchos::ParameterList &params,
+                                                     const std::string &where,
+                                                     const std::string &name)
+    : elasticity_(params, where), name_(name), tolerance_(params.get<double>("Local Tolerance")),
+      max_iterations_(params.get<int>("Local Iterations"))
+{
+}
+
+std::vector<std::string> VonMisesViscoplasticModel::state_names() const
+{
+  return {"plastic_strain_xx",         "plastic_strain_yy",  "plastic_strain_zz",
+          "plastic_strain_xy",         "plastic_strain_xz",  "plastic_strain_yz",
+          "equivalent_plastic_strain", "plastic_strain_rate"};
+}
+
+void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old_state,
+                                         double *new_state, PointResponse &out) const
+{
+  const double G = elasticity_.shear_modulus();
+  const double K = elasticity_.bulk_modulus();
+  // The trial state: the step is elastic.
+  Voigt elastic_strain = elasticity_.mechanical_strain(in.strain, in.temperature);
+  for (int i = 0; i < 6; ++i)
+    elastic_strain[i] -= old_state[i];
+  const Voigt trial = elasticity_.elastic_stress(elastic_strain);
+  const double pressure = (trial[0] + trial[1] + trial[2]) / 3.0;
+  Voigt s_trial = trial;
+  for (int i = 0; i < 3; ++i)
+    s_trial[i] -= pressure;
+  double s_s = 0.0;
+  for (int i = 0; i < 6; ++i)
+    s_s += contraction_weight(i) * s_trial[i] * s_trial[i];
+  const double q_trial = std::sqrt(1.5 * s_s);
+
+  out.stress = trial;
+  out.tangent = elasticity_.elastic_tangent();
+  out.stress_temperature_derivative = elasticity_.thermal_stress_derivative();
+  for (int i = 0; i < 8; ++i)
+    new_state[i] = old_state[i];
+  new_state[7] = 0.0;
+  if (!(in.time_step > 0.0 && q_trial > 0.0))
+    return;
+
+  const std::string problem = temperature_problem(in.temperature);
+  if (!problem.empty())
+    fail(in, q_trial, problem);
+  const TemperatureFactors factors = temperature_factors(in.temperature);
+  const double x_max = q_trial / (3.0 * G);
+  const double x = solve_increment(in, factors, q_trial, x_max);
+  const bool relaxed = x >= x_max;
+  const double beta = relaxed ? 1.0 : 3.0 * G * x / q_trial;
+
+  for (int i = 0; i < 6; ++i)
+  {
+    out.stress[i] = (1.0 - beta) * s_trial[i] + (i < 3 ? pressure : 0.0);
+    new_state[i] = old_state[i] + 1.5 * x * s_trial[i] / q_trial;
+  }
+  new_state[6] = old_state[6] + x;
+  new_state[7] = x / in.time_step;
+
+  // The consistent tangent: dσ = K I tr(dε) + (1 − β) 2G dev(dε) − s_tr (3G dx − β dq_tr)/q_tr,
+  // dq_tr = 2G N : dε with N = (3/2) s_tr/q_tr, and dx = c dq_tr + d dT from r(x) = 0.
+  double c = 0.0, d = 0.0;
+  if (!relaxed)
+  {
+    const FlowRate g = flow_rate_at(q_trial - 3.0 * G * x, factors);
+    if (std::isfinite(g.d_stress))
+    {
+      const double denominator = 1.0 + 3.0 * G * in.time_step * g.d_stress;
+      c = in.time_step * g.d_stress / denominator;
+      d = in.time_step * g.d_temperature / denominator;
+    }
+    else
+      c = 1.0 / (3.0 * G);
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    const double s_i = s_trial[i] / q_trial;
+    for (int j = 0; j < 6; ++j)
+    {
+      const double deviatoric = (i == j ? 1.0 : 0.0) - (i < 3 && j < 3 ? 1.0 / 3.0 : 0.0);
+      const double dq_trial_j = 2.0 * G * 1.5 * s_trial[j] / q_trial * contraction_weight(j);
+      out.tangent[i][j] = (i < 3 && j < 3 ? K : 0.0) + (1.0 - beta) * 2.0 * G * deviatoric -
+                          s_i * (relaxed ? 0.0 : 3.0 * G * c - beta) * dq_trial_j;
+    }
+    out.stress_temperature_derivative[i] -= s_i * 3.0 * G * d;
+  }
+}
+
+double VonMisesViscoplasticModel::solve_increment(const PointInput &in,
+                                                  const TemperatureFactors &factors,
+                                                  const double q_trial, const double x_max) const
+{
+  const double G = elasticity_.shear_modulus();
+  const double dt = in.time_step;
+  // r(x) = x - dt g(q_tr - 3G x): r(x_max) <= 0 means that the deviator relaxes to zero.
+  if (dt * flow_rate_at(0.0, factors).value >= x_max)
+    return x_max;
+  // Newton on the equivalent phi(x) = ln x - ln(dt g(q_tr - 3G x)), increasing in x: the log
+  // tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
+  const auto phi = [&](const double x, double &slope) -> double
+  {
+    const FlowRate g = flow_rate_at(std::max(q_trial - 3.0 * G * x, 0.0), factors);
+    if (!(g.value > 0.0))
+      return INFINITY;
+    slope = 1.0 / x + 3.0 * G * g.d_stress / g.value;
+    return std::log(x / (dt * g.value));
+  };
+  // The explicit estimate bounds the root from above when g grows with the stress; else the
+  // bracket is [estimate, x_max].
+  double lo = 0.0;
+  double hi = std::min(dt * flow_rate_at(q_trial, factors).value, x_max);
+  if (!(hi > 0.0))
+    return 0.0;
+  double slope = 0.0;
+  if (hi < x_max && phi(hi, slope) < 0.0)
+  {
+    lo = hi;
+    hi = x_max;
+  }
+  // At x_max the stress is round-off and phi's slope singular: start inside instead.
+  double x = hi < x_max ? hi : 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < max_iterations_; ++iteration)
+  {
+    const double f = phi(x, slope);
+    if (f == 0.0)
+      return x;
+    (f > 0.0 ? hi : lo) = x;
+    // No division by zero nor inf/inf (style.md §8: debug builds may trap FE_DIVBYZERO and
+    // FE_INVALID).
+    const bool newton = std::isfinite(f) && std::isfinite(slope) && slope > 0.0;
+    const double step = newton ? f / slope : 0.0;
+    // A small step with a large f is the singular slope where q_tr - 3G x is round-off.
+    if (newton && std::abs(step) <= tolerance_ * x && std::abs(f) <= 1e-3)
+      return x - step;
+    x = newton ? x - step : lo;
+    if (!(x > lo && x < hi))
+      x = 0.5 * (lo + hi); // bisection
+    if (hi - lo <= tolerance_ * hi)
+      return x;
+  }
+  std::ostringstream why;
+  why << "the local Newton solve for the equivalent plastic strain increment did not converge in "
+      << max_iterations_ << " iterations (\"Local Iterations\"; bracket [" << lo << ", " << hi
+      << "]); a smaller time step or a looser \"Local Tolerance\" may help";
+  fail(in, q_trial, why.str());
+}
+
+void VonMisesViscoplasticModel::fail(const PointInput &in, const double q_trial,
+                                     const std::string &why) const
+{
+  std::ostringstream s;
+  s.precision(9);
+  s << "the \"" << name_
+    << "\" viscoplastic model at a quadrature point with T = " << in.temperature << " K, time step "
+    << in.time_step << " s, strain [";
+  for (int i = 0; i < 6; ++i)
+    s << (i == 0 ? "" : ", ") << in.strain[i];
+  s << "] and trial von Mises stress " << q_trial << " Pa: " << why << "; the step is cut";
+  throw RunError(s.str());
+}
+} // namespace kiln
