@@ -23,7 +23,7 @@
 #include "mesh/mesh_factory.hpp"
 #include "mesh/metis_partitioner.hpp"
 #include "physics/coupled_problem.hpp"
-#include "physics/materials/material.hpp"
+#include "physics/materials/material_map.hpp"
 #include "solvers/fault_injection.hpp"
 #include "solvers/newton_solver.hpp"
 #include "solvers/time_stepper.hpp"
@@ -62,8 +62,13 @@ Teuchos::ParameterList Simulation::valid_parameters()
        "the mesh: a generated box or an Exodus II file, the gap, the partition; see doc/mesh.md")
       .setParameters(MeshFactory::valid_parameters());
   p.sublist("Material", false,
-            "material properties (one material); see doc/heat.md and doc/mechanics.md")
+            "material properties, one material for every element block; or give Materials; see "
+            "doc/materials.md")
       .setParameters(Material::valid_parameters());
+  set_named_sublists(p, "Materials",
+                     "materials by name, each with the element \"Blocks\" it fills (every block "
+                     "in exactly one); instead of Material; see doc/materials.md",
+                     MaterialMap::valid_named_parameters());
   p.sublist("Thermal", false,
             "heat conduction: initial state, boundary conditions, gap conductance; see "
             "doc/heat.md")
@@ -147,7 +152,8 @@ void Simulation::setup()
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
-    const Material material(params_.sublist("Material"), input_path_ + ": Kiln/Material");
+    const MaterialMap materials(params_, mesh_.block_ids(), input_path_);
+    const Material &material = materials.uniform_material();
     problem_ =
         Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
                                         params_.sublist("Mechanics"), input_path_ + ": Kiln"));

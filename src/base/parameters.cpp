@@ -108,6 +108,38 @@ bool holds_named_sublists(const Teuchos::ParameterEntry &valid_entry)
   return valid_entry.docString().find(named_sublists_marker) != std::string::npos;
 }
 
+const std::string number_or_sublist_marker =
+    " [a number (Type \"Constant\" with that Value) or this sublist]";
+
+bool is_number_or_sublist(const Teuchos::ParameterEntry &valid_entry)
+{
+  return valid_entry.isList() &&
+         valid_entry.docString().find(number_or_sublist_marker) != std::string::npos;
+}
+
+/// A parameter (not a sublist) against its valid entry: the type, then the validator.
+void check_value(const Teuchos::ParameterEntry &entry, const Teuchos::ParameterEntry &valid_entry,
+                 const std::string &at, const std::string &name, const std::string &path)
+{
+  const std::string expected_type = valid_entry.getAny(false).typeName();
+  KILN_CHECK_INPUT(entry.getAny(false).type() == valid_entry.getAny(false).type(), at,
+                   "expected type \"" << expected_type << "\", got type \""
+                                      << entry.getAny(false).typeName() << "\" (value "
+                                      << value_text(entry) << "); write type=\"" << expected_type
+                                      << "\"");
+  if (const auto validator = valid_entry.validator(); !validator.is_null())
+  {
+    try
+    {
+      validator->validate(entry, name, path);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError(at + " = " + value_text(entry) + ": " + e.what());
+    }
+  }
+}
+
 void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
                 const std::string &where, const std::string &path);
 
@@ -150,6 +182,12 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
       msg << " Valid names in " << path << ": " << joined(valid_names) << ".";
       throw InputError(msg.str());
     }
+    if (is_number_or_sublist(*valid_entry) && !entry.isList())
+    {
+      check_value(entry, Teuchos::getValue<Teuchos::ParameterList>(*valid_entry).getEntry("Value"),
+                  at, name, path);
+      continue;
+    }
     if (valid_entry->isList())
     {
       KILN_CHECK_INPUT(entry.isList(), at,
@@ -171,23 +209,7 @@ void check_list(const Teuchos::ParameterList &user, const Teuchos::ParameterList
     KILN_CHECK_INPUT(!entry.isList(), at,
                      "expected a parameter of type " << valid_entry->getAny(false).typeName()
                                                      << ", got a sublist");
-    const std::string expected_type = valid_entry->getAny(false).typeName();
-    KILN_CHECK_INPUT(entry.getAny(false).type() == valid_entry->getAny(false).type(), at,
-                     "expected type \"" << expected_type << "\", got type \""
-                                        << entry.getAny(false).typeName() << "\" (value "
-                                        << value_text(entry) << "); write type=\"" << expected_type
-                                        << "\"");
-    if (const auto validator = valid_entry->validator(); !validator.is_null())
-    {
-      try
-      {
-        validator->validate(entry, name, path);
-      }
-      catch (const std::exception &e)
-      {
-        throw InputError(at + " = " + value_text(entry) + ": " + e.what());
-      }
-    }
+    check_value(entry, *valid_entry, at, name, path);
   }
 }
 /// Adds every entry of `valid` missing from `list` (recursively; in
@@ -208,8 +230,17 @@ void set_defaults(Teuchos::ParameterList &list, const Teuchos::ParameterList &va
         set_defaults(named.sublist(named.name(n)), tmpl);
     }
     else if (entry.isList())
+    {
+      if (is_number_or_sublist(entry) && list.isParameter(name) && !list.isSublist(name))
+      {
+        // A plain number: the sublist with Type "Constant" and that Value (given in input).
+        const Teuchos::ParameterEntry number = list.getEntry(name);
+        list.remove(name);
+        list.sublist(name, false, entry.docString()).setEntry("Value", number);
+      }
       set_defaults(list.sublist(name, false, entry.docString()),
                    Teuchos::getValue<Teuchos::ParameterList>(entry));
+    }
     else if (!list.isParameter(name))
     {
       list.setEntry(name, entry);
@@ -250,6 +281,12 @@ void set_named_sublists(Teuchos::ParameterList &parent, const std::string &name,
   parent.sublist(name, false, doc + internal::named_sublists_marker)
       .sublist(internal::named_sublist_template, false, "one of them")
       .setParameters(each);
+}
+
+void set_number_or_sublist(Teuchos::ParameterList &parent, const std::string &name,
+                           const std::string &doc, const Teuchos::ParameterList &each)
+{
+  parent.sublist(name, false, doc + internal::number_or_sublist_marker).setParameters(each);
 }
 
 std::string parameter_path(const std::string &where, const std::string &path,

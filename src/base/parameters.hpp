@@ -42,6 +42,14 @@ bool given_in_input(const Teuchos::ParameterList &list, const std::string &name)
 void set_named_sublists(Teuchos::ParameterList &parent, const std::string &name,
                         const std::string &doc, const Teuchos::ParameterList &each);
 
+/// Declares sublist `name` of `parent`, validated against `each` (which has a "Type" whose
+/// default is "Constant", and a "Value"), that the input may also give as a plain number:
+/// <Parameter name="Density" type="double" value="2700"/> stands for the sublist with Type
+/// "Constant" and Value 2700; the number is checked against `each`'s "Value" (its type and
+/// validator). validated() returns the sublist form, so readers see one shape.
+void set_number_or_sublist(Teuchos::ParameterList &parent, const std::string &name,
+                           const std::string &doc, const Teuchos::ParameterList &each);
+
 /// `where: path/"name"`, the way every message names a parameter.
 std::string parameter_path(const std::string &where, const std::string &path,
                            const std::string &name);

@@ -1,7 +1,7 @@
 #pragma once
 /// y(x) piecewise linear through the points (x_i, y_i), constant beyond the
 /// ends: the table behind TimeFunction ("Times"/"Values") and
-/// ConductivityModel ("Temperatures"/"Values").
+/// TemperatureFunction ("Temperatures"/"Values").
 #include <string>
 #include <vector>
 

@@ -320,7 +320,7 @@ void verify_checkpoint(const std::string &path, const double time,
     throw std::runtime_error("attribute state/time read back differs from what was written");
 }
 
-const char *const physics_blocks[] = {"Mesh", "Material", "Thermal", "Mechanics"};
+const char *const physics_blocks[] = {"Mesh", "Material", "Materials", "Thermal", "Mechanics"};
 } // namespace internal
 
 RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
@@ -348,7 +348,9 @@ RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
   for (const char *block : internal::physics_blocks)
   {
     std::ostringstream xml;
-    Teuchos::writeParameterListToXmlOStream(input.sublist(block), xml);
+    // A list the input lacks (a deck not read through validated()) counts as empty.
+    Teuchos::writeParameterListToXmlOStream(
+        input.isSublist(block) ? input.sublist(block) : Teuchos::ParameterList(block), xml);
     f.physics.emplace_back(std::string("Kiln/") + block, xml.str());
   }
   return f;

@@ -16,8 +16,8 @@ namespace kiln
 {
 /// What a checkpoint must match to continue a run: the mesh (its sizes and a hash of its
 /// coordinates, cells, blocks and gap), the unknowns (the layout) and the blocks of the input
-/// that define the problem (Physics, Mesh, Material, Thermal, Mechanics). The time stepping,
-/// solver, output and checkpoint blocks may change on a restart.
+/// that define the problem (Physics, Mesh, Material, Materials, Thermal, Mechanics). The time
+/// stepping, solver, output and checkpoint blocks may change on a restart.
 struct RunFingerprint
 {
   int n_nodes = 0;

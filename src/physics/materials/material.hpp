@@ -1,70 +1,107 @@
 #pragma once
-/// The material of the body: the properties every physics kernel reads.
+/// A material: the properties every physics kernel reads, each a function of temperature.
 #include "physics/materials/conductivity_model.hpp"
+#include "physics/materials/temperature_function.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
+#include <vector>
 
 namespace kiln
 {
-/// One material for the whole mesh (SI units). Defaults are the contact-box spec's
-/// aluminium, so that a deck that leaves a property out is still physical; the
-/// input reference lists them.
+/// One material (SI units; doc/materials.md, "Properties"). Defaults are the contact-box
+/// spec's aluminium, so that a deck that leaves a property out is still physical; the input
+/// reference lists them. Every property but the reference temperature is a
+/// TemperatureFunction: a number, a table in T or a formula in T.
 ///
 /// Isotropic linear thermo-elasticity: the input gives one pair of elastic constants,
-/// (E, nu) or (lambda, G); the other pair follows from
+/// (E, nu) or (lambda, G), each a function of T; the other pair follows at each T from
 ///   lambda = E nu / ((1 + nu)(1 - 2 nu)),  G = E / (2 (1 + nu)),
 ///   E = G (3 lambda + 2 G) / (lambda + G),  nu = lambda / (2 (lambda + G)).
-/// The thermal strain is alpha (T - T_ref) I, zero at the stress-free temperature T_ref.
+/// Thermal strain: the secant (mean) definition from the stress-free temperature T_ref,
+///   eps_th(T) = alpha(T) (T - T_ref) I,  d eps_th/dT = (alpha'(T) (T - T_ref) + alpha(T)) I,
+/// alpha the secant coefficient measured from T_ref (as Truchas, and MOOSE's "mean" option);
+/// not the instantaneous one (eps_th = integral of alpha from T_ref to T).
 class Material
 {
 public:
   static Teuchos::ParameterList valid_parameters();
-  /// `validated_params` has been through kiln::validated() against valid_parameters();
-  /// `where` names the block in messages ("in.xml: Kiln/Material").
+  /// `validated_params` has been through kiln::validated() against valid_parameters() (it may
+  /// hold other entries, such as a Materials entry's "Blocks"); `where` names the block in
+  /// messages ("in.xml: Kiln/Material").
   Material(const Teuchos::ParameterList &validated_params, const std::string &where);
   /// Aluminium of the spec.
   Material() = default;
 
-  double density() const { return density_; }             ///< rho [kg/m^3]
-  double specific_heat() const { return specific_heat_; } ///< c [J/(kg K)]
+  /// @name Properties at a temperature T [K]
+  /// @{
+  double density(double T) const { return density_.value(T); }             ///< rho [kg/m^3]
+  double specific_heat(double T) const { return specific_heat_.value(T); } ///< c [J/(kg K)]
   /// rho c [J/(m^3 K)]
-  double heat_capacity() const { return density_ * specific_heat_; }
+  double heat_capacity(double T) const { return density_.value(T) * specific_heat_.value(T); }
+  /// d(rho c)/dT [J/(m^3 K^2)]
+  double d_heat_capacity_d_T(double T) const;
+  /// k(T) [W/(m K)] and its derivative.
   const ConductivityModel &conductivity() const { return conductivity_; }
+  double lame_lambda(double T) const;         ///< lambda [Pa]
+  double d_lame_lambda_d_T(double T) const;   ///< d lambda/dT [Pa/K]
+  double shear_modulus(double T) const;       ///< G (Lame mu) [Pa]
+  double d_shear_modulus_d_T(double T) const; ///< dG/dT [Pa/K]
+  double youngs_modulus(double T) const;      ///< E [Pa]
+  double poissons_ratio(double T) const;      ///< nu [-]
+  /// alpha, the secant linear thermal expansion coefficient from T_ref [1/K]
+  double thermal_expansion(double T) const { return thermal_expansion_.value(T); }
+  /// eps_th = alpha(T) (T - T_ref), the thermal strain in each direction [-]
+  double thermal_strain(double T) const;
+  /// d eps_th/dT = alpha'(T) (T - T_ref) + alpha(T) [1/K]
+  double d_thermal_strain_d_T(double T) const;
+  /// @}
 
-  double lame_lambda() const { return lame_lambda_; }       ///< lambda [Pa]
-  double shear_modulus() const { return shear_modulus_; }   ///< G (Lame mu) [Pa]
-  double youngs_modulus() const { return youngs_modulus_; } ///< E [Pa]
-  double poissons_ratio() const { return poissons_ratio_; } ///< nu [-]
-  /// alpha, the linear thermal expansion coefficient [1/K]
-  double thermal_expansion() const { return thermal_expansion_; }
-  /// T_ref, the stress-free temperature [K]
+  /// T_ref, the stress-free temperature [K] (a number, not a function of T: the temperature
+  /// the secant coefficient is measured from).
   double reference_temperature() const { return reference_temperature_; }
 
+  /// Whether no property depends on T.
+  bool is_constant() const { return temperature_dependent_properties().empty(); }
+  /// The input names of the properties that depend on T ("Young's Modulus", ...), in input
+  /// order; the conductivity is "Conductivity".
+  std::vector<std::string> temperature_dependent_properties() const;
+
+  /// @name Values of properties that do not depend on T
+  /// For the kernels that take constants today. Each throws std::logic_error (a bug: the
+  /// caller must check is_constant() or temperature_dependent_properties()) if its property
+  /// depends on T.
+  /// @{
+  double density() const;
+  double specific_heat() const;
+  double heat_capacity() const { return density() * specific_heat(); }
+  double lame_lambda() const;
+  double shear_modulus() const;
+  double youngs_modulus() const;
+  double poissons_ratio() const;
+  double thermal_expansion() const;
+  /// @}
+
 private:
-  static double youngs_modulus_of(const double lambda, const double G)
-  {
-    return G * (3.0 * lambda + 2.0 * G) / (lambda + G);
-  }
-  static double poissons_ratio_of(const double lambda, const double G)
-  {
-    return lambda / (2.0 * (lambda + G));
-  }
   void set_elasticity(const Teuchos::ParameterList &p, const std::string &where);
+  void check_poissons_ratio(const std::string &where) const;
+  void check_bulk_modulus(const std::string &where) const;
+  /// The temperatures at which the pair (lambda, G) or (E, nu) was checked: the union of the
+  /// two functions' checked temperatures, or {T_ref} if both are constant.
+  std::vector<double> elastic_check_temperatures() const;
   /// Above this nu (lambda > 49 G) a valid material is nearly incompressible: warn.
   static constexpr double max_compressible_poissons_ratio = 0.49;
-  void warn_if_nearly_incompressible(const std::string &where, const std::string &name,
-                                     double value) const;
+  void warn_if_nearly_incompressible(const std::string &where) const;
 
-  double density_ = 2.7e3;
-  double specific_heat_ = 9.0e2;
+  TemperatureFunction density_ = TemperatureFunction::constant(2.7e3);
+  TemperatureFunction specific_heat_ = TemperatureFunction::constant(9.0e2);
   ConductivityModel conductivity_ = ConductivityModel::constant(2.4e2);
-  double lame_lambda_ = 5.2e10;
-  double shear_modulus_ = 2.6e10;
-  double youngs_modulus_ = youngs_modulus_of(lame_lambda_, shear_modulus_);
-  double poissons_ratio_ = poissons_ratio_of(lame_lambda_, shear_modulus_);
-  double thermal_expansion_ = 2.2e-5;
+  /// true: first_ = E, second_ = nu; false: first_ = lambda, second_ = G.
+  bool given_E_nu_ = false;
+  TemperatureFunction first_ = TemperatureFunction::constant(5.2e10);
+  TemperatureFunction second_ = TemperatureFunction::constant(2.6e10);
+  TemperatureFunction thermal_expansion_ = TemperatureFunction::constant(2.2e-5);
   double reference_temperature_ = 298.0;
 };
 } // namespace kiln

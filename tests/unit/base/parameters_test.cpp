@@ -144,3 +144,73 @@ TEST(Parameters, PassThroughSublistIsNotCheckedButGetsDefaults)
     EXPECT_THAT(e.what(), HasSubstr("Did you mean \"Package\"?"));
   }
 }
+
+namespace
+{
+/// A list with one property "Density" that is a number or a sublist (Type, Value > 0, Values).
+Teuchos::ParameterList valid_with_property()
+{
+  Teuchos::ParameterList each;
+  each.set("Type", "Constant");
+  each.set("Value", 2700.0, "rho [kg/m^3]", kiln::positive_double_validator());
+  each.set("Values", Teuchos::Array<double>(2, 2700.0));
+  Teuchos::ParameterList valid("Material");
+  kiln::set_number_or_sublist(valid, "Density", "rho", each);
+  return valid;
+}
+} // namespace
+
+TEST(Parameters, NumberOrSublistReadsANumberAsTheConstantSublist)
+{
+  Teuchos::ParameterList user;
+  user.set("Density", 7900.0);
+  const Teuchos::ParameterList p =
+      kiln::validated(user, valid_with_property(), "in.xml", "Kiln/Material");
+  ASSERT_TRUE(p.isSublist("Density"));
+  EXPECT_EQ(p.sublist("Density").get<std::string>("Type"), "Constant");
+  EXPECT_EQ(p.sublist("Density").get<double>("Value"), 7900.0);
+  EXPECT_TRUE(kiln::given_in_input(p, "Density"));
+  EXPECT_TRUE(kiln::given_in_input(p.sublist("Density"), "Value"));
+  EXPECT_FALSE(kiln::given_in_input(p.sublist("Density"), "Type"));
+
+  // Not given: the sublist of defaults, not given.
+  const Teuchos::ParameterList d =
+      kiln::validated(Teuchos::ParameterList(), valid_with_property(), "in.xml", "Kiln/Material");
+  EXPECT_EQ(d.sublist("Density").get<double>("Value"), 2700.0);
+  EXPECT_FALSE(kiln::given_in_input(d, "Density"));
+
+  // The long form is kept as given.
+  Teuchos::ParameterList long_form;
+  long_form.sublist("Density").set("Type", "Table");
+  const Teuchos::ParameterList l =
+      kiln::validated(long_form, valid_with_property(), "in.xml", "Kiln/Material");
+  EXPECT_EQ(l.sublist("Density").get<std::string>("Type"), "Table");
+  EXPECT_EQ(l.sublist("Density").get<double>("Value"), 2700.0);
+}
+
+TEST(Parameters, NumberOrSublistChecksTheNumberAsItsValue)
+{
+  const auto error_of = [](const Teuchos::ParameterList &user)
+  {
+    try
+    {
+      kiln::validated(user, valid_with_property(), "in.xml", "Kiln/Material");
+    }
+    catch (const kiln::InputError &e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  Teuchos::ParameterList negative;
+  negative.set("Density", -1.0);
+  EXPECT_EQ(error_of(negative), "in.xml: Kiln/Material/\"Density\" = -1: must be > 0");
+  Teuchos::ParameterList text;
+  text.set("Density", std::string("heavy"));
+  EXPECT_THAT(error_of(text), HasSubstr("Kiln/Material/\"Density\": expected type \"double\", "
+                                        "got type \"string\""));
+  Teuchos::ParameterList misspelled;
+  misspelled.sublist("Density").set("Valeu", 1.0);
+  EXPECT_THAT(error_of(misspelled), HasSubstr("Kiln/Material/Density/\"Valeu\": unknown parameter. "
+                                              "Did you mean \"Value\"?"));
+}

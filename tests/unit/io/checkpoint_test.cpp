@@ -136,6 +136,11 @@ TEST(Checkpoint, FingerprintNamesWhatDiffers)
   other.sublist("Thermal").set("Tag", std::string("hotter"));
   EXPECT_THAT(kiln::RunFingerprint::of(f.mesh, f.dofs.layout(), other).difference(f.fingerprint),
               HasSubstr("Kiln/Thermal differs from the checkpoint's"));
+  // Named materials (issue 31) are part of the problem too.
+  Teuchos::ParameterList steel = f.input;
+  steel.sublist("Materials").sublist("steel").set("Density", 7900.0);
+  EXPECT_THAT(kiln::RunFingerprint::of(f.mesh, f.dofs.layout(), steel).difference(f.fingerprint),
+              HasSubstr("Kiln/Materials differs from the checkpoint's"));
 }
 
 TEST(Checkpoint, ForeignDamagedAndOtherRunsAreRefusedOnEveryRank)

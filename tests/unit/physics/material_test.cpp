@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 using testing::HasSubstr;
 
@@ -91,11 +93,11 @@ TEST(Material, DefaultsOfTheValidListAreTheDefaultMaterial)
 {
   const Teuchos::ParameterList valid = kiln::Material::valid_parameters();
   const kiln::Material aluminium;
-  EXPECT_EQ(valid.get<double>("Young's Modulus"), aluminium.youngs_modulus());
-  EXPECT_EQ(valid.get<double>("Poisson's Ratio"), aluminium.poissons_ratio());
-  EXPECT_EQ(valid.get<double>("Lame Lambda"), aluminium.lame_lambda());
-  EXPECT_EQ(valid.get<double>("Shear Modulus"), aluminium.shear_modulus());
-  EXPECT_EQ(valid.get<double>("Thermal Expansion"), 2.2e-5);
+  EXPECT_EQ(valid.sublist("Young's Modulus").get<double>("Value"), aluminium.youngs_modulus());
+  EXPECT_EQ(valid.sublist("Poisson's Ratio").get<double>("Value"), aluminium.poissons_ratio());
+  EXPECT_EQ(valid.sublist("Lame Lambda").get<double>("Value"), aluminium.lame_lambda());
+  EXPECT_EQ(valid.sublist("Shear Modulus").get<double>("Value"), aluminium.shear_modulus());
+  EXPECT_EQ(valid.sublist("Thermal Expansion").get<double>("Value"), 2.2e-5);
   EXPECT_EQ(valid.get<double>("Reference Temperature"), 298.0);
 }
 
@@ -248,4 +250,153 @@ TEST(Material, ThermalExpansionAndReferenceTemperatureRanges)
   T_ref.set("Reference Temperature", 0.0);
   EXPECT_THAT(error_of(T_ref),
               HasSubstr("test.xml: Kiln/Material/\"Reference Temperature\" = 0: must be > 0"));
+}
+
+namespace
+{
+/// A property sublist of Type "Table".
+Teuchos::ParameterList property_table(const std::vector<double> &temperatures,
+                                      const std::vector<double> &values)
+{
+  Teuchos::ParameterList p;
+  p.set("Type", "Table");
+  p.set("Temperatures", kiln_test::values(temperatures));
+  p.set("Values", kiln_test::values(values));
+  return p;
+}
+
+/// A property sublist of Type "Expression" checked at 300 and 1000 K.
+Teuchos::ParameterList property_expression(const std::string &text)
+{
+  Teuchos::ParameterList p;
+  p.set("Type", "Expression");
+  p.set("Expression", text);
+  p.set("Temperatures", kiln_test::values({300.0, 1000.0}));
+  return p;
+}
+
+/// d/dT of `f` by central differences with step h [K].
+template <typename F> double central_difference(const F &f, const double T, const double h)
+{
+  return (f(T + h) - f(T - h)) / (2.0 * h);
+}
+} // namespace
+
+TEST(Material, TemperatureDependentElasticityFromENu)
+{
+  Teuchos::ParameterList user;
+  user.set("Young's Modulus", property_expression("2e11 - 8e7*(T - 300)"));
+  user.set("Poisson's Ratio", property_expression("0.28 + 1e-4*(T - 300)"));
+  const kiln::Material m = make(user);
+  EXPECT_EQ(m.temperature_dependent_properties(),
+            (std::vector<std::string>{"Young's Modulus", "Poisson's Ratio"}));
+  EXPECT_FALSE(m.is_constant());
+  for (const double T : {300.0, 650.0, 950.0})
+  {
+    const double E = 2e11 - 8e7 * (T - 300), nu = 0.28 + 1e-4 * (T - 300);
+    EXPECT_NEAR(m.youngs_modulus(T), E, 1e-12 * E);
+    EXPECT_NEAR(m.poissons_ratio(T), nu, 1e-14);
+    EXPECT_NEAR(m.lame_lambda(T), E * nu / ((1 + nu) * (1 - 2 * nu)), 1e-12 * E);
+    EXPECT_NEAR(m.shear_modulus(T), E / (2 * (1 + nu)), 1e-12 * E);
+    const auto lambda = [&m](const double t) { return m.lame_lambda(t); };
+    const auto G = [&m](const double t) { return m.shear_modulus(t); };
+    // The chain rule through (E, nu) against central differences (O(h^2) = 1e-8 relative).
+    EXPECT_NEAR(m.d_lame_lambda_d_T(T), central_difference(lambda, T, 0.1),
+                1e-6 * std::abs(m.d_lame_lambda_d_T(T)))
+        << T;
+    EXPECT_NEAR(m.d_shear_modulus_d_T(T), central_difference(G, T, 0.1),
+                1e-6 * std::abs(m.d_shear_modulus_d_T(T)))
+        << T;
+  }
+  EXPECT_THROW((void)m.lame_lambda(), std::logic_error);
+  EXPECT_THROW((void)m.youngs_modulus(), std::logic_error);
+  EXPECT_EQ(m.density(), 2.7e3); // constant ones still answer
+}
+
+TEST(Material, TemperatureDependentLameConstants)
+{
+  Teuchos::ParameterList user;
+  user.set("Lame Lambda", property_table({300, 900}, {6e10, 4e10}));
+  user.set("Shear Modulus", property_table({400, 800}, {3e10, 2e10}));
+  const kiln::Material m = make(user);
+  EXPECT_NEAR(m.lame_lambda(600.0), 5e10, 1e-3);
+  EXPECT_NEAR(m.d_lame_lambda_d_T(600.0), -2e10 / 600.0, 1e-3);
+  EXPECT_NEAR(m.shear_modulus(600.0), 2.5e10, 1e-3);
+  EXPECT_NEAR(m.d_shear_modulus_d_T(600.0), -2.5e7, 1e-6);
+  EXPECT_NEAR(m.poissons_ratio(600.0), 5e10 / (2 * 7.5e10), 1e-14);
+}
+
+TEST(Material, ThermalStrainIsTheSecantDefinition)
+{
+  // alpha(T) = 1e-5 + 2e-8 (T - 300), T_ref = 300 K. Secant: eps = alpha(T) (T - T_ref).
+  // The instantaneous definition would give the integral 1e-5 (T - 300) + 1e-8 (T - 300)^2.
+  Teuchos::ParameterList user;
+  user.set("Thermal Expansion", property_expression("1e-5 + 2e-8*(T - 300)"));
+  user.set("Reference Temperature", 300.0);
+  const kiln::Material m = make(user);
+  const double T = 800.0, d = T - 300.0;
+  const double secant = (1e-5 + 2e-8 * d) * d;          // 1e-2
+  const double instantaneous = 1e-5 * d + 1e-8 * d * d; // 7.5e-3
+  EXPECT_NEAR(m.thermal_strain(T), secant, 1e-15);
+  EXPECT_GT(std::abs(m.thermal_strain(T) - instantaneous), 1e-3);
+  EXPECT_NEAR(m.d_thermal_strain_d_T(T), 2e-8 * d + 1e-5 + 2e-8 * d, 1e-14);
+  const auto eps = [&m](const double t) { return m.thermal_strain(t); };
+  for (const double t : {250.0, 300.0, 555.0, 1000.0})
+    EXPECT_NEAR(m.d_thermal_strain_d_T(t), central_difference(eps, t, 0.01), 1e-12) << t;
+  EXPECT_EQ(m.thermal_strain(300.0), 0.0);
+}
+
+TEST(Material, HeatCapacityDerivative)
+{
+  Teuchos::ParameterList user;
+  user.set("Density", property_table({300, 900}, {7900, 7600}));
+  user.set("Specific Heat", property_expression("450 + 0.3*(T - 300)"));
+  const kiln::Material m = make(user);
+  const auto rho_c = [&m](const double t) { return m.heat_capacity(t); };
+  for (const double T : {350.0, 600.0, 850.0})
+  {
+    EXPECT_NEAR(m.heat_capacity(T), m.density(T) * m.specific_heat(T), 1e-6);
+    EXPECT_NEAR(m.d_heat_capacity_d_T(T), central_difference(rho_c, T, 0.01),
+                1e-6 * std::abs(m.d_heat_capacity_d_T(T)))
+        << T;
+  }
+  EXPECT_EQ(m.temperature_dependent_properties(),
+            (std::vector<std::string>{"Density", "Specific Heat"}));
+  EXPECT_THROW((void)m.heat_capacity(), std::logic_error);
+}
+
+TEST(Material, PropertyTablesOutOfRangeNameMaterialPropertyAndRange)
+{
+  Teuchos::ParameterList user;
+  user.set("Young's Modulus", property_table({300, 600}, {2e11, -1e9}));
+  user.set("Poisson's Ratio", 0.3);
+  EXPECT_EQ(error_of(user), "test.xml: Kiln/Material/Young's Modulus/\"Values\" entry 2 (at "
+                            "600 K) = -1e+09: must be > 0 at every temperature of the table");
+
+  Teuchos::ParameterList nu;
+  nu.set("Young's Modulus", 2e11);
+  nu.set("Poisson's Ratio", property_table({300, 600}, {0.3, 0.5}));
+  EXPECT_THAT(error_of(nu), HasSubstr("test.xml: Kiln/Material/\"Poisson's Ratio\" = 0.5 at T = "
+                                      "600 K: must be > -1 and < 0.5; 0.5 is an incompressible"));
+
+  // The bulk modulus is checked at the points of both tables: lambda + 2G/3 < 0 at 700 K.
+  Teuchos::ParameterList bulk;
+  bulk.set("Lame Lambda", property_table({300, 700}, {1e10, -3e10}));
+  bulk.set("Shear Modulus", property_table({300, 500}, {3e10, 3e10}));
+  EXPECT_THAT(error_of(bulk), HasSubstr("Kiln/Material/\"Lame Lambda\" = -3e+10 at T = 700 K: "
+                                        "gives the bulk modulus lambda + 2G/3 = -1e+10 Pa"));
+
+  Teuchos::ParameterList k;
+  k.set("Conductivity", property_expression("240 - 0.3*T"));
+  EXPECT_THAT(error_of(k), HasSubstr("test.xml: Kiln/Material/Conductivity/\"Expression\": = "
+                                     "\"240 - 0.3*T\" is -60 at T = 1000 K"));
+}
+
+TEST(Material, ConductivityAsAPlainNumber)
+{
+  Teuchos::ParameterList user;
+  user.set("Conductivity", 45.0);
+  const kiln::Material m = make(user);
+  EXPECT_EQ(m.conductivity().value(1000.0), 45.0);
+  EXPECT_TRUE(m.is_constant());
 }
