@@ -6,7 +6,8 @@ namespace kiln
 {
 namespace internal
 {
-std::string joined(const std::vector<std::string> &names)
+/// "a, b, c".
+std::string comma_separated(const std::vector<std::string> &names)
 {
   std::string all;
   for (const std::string &name : names)
@@ -31,7 +32,8 @@ make_quadrature_state(const std::vector<const ConstitutiveModel *> &models,
                 "a model names each of its state components");
     KILN_CHECK_INPUT(names.empty() || these == names, where,
                      "the models with state keep different components ("
-                         << internal::joined(names) << "; " << internal::joined(these)
+                         << internal::comma_separated(names) << "; "
+                         << internal::comma_separated(these)
                          << "): a run holds one kind of state at its quadrature points; give "
                             "every block with such a model the same model");
     names = these;
