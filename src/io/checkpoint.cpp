@@ -300,12 +300,28 @@ void check_ranges(const TimeStepper::State &state, const int output_steps)
 }
 
 /// Reads the checkpoint just written at `path` back (every checksum of its state checked) and
-/// compares it with what was written: an error if anything differs.
-void verify_checkpoint(const std::string &path, const double time,
-                       const std::vector<const std::vector<double> *> &states)
+/// compares it with what was written: an error if anything differs. `components`: the state
+/// at quadrature points, by name (none: the checkpoint has none).
+void verify_checkpoint(
+    const std::string &path, const double time,
+    const std::vector<const std::vector<double> *> &states,
+    const std::vector<std::pair<std::string, const std::vector<double> *>> &components)
 {
   const H5 file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
                 "reading the file back failed");
+  if (!components.empty())
+  {
+    const H5 values(H5Gopen2(file, "quadrature_state/components", H5P_DEFAULT), H5Gclose,
+                    "reading group quadrature_state/components back");
+    for (const auto &[name, written] : components)
+    {
+      const std::vector<double> read = read_array<double>(values, name, written->size());
+      if (!read.empty() &&
+          std::memcmp(read.data(), written->data(), read.size() * sizeof(double)) != 0)
+        throw std::runtime_error("dataset quadrature_state/components/" + name +
+                                 " read back differs from what was written");
+    }
+  }
   const H5 s(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "reading group state back");
   const char *const names[] = {"x", "x_1", "x_2"};
   for (std::size_t v = 0; v < states.size(); ++v)
@@ -691,7 +707,10 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
         throw std::runtime_error("the file's image" + in_parentheses(hdf5_failure_reason()));
       file.close("closing the file");
       write_file(tmp, image);
-      verify_checkpoint(tmp, state.time, {&x, &x_1, &x_2});
+      std::vector<std::pair<std::string, const std::vector<double> *>> written_components;
+      for (std::size_t k = 0; k < components.size(); ++k)
+        written_components.emplace_back(quadrature_state->names()[k], &components[k]);
+      verify_checkpoint(tmp, state.time, {&x, &x_1, &x_2}, written_components);
       std::filesystem::rename(tmp, path);
     }
     catch (const std::exception &e)

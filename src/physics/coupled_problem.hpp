@@ -86,7 +86,9 @@ public:
   /// The state at the quadrature points of the owned cells (make_quadrature_state), or null
   /// if no model has state (then nothing is kept, committed or written). The models that
   /// read and write it during the assembly are the kernels'; set at set-up, before the
-  /// first solve.
+  /// first solve. What step_accepted() commits is what the last assembly wrote: NOX's last
+  /// residual evaluation is at the solution it returns (up to the free-motion projection,
+  /// a rigid motion, which leaves the strains as they were).
   void set_quadrature_state(std::unique_ptr<QuadratureState> state)
   {
     quadrature_state_ = std::move(state);

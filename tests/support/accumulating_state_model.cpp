@@ -1,5 +1,6 @@
 #include "support/accumulating_state_model.hpp"
 
+#include <cstring>
 #include <limits>
 
 namespace kiln_test
@@ -28,6 +29,19 @@ void AccumulatingStateModel::evaluate(const kiln::PointInput &in, const double *
     out.stress[i] = in.strain[i];
     out.tangent[i][i] = 1.0;
   }
+}
+
+bool same_bits(const kiln::QuadratureState &a, const kiln::QuadratureState &b)
+{
+  if (a.n_points() != b.n_points() || a.n_state() != b.n_state() || a.cells() != b.cells())
+    return false;
+  const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(a.n_state());
+  for (int c = 0; c < a.n_cells(); ++c)
+    for (int q = 0; q < a.n_points(c); ++q)
+      if (std::memcmp(a.old(c, q), b.old(c, q), bytes) != 0 ||
+          std::memcmp(a.current(c, q), b.current(c, q), bytes) != 0)
+        return false;
+  return true;
 }
 
 StateDrivingProblem::StateDrivingProblem(Teuchos::RCP<kiln::TransientProblem> problem,

@@ -30,6 +30,9 @@ public:
                 kiln::PointResponse &out) const override;
 };
 
+/// Whether both copies of `a` and `b` hold the same bits at every point (and the same layout).
+bool same_bits(const kiln::QuadratureState &a, const kiln::QuadratureState &b);
+
 /// A TransientProblem that forwards everything to `problem` and, after each evaluation with a
 /// residual, evaluates `model` at every point of every cell of `state` (old -> current) with
 /// the input: eps_xx = 1e-3 (global cell + 1) + 1e-4 q, T = |x|_inf (the same on any number

@@ -10,6 +10,7 @@
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/gap_splitter.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "support/accumulating_state_model.hpp"
 #include "support/parallel.hpp"
 #include "support/parameter_lists.hpp"
 
@@ -354,19 +355,6 @@ kiln::QuadratureState cell_state(const std::vector<int> &owned,
   return s;
 }
 
-/// Whether both copies of `a` and `b` hold the same bits at every point.
-bool same_bits(const kiln::QuadratureState &a, const kiln::QuadratureState &b)
-{
-  if (a.n_points() != b.n_points() || a.n_state() != b.n_state() || a.cells() != b.cells())
-    return false;
-  for (int c = 0; c < a.n_cells(); ++c)
-    for (int q = 0; q < a.n_points(c); ++q)
-      if (std::memcmp(a.old(c, q), b.old(c, q), sizeof(double) * a.n_state()) != 0 ||
-          std::memcmp(a.current(c, q), b.current(c, q), sizeof(double) * a.n_state()) != 0)
-        return false;
-  return true;
-}
-
 /// The cells of the mesh all on one rank, and its unknowns there.
 struct OneRank
 {
@@ -396,9 +384,9 @@ TEST(Checkpoint, QuadratureStateReadBackBitForBit)
   const std::string path = f.folder + "/state.h5";
   kiln::write_checkpoint(path, f.state(), plain_info(f.mesh), f.fingerprint, *f.comm, &written);
   kiln::QuadratureState read = cell_state(f.dofs.owned_cells(), {"eqps", "back_stress_xx"}, false);
-  ASSERT_FALSE(same_bits(read, written));
+  ASSERT_FALSE(kiln_test::same_bits(read, written));
   kiln::read_checkpoint(path, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, &read);
-  EXPECT_TRUE(same_bits(read, written));
+  EXPECT_TRUE(kiln_test::same_bits(read, written));
   // Components are read by name, not by position.
   kiln::QuadratureState swapped =
       cell_state(f.dofs.owned_cells(), {"back_stress_xx", "eqps"}, false);
@@ -423,7 +411,7 @@ TEST(Checkpoint, QuadratureStateReadOnAnotherNumberOfRanks)
     std::iota(all.begin(), all.end(), 0);
     kiln::QuadratureState read = cell_state(all, {"eqps", "back_stress_xx"}, false);
     kiln::read_checkpoint(many_ranks, f.fingerprint, r.dofs.owned_dof_map(), *one, &read);
-    EXPECT_TRUE(same_bits(read, cell_state(all)));
+    EXPECT_TRUE(kiln_test::same_bits(read, cell_state(all)));
 
     // The state of the same values, written by one rank.
     kiln::TimeStepper::State s;
@@ -436,7 +424,7 @@ TEST(Checkpoint, QuadratureStateReadOnAnotherNumberOfRanks)
   f.comm->barrier();
   kiln::QuadratureState read = cell_state(f.dofs.owned_cells(), {"eqps", "back_stress_xx"}, false);
   kiln::read_checkpoint(one_rank, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, &read);
-  EXPECT_TRUE(same_bits(read, on_every_rank));
+  EXPECT_TRUE(kiln_test::same_bits(read, on_every_rank));
 }
 
 TEST(Checkpoint, QuadratureStateThatDiffersIsAnInputErrorOnEveryRank)

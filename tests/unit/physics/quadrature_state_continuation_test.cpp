@@ -107,18 +107,6 @@ struct AtStops final : TimeStepper::Observer
   std::function<void(const TimeStepper::State &)> at;
 };
 
-/// Whether both copies of `a` and `b` hold the same bits at every point.
-bool same_bits(const kiln::QuadratureState &a, const kiln::QuadratureState &b)
-{
-  if (a.n_points() != b.n_points() || a.n_state() != b.n_state() || a.cells() != b.cells())
-    return false;
-  for (int c = 0; c < a.n_cells(); ++c)
-    for (int q = 0; q < a.n_points(c); ++q)
-      if (std::memcmp(a.old(c, q), b.old(c, q), sizeof(double) * a.n_state()) != 0 ||
-          std::memcmp(a.current(c, q), b.current(c, q), sizeof(double) * a.n_state()) != 0)
-        return false;
-  return true;
-}
 } // namespace
 
 TEST(QuadratureStateContinuation, CommittedOncePerAcceptedStepAndContinuedBitForBit)
