@@ -426,7 +426,7 @@ Simulation::files_written(const std::string &checkpoint) const
 TimeStepper::State Simulation::resume()
 {
   Checkpoint c = read_checkpoint(restart_, RunFingerprint::of(mesh_, layout_, params_),
-                                 problem_->solution_map(), *comm_);
+                                 problem_->solution_map(), *comm_, problem_->quadrature_state());
   const int active = problem_->resume(c.state.time, *c.state.x);
   int saved_active = 0;
   for (const int a : c.info.active)

@@ -106,5 +106,10 @@ public:
   /// Called once a step ending at `time` is accepted with the state x (collective).
   /// Default: nothing.
   virtual void step_accepted(double /*time*/, const Vector & /*x*/) {}
+  /// Called once an attempted step is given up (its Newton solve failed or its error estimate
+  /// was too large; it is retried with a smaller step, or the run stops): what the problem
+  /// computed for it is forgotten, and the next attempt starts from the last accepted state
+  /// (collective). Default: nothing.
+  virtual void step_rejected() {}
 };
 } // namespace kiln

@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -299,12 +300,28 @@ void check_ranges(const TimeStepper::State &state, const int output_steps)
 }
 
 /// Reads the checkpoint just written at `path` back (every checksum of its state checked) and
-/// compares it with what was written: an error if anything differs.
-void verify_checkpoint(const std::string &path, const double time,
-                       const std::vector<const std::vector<double> *> &states)
+/// compares it with what was written: an error if anything differs. `components`: the state
+/// at quadrature points, by name (none: the checkpoint has none).
+void verify_checkpoint(
+    const std::string &path, const double time,
+    const std::vector<const std::vector<double> *> &states,
+    const std::vector<std::pair<std::string, const std::vector<double> *>> &components)
 {
   const H5 file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
                 "reading the file back failed");
+  if (!components.empty())
+  {
+    const H5 values(H5Gopen2(file, "quadrature_state/components", H5P_DEFAULT), H5Gclose,
+                    "reading group quadrature_state/components back");
+    for (const auto &[name, written] : components)
+    {
+      const std::vector<double> read = read_array<double>(values, name, written->size());
+      if (!read.empty() &&
+          std::memcmp(read.data(), written->data(), read.size() * sizeof(double)) != 0)
+        throw std::runtime_error("dataset quadrature_state/components/" + name +
+                                 " read back differs from what was written");
+    }
+  }
   const H5 s(H5Gopen2(file, "state", H5P_DEFAULT), H5Gclose, "reading group state back");
   const char *const names[] = {"x", "x_1", "x_2"};
   for (std::size_t v = 0; v < states.size(); ++v)
@@ -321,6 +338,172 @@ void verify_checkpoint(const std::string &path, const double time,
 }
 
 const char *const physics_blocks[] = {"Mesh", "Material", "Materials", "Thermal", "Mechanics"};
+
+/// The number of points of every cell of the mesh (`n_cells`), from every rank's owned ones,
+/// on every rank. Collective.
+std::vector<int> points_per_cell(const QuadratureState &qs, const int n_cells,
+                                 const Teuchos::Comm<int> &comm)
+{
+  std::vector<int> local(static_cast<std::size_t>(n_cells), 0), global(local.size(), 0);
+  for (int c = 0; c < qs.n_cells(); ++c)
+    local[static_cast<std::size_t>(qs.cells()[c])] = qs.n_points(c);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, n_cells, local.data(), global.data());
+  return global;
+}
+
+/// The first point of each cell in global cell order, and the number of all (the last entry).
+std::vector<GO> point_offsets(const std::vector<int> &points)
+{
+  std::vector<GO> offsets(points.size() + 1, 0);
+  for (std::size_t c = 0; c < points.size(); ++c)
+    offsets[c + 1] = offsets[c] + points[c];
+  return offsets;
+}
+
+/// Component by component, the committed state of every point on rank 0, in global cell and
+/// point order (empty elsewhere). Collective.
+std::vector<std::vector<double>>
+gather_quadrature_state(const QuadratureState &qs, const std::vector<int> &points,
+                        const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
+{
+  const std::vector<GO> offsets = point_offsets(points);
+  std::vector<GO> gids;
+  gids.reserve(static_cast<std::size_t>(qs.n_points()));
+  for (int c = 0; c < qs.n_cells(); ++c)
+    for (int q = 0; q < qs.n_points(c); ++q)
+      gids.push_back(offsets[static_cast<std::size_t>(qs.cells()[c])] + q);
+  const auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(offsets.back()),
+                                        Teuchos::ArrayView<const GO>(gids), 0, comm));
+  std::vector<Tpetra::Vector<>> components;
+  std::vector<const Tpetra::Vector<> *> pointers;
+  components.reserve(static_cast<std::size_t>(qs.n_state()));
+  for (int k = 0; k < qs.n_state(); ++k)
+  {
+    components.emplace_back(map);
+    const std::vector<double> values = qs.old_component(k);
+    auto target = components.back().getDataNonConst();
+    std::copy(values.begin(), values.end(), target.begin());
+  }
+  for (const auto &component : components)
+    pointers.push_back(&component);
+  return gather(pointers);
+}
+
+/// What a checkpoint holds of the state at quadrature points (read_checkpoint).
+struct SavedQuadratureState
+{
+  bool present = false;
+  std::vector<std::string> names;
+  std::vector<int> points; ///< per cell, global order
+  std::vector<std::vector<double>> components;
+};
+
+/// The group quadrature_state of `file`, if any (a mesh of `n_cells` cells); an error if it is
+/// damaged.
+SavedQuadratureState read_saved_quadrature_state(const hid_t file, const int n_cells)
+{
+  SavedQuadratureState saved;
+  if (H5Lexists(file, "quadrature_state", H5P_DEFAULT) <= 0)
+    return saved;
+  saved.present = true;
+  const H5 group(H5Gopen2(file, "quadrature_state", H5P_DEFAULT), H5Gclose,
+                 "group quadrature_state");
+  const int n = read_attribute<int>(group, "n_components");
+  if (n < 1 || n > 10000)
+    throw std::runtime_error("its attribute quadrature_state/n_components = " + std::to_string(n) +
+                             " is out of range: a damaged checkpoint");
+  saved.points = read_array<int>(group, "points_per_cell", static_cast<std::size_t>(n_cells));
+  std::size_t total = 0;
+  for (const int p : saved.points)
+  {
+    if (p < 0)
+      throw std::runtime_error("its dataset quadrature_state/points_per_cell holds a negative "
+                               "count: a damaged checkpoint");
+    total += static_cast<std::size_t>(p);
+  }
+  const H5 components(H5Gopen2(group, "components", H5P_DEFAULT), H5Gclose,
+                      "group quadrature_state/components");
+  for (int k = 0; k < n; ++k)
+  {
+    saved.names.push_back(read_string(group, "component_" + std::to_string(k), true));
+    saved.components.push_back(read_array<double>(components, saved.names.back(), total));
+    if (!all_finite({&saved.components.back()}))
+      throw std::runtime_error("its state at quadrature points (quadrature_state/components/" +
+                               saved.names.back() +
+                               ") holds values that are not finite numbers (NaN or Inf): a "
+                               "damaged checkpoint");
+  }
+  return saved;
+}
+
+/// The names of `names` that `others` lacks, joined ("a, b"), or "".
+std::string missing_from(const std::vector<std::string> &names,
+                         const std::vector<std::string> &others)
+{
+  std::string missing;
+  for (const std::string &name : names)
+    if (std::find(others.begin(), others.end(), name) == others.end())
+      missing += (missing.empty() ? "" : ", ") + name;
+  return missing;
+}
+
+/// `saved` (read from `path`, written by Kiln `version`) into `qs` (null: the run has no state),
+/// checked against it: InputErrors on every rank naming `path`. Collective.
+void restore_quadrature_state(const std::string &path, const std::string &version,
+                              const SavedQuadratureState &saved, QuadratureState *qs,
+                              const Teuchos::Comm<int> &comm)
+{
+  const std::vector<std::string> none;
+  const std::vector<std::string> &names = qs != nullptr ? qs->names() : none;
+  const std::string start_anew = "; continue it with the Kiln that wrote it (" + version +
+                                 "), or start this run anew (without --restart)";
+  check_collectively(comm, saved.present || qs == nullptr, path,
+                     "the checkpoint holds no state at the quadrature points, which this run's "
+                     "constitutive models need (components " +
+                         missing_from(names, {}) +
+                         "): it was written by a run whose models kept none" + start_anew);
+  check_collectively(comm, !saved.present || qs != nullptr, path,
+                     "the checkpoint holds state at the quadrature points (components " +
+                         missing_from(saved.names, {}) +
+                         ") that this run's constitutive models do not declare: the run would "
+                         "not continue as the one that wrote it" +
+                         start_anew);
+  if (qs == nullptr)
+    return;
+  const std::string lacking = missing_from(names, saved.names);
+  check_collectively(comm, lacking.empty(), path,
+                     "the checkpoint's state at the quadrature points lacks the components " +
+                         lacking + " that this run's constitutive models need" + start_anew);
+  const std::string extra = missing_from(saved.names, names);
+  check_collectively(comm, extra.empty(), path,
+                     "the checkpoint's state at the quadrature points has the components " + extra +
+                         " that this run's constitutive models do not declare" + start_anew);
+  const std::vector<GO> offsets = point_offsets(saved.points);
+  std::string differs;
+  for (int c = 0; c < qs->n_cells() && differs.empty(); ++c)
+  {
+    const int g = qs->cells()[c];
+    if (saved.points[static_cast<std::size_t>(g)] != qs->n_points(c))
+      differs = "cell " + std::to_string(g) + " (from 0) has " +
+                std::to_string(saved.points[static_cast<std::size_t>(g)]) +
+                " quadrature points with state in the checkpoint and " +
+                std::to_string(qs->n_points(c)) + " in this run: its element or its model differs" +
+                start_anew;
+  }
+  check_collectively(comm, differs.empty(), path, differs);
+  for (int k = 0; k < qs->n_state(); ++k)
+  {
+    const auto at = std::find(saved.names.begin(), saved.names.end(), qs->names()[k]);
+    const std::vector<double> &all =
+        saved.components[static_cast<std::size_t>(at - saved.names.begin())];
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(qs->n_points()));
+    for (int c = 0; c < qs->n_cells(); ++c)
+      for (int q = 0; q < qs->n_points(c); ++q)
+        values.push_back(all[static_cast<std::size_t>(offsets[qs->cells()[c]] + q)]);
+    qs->set_component(k, values);
+  }
+}
 } // namespace internal
 
 RunFingerprint RunFingerprint::of(const Mesh &mesh, const DofLayout &layout,
@@ -398,7 +581,7 @@ std::string RunFingerprint::digest() const
 
 void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                       const CheckpointInfo &info, const RunFingerprint &fingerprint,
-                      const Teuchos::Comm<int> &comm)
+                      const Teuchos::Comm<int> &comm, const QuadratureState *quadrature_state)
 {
   using namespace internal;
   // Gathered on rank 0 in global-id order (node-major: the file's rows are nodes).
@@ -410,10 +593,21 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
   int origin_length = 0;
   const std::vector<double> origins =
       gather_records(info.preconditioner_origin, comm, origin_length);
+  // The state at quadrature points, likewise, per component.
+  std::vector<int> points;
+  std::vector<std::vector<double>> components;
+  if (quadrature_state != nullptr)
+  {
+    points = points_per_cell(*quadrature_state, fingerprint.n_cells, comm);
+    components = gather_quadrature_state(*quadrature_state, points, state.x->getMap()->getComm());
+  }
+  std::vector<const std::vector<double> *> all_values = {&x, &x_1, &x_2};
+  for (const auto &component : components)
+    all_values.push_back(&component);
   std::ostringstream time;
   time << state.time;
   check_run_collectively(
-      comm, all_finite({&x, &x_1, &x_2}) && std::isfinite(state.time),
+      comm, all_finite(all_values) && std::isfinite(state.time),
       path + ": the state at t = " + time.str() +
           " s holds values that are not finite numbers (NaN or Inf); it is not written as a "
           "checkpoint, and the checkpoints written before are kept");
@@ -488,6 +682,21 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
           write_array(solver, "preconditioner_origin", origins,
                       static_cast<hsize_t>(origin_length));
         }
+        if (quadrature_state != nullptr)
+        {
+          const H5 q(H5Gcreate2(file, "quadrature_state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                     H5Gclose, "group quadrature_state");
+          write_attribute(q, "n_components", quadrature_state->n_state());
+          write_array(q, "points_per_cell", points, 1);
+          const H5 values(H5Gcreate2(q, "components", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                          H5Gclose, "group quadrature_state/components");
+          for (int k = 0; k < quadrature_state->n_state(); ++k)
+          {
+            const std::string &name = quadrature_state->names()[k];
+            write_attribute(q, "component_" + std::to_string(k), name);
+            write_array(values, name, components[static_cast<std::size_t>(k)], 1);
+          }
+        }
       }
       check(H5Fflush(file, H5F_SCOPE_LOCAL), "flushing the file");
       const ssize_t size = H5Fget_file_image(file, nullptr, 0);
@@ -498,7 +707,10 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
         throw std::runtime_error("the file's image" + in_parentheses(hdf5_failure_reason()));
       file.close("closing the file");
       write_file(tmp, image);
-      verify_checkpoint(tmp, state.time, {&x, &x_1, &x_2});
+      std::vector<std::pair<std::string, const std::vector<double> *>> written_components;
+      for (std::size_t k = 0; k < components.size(); ++k)
+        written_components.emplace_back(quadrature_state->names()[k], &components[k]);
+      verify_checkpoint(tmp, state.time, {&x, &x_1, &x_2}, written_components);
       std::filesystem::rename(tmp, path);
     }
     catch (const std::exception &e)
@@ -516,10 +728,12 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
 }
 
 Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
-                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm)
+                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm,
+                           QuadratureState *quadrature_state)
 {
   using namespace internal;
   Checkpoint c;
+  SavedQuadratureState saved_state;
   std::string error, difference;
   std::vector<double> x, x_1, x_2;
   // The failures below become one message; HDF5's own error stack stays quiet.
@@ -603,6 +817,7 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
       c.info.preconditioner_origin =
           read_row(solver, "preconditioner_origin", comm.getSize(), comm.getRank());
     }
+    saved_state = read_saved_quadrature_state(file, f.n_cells);
   }
   catch (const std::exception &e)
   {
@@ -616,6 +831,7 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
                      "cannot read the checkpoint: " + error +
                          ". Give a checkpoint written by Kiln/Checkpoint (a file NAME-NNNNNN.h5 "
                          "or NAME.h5 of its \"File Base\")");
+  restore_quadrature_state(path, c.info.kiln_version, saved_state, quadrature_state, comm);
   // The owned unknowns.
   TimeStepper::State &state = c.state;
   for (auto *target : {&state.x, &state.x_1, &state.x_2})

@@ -2,6 +2,7 @@
 /// Checkpoints: everything a run needs to continue exactly, in one HDF5 file
 /// (doc/user-guide.md, "Checkpoints and restart").
 #include "discretization/dof_manager.hpp"
+#include "discretization/quadrature_state.hpp"
 #include "mesh/mesh.hpp"
 #include "solvers/time_stepper.hpp"
 
@@ -59,9 +60,14 @@ struct CheckpointInfo
 /// rank 0 writes `path`.tmp and renames it when complete, so a crash never leaves a
 /// truncated checkpoint in place of a good one. Throws InputError (on every rank) naming
 /// the path if it cannot be written. Collective.
+/// With `quadrature_state` (null on every rank or on none), its committed state goes into the
+/// group quadrature_state: the points of every cell (points_per_cell, global cell order) and
+/// one dataset per component, named as the component, of every point in global cell order
+/// and point order, so that a run on any number of ranks reads it back.
 void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                       const CheckpointInfo &info, const RunFingerprint &fingerprint,
-                      const Teuchos::Comm<int> &comm);
+                      const Teuchos::Comm<int> &comm,
+                      const QuadratureState *quadrature_state = nullptr);
 
 /// A checkpoint read back.
 struct Checkpoint
@@ -75,8 +81,14 @@ struct Checkpoint
 /// number of ranks). Throws InputError naming `path` for a missing, damaged (truncated) or
 /// foreign file, another format version, or a checkpoint of another run (what differs, from
 /// RunFingerprint::difference). Collective.
+/// The state at quadrature points lands in `quadrature_state` (both copies; null on every rank
+/// or on none: a run whose models have no state), by component name. An InputError naming
+/// `path` if the checkpoint has none and the run needs it, lacks a component the run needs, has
+/// one the run's models do not declare (a run never drops state it cannot continue exactly),
+/// or gives a cell another number of points than this run.
 Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
-                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm);
+                           const Teuchos::RCP<const Map> &map, const Teuchos::Comm<int> &comm,
+                           QuadratureState *quadrature_state = nullptr);
 
 /// The version of the checkpoint format this Kiln writes and reads.
 inline constexpr int checkpoint_format_version = 1;

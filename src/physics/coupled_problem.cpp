@@ -341,12 +341,20 @@ void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSyst
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
+  if (quadrature_state_)
+    quadrature_state_->commit();
   if (interfaces_.empty())
     return;
   decide(x);
   for (const auto &strategy : interfaces_)
     strategy->step_accepted(time);
   check_open_gap(time);
+}
+
+void CoupledProblem::step_rejected()
+{
+  if (quadrature_state_)
+    quadrature_state_->restore();
 }
 
 void CoupledProblem::check_open_gap(const double time)

@@ -7,6 +7,7 @@
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
+#include "discretization/quadrature_state.hpp"
 #include "physics/heat/thermal_physics.hpp"
 #include "physics/mechanics/free_motions.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
@@ -21,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -76,7 +78,23 @@ public:
   /// The contact monitor sees the active set as after an evaluation.
   void jacobian_kept(const Vector &x) override;
   void set_time_derivative(double time, double a, const Vector &b) override;
+  /// Commits the quadrature-point state (QuadratureState::commit), then the interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
+  /// Restores the quadrature-point state (QuadratureState::restore).
+  void step_rejected() override;
+
+  /// The state at the quadrature points of the owned cells (make_quadrature_state), or null
+  /// if no model has state (then nothing is kept, committed or written). The models that
+  /// read and write it during the assembly are the kernels'; set at set-up, before the
+  /// first solve. What step_accepted() commits is what the last assembly wrote: NOX's last
+  /// residual evaluation is at the solution it returns (up to the free-motion projection,
+  /// a rigid motion, which leaves the strains as they were).
+  void set_quadrature_state(std::unique_ptr<QuadratureState> state)
+  {
+    quadrature_state_ = std::move(state);
+  }
+  QuadratureState *quadrature_state() { return quadrature_state_.get(); }
+  const QuadratureState *quadrature_state() const { return quadrature_state_.get(); }
 
   /// Log lines (active-set changes, the gap closing or opening) go to `out`.
   void set_log(Teuchos::RCP<Teuchos::FancyOStream> out);
@@ -166,5 +184,6 @@ private:
   std::unique_ptr<FreeMotions> free_;                            ///< with mechanics
   Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
+  std::unique_ptr<QuadratureState> quadrature_state_; ///< null: no model with state
 };
 } // namespace kiln

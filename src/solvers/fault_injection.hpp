@@ -70,6 +70,7 @@ public:
     return problem_->time_error_mask();
   }
   void step_accepted(double time, const Vector &x) override { problem_->step_accepted(time, x); }
+  void step_rejected() override { problem_->step_rejected(); }
 
   /// Residual evaluations corrupted so far (on every rank alike).
   int n_faults() const { return faults_; }

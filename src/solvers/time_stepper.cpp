@@ -355,6 +355,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
 
   if (!r.converged)
   {
+    problem.step_rejected();
     ++state.statistics.newton_failures;
     state.newton_failed = true;
     state.next_step = h * step_reduction_;
@@ -394,6 +395,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
                                    problem.time_error_mask().get());
     if (error > 1.0)
     {
+      problem.step_rejected();
       ++state.statistics.error_rejections;
       state.next_step = h * std::max(0.2, 0.9 * std::pow(error, -1.0 / (order + 1)));
       *out_ << "  step from t = " << seconds(t) << " with dt = " << seconds(h)

@@ -10,6 +10,7 @@
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/gap_splitter.hpp"
 #include "mesh/metis_partitioner.hpp"
+#include "support/accumulating_state_model.hpp"
 #include "support/parallel.hpp"
 #include "support/parameter_lists.hpp"
 
@@ -19,9 +20,11 @@
 #include <hdf5.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numeric>
 
 using testing::AllOf;
 using testing::HasSubstr;
@@ -334,4 +337,137 @@ TEST(Checkpoint, UnwritableFolderIsAWriteError)
                                     "(No such file or directory); nothing was put in its place"));
   }
   f.comm->barrier();
+}
+
+namespace
+{
+/// A state at the quadrature points of `owned` (global cells) whose values depend on the cell
+/// and the point alone: cell c has 1 + c % 3 points, every fifth none (a stateless model).
+kiln::QuadratureState cell_state(const std::vector<int> &owned,
+                                 const std::vector<std::string> &names = {"eqps", "back_stress_xx"},
+                                 const bool values = true)
+{
+  std::vector<int> points;
+  for (const int c : owned)
+    points.push_back(c % 5 == 0 ? 0 : 1 + c % 3);
+  kiln::QuadratureState s(names, owned, points);
+  if (values)
+    for (int c = 0; c < s.n_cells(); ++c)
+      for (int q = 0; q < s.n_points(c); ++q)
+        for (int k = 0; k < s.n_state(); ++k)
+          s.current(c, q)[k] = std::sin(1.0 + owned[c]) * (k + 1) + 0.25 * q;
+  s.commit();
+  return s;
+}
+
+/// The cells of the mesh all on one rank, and its unknowns there.
+struct OneRank
+{
+  OneRank(const kiln::Mesh &mesh, const Teuchos::RCP<const Teuchos::Comm<int>> &one)
+      : comm(one),
+        dofs(mesh, std::vector<int>(mesh.n_cells(), 0), one, kiln::DofLayout{true, true, true})
+  {
+  }
+  Teuchos::RCP<const Teuchos::Comm<int>> comm;
+  kiln::DofManager dofs;
+};
+
+/// A checkpoint's info with the contact state of the mesh's gap pairs (all open).
+kiln::CheckpointInfo plain_info(const kiln::Mesh &mesh)
+{
+  kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}};
+  info.active.assign(mesh.gap_pairs.size(), 0);
+  info.traction.assign(mesh.gap_pairs.size(), 0.0);
+  return info;
+}
+} // namespace
+
+TEST(Checkpoint, QuadratureStateReadBackBitForBit)
+{
+  Fixture f;
+  const kiln::QuadratureState written = cell_state(f.dofs.owned_cells());
+  const std::string path = f.folder + "/state.h5";
+  kiln::write_checkpoint(path, f.state(), plain_info(f.mesh), f.fingerprint, *f.comm, &written);
+  kiln::QuadratureState read = cell_state(f.dofs.owned_cells(), {"eqps", "back_stress_xx"}, false);
+  ASSERT_FALSE(kiln_test::same_bits(read, written));
+  kiln::read_checkpoint(path, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, &read);
+  EXPECT_TRUE(kiln_test::same_bits(read, written));
+  // Components are read by name, not by position.
+  kiln::QuadratureState swapped =
+      cell_state(f.dofs.owned_cells(), {"back_stress_xx", "eqps"}, false);
+  kiln::read_checkpoint(path, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, &swapped);
+  EXPECT_EQ(swapped.old_component(0), written.old_component(1));
+  EXPECT_EQ(swapped.old_component(1), written.old_component(0));
+}
+
+TEST(Checkpoint, QuadratureStateReadOnAnotherNumberOfRanks)
+{
+  // Written on every rank, read on rank 0 alone; written on rank 0 alone, read on every rank.
+  Fixture f;
+  const Teuchos::RCP<const Teuchos::Comm<int>> one = f.comm->split(f.comm->getRank(), 0);
+  const std::string many_ranks = f.folder + "/many.h5", one_rank = f.folder + "/one.h5";
+  const kiln::QuadratureState on_every_rank = cell_state(f.dofs.owned_cells());
+  kiln::write_checkpoint(many_ranks, f.state(), plain_info(f.mesh), f.fingerprint, *f.comm,
+                         &on_every_rank);
+  if (f.comm->getRank() == 0)
+  {
+    const OneRank r(f.mesh, one);
+    std::vector<int> all(f.mesh.n_cells());
+    std::iota(all.begin(), all.end(), 0);
+    kiln::QuadratureState read = cell_state(all, {"eqps", "back_stress_xx"}, false);
+    kiln::read_checkpoint(many_ranks, f.fingerprint, r.dofs.owned_dof_map(), *one, &read);
+    EXPECT_TRUE(kiln_test::same_bits(read, cell_state(all)));
+
+    // The state of the same values, written by one rank.
+    kiln::TimeStepper::State s;
+    s.x = Teuchos::rcp(new Tpetra::Vector<>(r.dofs.owned_dof_map()));
+    s.x_1 = Teuchos::rcp(new Tpetra::Vector<>(r.dofs.owned_dof_map()));
+    s.x_2 = Teuchos::rcp(new Tpetra::Vector<>(r.dofs.owned_dof_map()));
+    const kiln::QuadratureState on_one_rank = cell_state(all);
+    kiln::write_checkpoint(one_rank, s, plain_info(f.mesh), f.fingerprint, *one, &on_one_rank);
+  }
+  f.comm->barrier();
+  kiln::QuadratureState read = cell_state(f.dofs.owned_cells(), {"eqps", "back_stress_xx"}, false);
+  kiln::read_checkpoint(one_rank, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, &read);
+  EXPECT_TRUE(kiln_test::same_bits(read, on_every_rank));
+}
+
+TEST(Checkpoint, QuadratureStateThatDiffersIsAnInputErrorOnEveryRank)
+{
+  Fixture f;
+  const auto &owned = f.dofs.owned_cells();
+  const std::string with = f.folder + "/with.h5", without = f.folder + "/without.h5";
+  const kiln::QuadratureState written = cell_state(owned);
+  kiln::write_checkpoint(with, f.state(), plain_info(f.mesh), f.fingerprint, *f.comm, &written);
+  kiln::write_checkpoint(without, f.state(), plain_info(f.mesh), f.fingerprint, *f.comm);
+  const auto message = [&](const std::string &file, kiln::QuadratureState *state)
+  {
+    return kiln_test::input_error_message(
+        [&]
+        { kiln::read_checkpoint(file, f.fingerprint, f.dofs.owned_dof_map(), *f.comm, state); });
+  };
+  kiln::QuadratureState needed = cell_state(owned);
+  EXPECT_THAT(message(without, &needed),
+              AllOf(HasSubstr(without + ": the checkpoint holds no state at the quadrature "
+                                        "points, which this run's constitutive models need "
+                                        "(components eqps, back_stress_xx)"),
+                    HasSubstr("start this run anew (without --restart)")));
+  EXPECT_THAT(message(with, nullptr),
+              HasSubstr(with + ": the checkpoint holds state at the quadrature points "
+                               "(components eqps, back_stress_xx) that this run's constitutive "
+                               "models do not declare"));
+  kiln::QuadratureState fewer = cell_state(owned, {"eqps"});
+  EXPECT_THAT(message(with, &fewer),
+              HasSubstr("has the components back_stress_xx that this run's constitutive models "
+                        "do not declare"));
+  kiln::QuadratureState more = cell_state(owned, {"eqps", "back_stress_xx", "hardening"});
+  EXPECT_THAT(message(with, &more),
+              HasSubstr("lacks the components hardening that this run's constitutive models need"));
+  // Eight points in every cell (another element or quadrature).
+  kiln::QuadratureState eight({"eqps", "back_stress_xx"}, owned, std::vector<int>(owned.size(), 8));
+  EXPECT_THAT(message(with, &eight),
+              AllOf(HasSubstr("quadrature points with state in the checkpoint and 8 in this run"),
+                    HasSubstr("cell ")));
+  // Without state on either side, nothing changes.
+  EXPECT_NO_THROW(kiln::read_checkpoint(without, f.fingerprint, f.dofs.owned_dof_map(), *f.comm));
 }

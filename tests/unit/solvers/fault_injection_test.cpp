@@ -51,8 +51,12 @@ public:
       Tpetra::deep_copy(*f, x);
     ++evaluations_;
   }
+  void step_accepted(double, const Vector &) override { ++accepted_; }
+  void step_rejected() override { ++rejected_; }
   double time_ = -1.0;
   int evaluations_ = 0;
+  int accepted_ = 0;
+  int rejected_ = 0;
 
 private:
   RCP<const Map> map_;
@@ -114,6 +118,17 @@ TEST_F(FaultInjectionTest, NanInTheChosenEvaluationsOnTheChosenRankOnly)
   EXPECT_FALSE(nan_at(faulty, 2.0)); // two evaluations only
   EXPECT_EQ(faulty.n_faults(), 2);
   EXPECT_EQ(problem->evaluations_, 5);
+}
+
+TEST_F(FaultInjectionTest, StepsAcceptedAndRejectedAreForwarded)
+{
+  // The wrapped problem commits or restores its state at quadrature points there.
+  FaultInjection faulty(problem, debug("NaN In Residual", 0, 0.0, 1), "in.xml: Kiln/Debug");
+  faulty.step_rejected();
+  faulty.step_accepted(1.0, x);
+  faulty.step_rejected();
+  EXPECT_EQ(problem->rejected_, 2);
+  EXPECT_EQ(problem->accepted_, 1);
 }
 
 TEST_F(FaultInjectionTest, MinusOneEvaluationsIsAll)

@@ -2,7 +2,8 @@
 // Jacobian) the steps land exactly on the output times, the error control meets tighter
 // tolerances with more steps and repeats steps it rejects, and a failed Newton solve is
 // repeated with a smaller step; the message of a failed Newton solve says what happened and
-// what to try, not "the boundary conditions".
+// what to try, not "the boundary conditions"; the problem is told of each accepted and each
+// rejected step (step_accepted, step_rejected).
 // KILN_TEST_NP: 1 2
 #include "base/errors.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -67,6 +68,11 @@ public:
     }
   }
 
+  void step_accepted(double, const Vector &) override { ++accepted; }
+  void step_rejected() override { ++rejected; }
+  int accepted = 0; ///< step_accepted() calls
+  int rejected = 0; ///< step_rejected() calls
+
 private:
   double lambda_;
   double max_step_;
@@ -81,6 +87,8 @@ struct Outcome
   TimeStepper::Statistics stats;
   std::vector<double> times; ///< seen by the output function
   double error = 0.0;        ///< max |y - exp(-lambda t)| at the last output time
+  int accepted = 0;          ///< the problem told of accepted steps
+  int rejected = 0;          ///< and of rejected ones
 };
 
 Outcome run(const Teuchos::ParameterList &stepping, const std::vector<double> &output_times,
@@ -106,6 +114,8 @@ Outcome run(const Teuchos::ParameterList &stepping, const std::vector<double> &o
   exact.putScalar(std::exp(-lambda * output_times.back()));
   exact.update(1.0, x, -1.0);
   r.error = exact.normInf();
+  r.accepted = problem->accepted;
+  r.rejected = problem->rejected;
   return r;
 }
 
@@ -156,6 +166,9 @@ TEST(TimeStepper, RejectsStepsTheErrorEstimateFindsTooLong)
   const Outcome r = run(stepping("BDF2", 0.5, 0.5, true, 1e-4), {3.0});
   EXPECT_GT(r.stats.error_rejections, 0);
   EXPECT_EQ(r.times, std::vector<double>{3.0});
+  // The problem is told of every step: accepted, or rejected (its state restored).
+  EXPECT_EQ(r.rejected, r.stats.error_rejections);
+  EXPECT_EQ(r.accepted, r.stats.steps);
 }
 
 TEST(TimeStepper, FailedNewtonSolveIsRepeatedWithASmallerStep)
@@ -167,6 +180,8 @@ TEST(TimeStepper, FailedNewtonSolveIsRepeatedWithASmallerStep)
   // again and is repeated shorter, so the run goes on to the end.
   EXPECT_GE(r.stats.newton_failures, 1);
   EXPECT_GT(r.stats.steps, r.stats.newton_failures);
+  EXPECT_EQ(r.rejected, r.stats.newton_failures);
+  EXPECT_EQ(r.accepted, r.stats.steps);
   EXPECT_EQ(r.times, std::vector<double>{2.0});
   EXPECT_LT(r.error, 0.1);
   // The step after one that followed a failure does not grow: each failure is followed by
