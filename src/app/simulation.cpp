@@ -232,6 +232,21 @@ void Simulation::check()
                               << " s; remove it or add a later time to Kiln/Output/\"Times\"");
 }
 
+namespace
+{
+/// True if `path` names Exodus results (BASE.exo), else they are HDF5.
+bool is_exodus(const std::string &path)
+{
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".exo") == 0;
+}
+
+/// The summary of the HDF5 or Exodus results file `path`.
+ResultsSummary summary_of_results(const std::string &path)
+{
+  return is_exodus(path) ? exodus_results_summary(path) : results_summary(path);
+}
+} // namespace
+
 Simulation::Ending Simulation::run()
 {
   check();
@@ -439,15 +454,15 @@ std::string Simulation::earlier_results_file()
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
   // name), else BASE.h5; with Exodus output only, the same of BASE.exo.
   const std::string base = outputs_->file_base();
-  const bool hdf5 = outputs_->writes_hdf5();
-  const std::string extension = hdf5 ? ".h5" : ".exo";
+  const std::string extension = outputs_->writes_hdf5() ? ".h5" : ".exo";
+  const std::string complete = base + extension;
   const bool cut_off = std::filesystem::exists(base + ".running" + extension);
-  if (hdf5 && (cut_off || std::filesystem::exists(base + ".h5")))
-    check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
+  if (cut_off || std::filesystem::exists(complete))
+    check_same_run(cut_off ? base + ".running" + extension : complete);
   // The complete results of the run continued stay until this run has passed them.
-  if (hdf5 && std::filesystem::exists(base + ".h5"))
+  if (std::filesystem::exists(complete))
   {
-    const ResultsSummary earlier = results_summary(base + ".h5");
+    const ResultsSummary earlier = summary_of_results(complete);
     if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
       kept_results_end_ = earlier.end_time;
   }
@@ -471,7 +486,7 @@ std::string Simulation::earlier_results_file()
 void Simulation::check_same_run(const std::string &results) const
 {
   // Every rank reads the attribute of the same file: the check gives one answer.
-  const std::string theirs = results_summary(results).run_fingerprint;
+  const std::string theirs = summary_of_results(results).run_fingerprint;
   const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
   KILN_CHECK_INPUT(theirs == ours, results,
                    (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
@@ -493,9 +508,9 @@ int Simulation::continue_results(const std::string &source, const double time)
     writers.push_back(w.get());
   const ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(),
                         dofs_->owned_cells()};
-  const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
-  const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
-                       : replay_results(source, time, rows, writers, *comm_);
+  const int n = is_exodus(source)
+                    ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
+                    : replay_results(source, time, rows, writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
         << " continue in " << outputs_->results_files(false) << "\n";
   if (n != restart_output_steps_)

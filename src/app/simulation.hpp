@@ -97,8 +97,9 @@ private:
   /// The "key: value" lines of the files written, for the summary.
   std::vector<std::pair<std::string, std::string>>
   files_written(const std::string &checkpoint) const;
-  /// The HDF5 results of the run a restart continues, or "" if there are none; notes the end
-  /// of a BASE.h5 of the same run, kept until this run passes it.
+  /// The results (HDF5, or Exodus with Exodus output only) of the run a restart continues, or
+  /// "" if there are none; notes the end of a BASE.h5 (BASE.exo) of the same run, kept until
+  /// this run passes it.
   std::string earlier_results_file();
   /// Refuses (InputError naming both files) the earlier `results` if their run fingerprint is
   /// not this run's, the checkpoint's: a restart appends only to its own run's results.
@@ -124,7 +125,8 @@ private:
   std::string mesh_file_;
   std::string restart_;          ///< the checkpoint to continue from, or ""
   int restart_output_steps_ = 0; ///< the output steps written before the checkpoint
-  /// The last output time of the continued run's BASE.h5, kept until this run passes it [s].
+  /// The last output time of the continued run's BASE.h5 (BASE.exo), kept until this run
+  /// passes it [s].
   double kept_results_end_ = -std::numeric_limits<double>::infinity();
   std::string results_aside_; ///< this run's results files, if not under BASE
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

@@ -14,6 +14,8 @@
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
 #   restart_fails  a restart that fails before it passes the earlier results keeps them whole
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
+#   exodus_fingerprint  fingerprint with Exodus output only: the .exo of another run is refused
+#   exodus_restart_fails  restart_fails with Exodus output only: the earlier .exo kept whole
 #   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 #   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
@@ -63,6 +65,9 @@ check_refused() { # DECK CHECKPOINT MESSAGE WHAT: the restart is refused (exit 1
   [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
   grep -q "$3" run.log || { cat run.log; fail "no message $4"; }
   [ "$before" = "$(folder_state)" ] || fail "the results folder changed"
+}
+exo_steps() { # FILE.exo: its number of output steps
+  "${PYTHON:-/usr/bin/python3}" -c "import sys; from scipy.io import netcdf_file; print(len(netcdf_file(sys.argv[1], 'r', mmap=False).variables['time_whole'][:]))" "$1"
 }
 restart_from() { # CHECKPOINT STEP: it is readable, and a restart from it completes
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart "$1" > restart.log 2>&1 ||
@@ -230,6 +235,48 @@ exodus_restart)
     { cat run.log; fail "the restart did not continue the .exo"; }
   "${PYTHON:-/usr/bin/python3}" "$here/same_exodus.py" whole.exo results/exodus_only.exo || fail "the continued .exo differs from the whole run's"
   echo "disk_full.sh $case: the restart continued the .exo series, equal to the whole run's"
+  exit 0
+  ;;
+exodus_fingerprint)
+  # fingerprint with Exodus output only: run B (another initial temperature, the same File
+  # Base) replaces results/exodus_only.exo; A's restart must not continue B's series.
+  deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "run A"; }
+  cp results/exodus_only.checkpoint-000001.h5 a1.h5
+  mkdir b # b/exodus_only.xml: the default File Base, results/exodus_only, as A's
+  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
+    "$deck" > b/exodus_only.xml
+  cmp -s "$deck" b/exodus_only.xml && fail "could not change the initial temperature"
+  "$mpiexec" -np "$np" "$kiln" b/exodus_only.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
+  check_refused "$deck" a1.h5 \
+    "kiln: error: results/exodus_only.exo: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a1.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
+    "naming both files"
+  "$mpiexec" -np "$np" "$kiln" b/exodus_only.xml --restart results/exodus_only.checkpoint-000001.h5 > same.log 2>&1 ||
+    { cat same.log; fail "the restart of the run that wrote the results"; }
+  grep -q "results: the 2 output steps up to t = 1 s of results/exodus_only.exo continue" same.log ||
+    { cat same.log; fail "B's restart did not continue B's results"; }
+  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
+  exit 0
+  ;;
+exodus_restart_fails)
+  # restart_fails with Exodus output only: the complete run (0..3 s), then a restart from step 1
+  # that fails at 3 s (its last good state, 2 s, is written): results/exodus_only.exo stays
+  # whole, the restart's results go beside it, and a restart from its checkpoint completes.
+  deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  before=$(md5sum results/exodus_only.exo)
+  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="3"/>\n  </ParameterList>\n  &|' \
+    "$deck" > exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" exodus_only.xml --restart results/exodus_only.checkpoint-000001.h5 > run.log 2>&1; rc=$?
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  grep -q "results: results/exodus_only.exo of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
+    { cat run.log; fail "no message keeping the earlier results"; }
+  [ "$before" = "$(md5sum results/exodus_only.exo)" ] || fail "the earlier results changed"
+  [ "$(exo_steps results/exodus_only.restarted.exo)" = 3 ] || fail "the restart's results do not hold 0..2 s"
+  "$mpiexec" -np "$np" "$kiln" "$deck" --restart results/exodus_only.checkpoint.h5 > again.log 2>&1 ||
+    { cat again.log; fail "the restart from the failed run's checkpoint"; }
+  [ "$(exo_steps results/exodus_only.exo)" = 4 ] || fail "the completed results do not hold 0..3 s"
+  echo "disk_full.sh $case: the earlier .exo kept whole; the restart's beside it; the series completed"
   exit 0
   ;;
 *) fail "unknown case" ;;
