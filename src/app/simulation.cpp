@@ -319,7 +319,7 @@ Simulation::Ending Simulation::run()
     const std::string path = observer.checkpoint(state);
     std::ostringstream when;
     when << "stopped by an error at t = " << state.time << " s";
-    finish_results(when.str() + ": " + e.what(), state.time);
+    finish_results(when.str() + ": " + e.what(), state.time, history);
     progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
           << outputs_->results_files(false) << " and " << path << "\n";
@@ -332,7 +332,7 @@ Simulation::Ending Simulation::run()
     std::ostringstream when;
     when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
          << " s";
-    finish_results(when.str() + "; continued by kiln --restart " + path, state.time);
+    finish_results(when.str() + "; continued by kiln --restart " + path, state.time, history);
     progress.summary(when.str(), state, files_written(path), *comm_);
     *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
           << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
@@ -340,7 +340,7 @@ Simulation::Ending Simulation::run()
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
-  finish_results("complete", state.time);
+  finish_results("complete", state.time, history);
   progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
   return Ending::finished;
 }
@@ -365,9 +365,17 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
 {
   const MPI_Comm mpi_comm =
       *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  // A restart writes its history beside an earlier one it would shorten (finish_results()).
+  const std::string running = outputs_->file_base() + ".running.history.csv";
   if (restart_.empty())
+  {
+    // A new run: the history of a restart cut off before (of the results it replaces) goes.
+    std::error_code ignored;
+    if (comm_->getRank() == 0)
+      std::filesystem::remove(running, ignored);
     return HistoryCsv(mpi_comm, outputs_->history_path());
-  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps);
+  }
+  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps, running);
   if (!history.warning().empty())
     *out_ << "warning: " << history.warning() << "\n";
   for (const auto &row : history.kept_rows())
@@ -412,7 +420,7 @@ Simulation::files_written(const std::string &checkpoint) const
 {
   std::vector<std::pair<std::string, std::string>> files = {
       {"results", results_aside_.empty() ? outputs_->results_files() : results_aside_},
-      {"history", outputs_->history_path()}};
+      {"history", history_file_.empty() ? outputs_->history_path() : history_file_}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
     const int n = gap_tables_->next_step() - first_gap_step_;
@@ -519,12 +527,13 @@ int Simulation::continue_results(const std::string &source, const double time)
   return n;
 }
 
-void Simulation::finish_results(const std::string &status, const double time)
+void Simulation::finish_results(const std::string &status, const double time, HistoryCsv &history)
 {
-  if (time < kept_results_end_ * (1.0 - 1e-12) - 1e-12)
+  const double kept_end = std::max(kept_results_end_, history.kept_end());
+  if (time < kept_end * (1.0 - 1e-12) - 1e-12)
   {
-    // A restart that stopped before it passed the results of the run it continued: those
-    // stay whole under BASE, and this run's go beside them.
+    // A restart that stopped before it passed the results (or the history) of the run it
+    // continued: those stay whole under BASE, and this run's go beside them.
     const std::string base = outputs_->file_base();
     const std::string aside = base + ".restarted";
     results_aside_ = outputs_->results_files();
@@ -533,11 +542,19 @@ void Simulation::finish_results(const std::string &status, const double time)
       results_aside_.replace(at, base.size(), aside);
     for (const auto &writer : writers_)
       writer->set_final_base(aside);
+    const bool history_aside = history.path() != outputs_->history_path();
+    if (history_aside)
+      history.finish(aside + ".history.csv");
     *out_ << "results: " << outputs_->results_files(false)
-          << " of the run continued (to t = " << kept_results_end_
+          << (history_aside ? " and " + outputs_->history_path() : std::string())
+          << " of the run continued (to t = " << kept_end
           << " s) are kept whole, as this run stopped at t = " << time
-          << " s, before it passed them; this run's results are in " << results_aside_ << "\n";
+          << " s, before it passed them; this run's results are in " << results_aside_
+          << (history_aside ? ", its history in " + history.path() : std::string()) << "\n";
   }
+  else
+    history.finish(outputs_->history_path());
+  history_file_ = history.path();
   for (const auto &writer : writers_)
     writer->finish(status);
 }

@@ -107,10 +107,10 @@ private:
   /// The earlier run's output steps in `source` up to `time` into this run's results;
   /// returns their number.
   int continue_results(const std::string &source, double time);
-  /// Gives the results files their final names, recording `status`. The earlier run's
-  /// results are kept if this run, at `time` [s], has not passed them (the new ones then get
-  /// the base BASE.restarted).
-  void finish_results(const std::string &status, double time);
+  /// Gives the results files and the `history` their final names, recording `status`. The
+  /// earlier run's results and history are kept if this run, at `time` [s], has not passed
+  /// them both (the new ones then get the base BASE.restarted).
+  void finish_results(const std::string &status, double time, HistoryCsv &history);
   /// The results writers of Output/"Format", the gap tables (their first output step
   /// `first_gap_step`) and the field output.
   void open_results(int first_gap_step);
@@ -129,6 +129,7 @@ private:
   /// passes it [s].
   double kept_results_end_ = -std::numeric_limits<double>::infinity();
   std::string results_aside_; ///< this run's results files, if not under BASE
+  std::string history_file_;  ///< this run's history as finished, or "" before
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Mesh mesh_;

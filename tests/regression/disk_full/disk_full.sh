@@ -12,7 +12,8 @@
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
-#   restart_fails  a restart that fails before it passes the earlier results keeps them whole
+#   restart_fails  a restart that fails before it passes the earlier results keeps them (and
+#                the history CSV) whole
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
 #   exodus_fingerprint  fingerprint with Exodus output only: the .exo of another run is refused
 #   exodus_restart_fails  restart_fails with Exodus output only: the earlier .exo kept whole
@@ -207,20 +208,26 @@ restart_fails)
   # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
   # the restart's results go beside it, and a restart from its checkpoint completes the series.
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(md5sum results/steps.h5 results/steps.xmf)
+  before=$(md5sum results/steps.h5 results/steps.xmf results/steps.history.csv)
   sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="5"/>\n  </ParameterList>\n  &|' \
     "$here/steps.xml" > steps.xml
   "$mpiexec" -np "$np" "$kiln" steps.xml --restart results/steps.checkpoint-000003.h5 > run.log 2>&1; rc=$?
   [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
-  grep -q "results: results/steps.h5 of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf" run.log ||
+  grep -q "results: results/steps.h5 and results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
-  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf)" ] || fail "the earlier results changed"
+  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf results/steps.history.csv)" ] || fail "the earlier results or history changed"
   [ "$(h5ls results/steps.restarted.h5/steps | wc -l)" = 5 ] || { h5ls results/steps.restarted.h5/steps; fail "the restart's results do not hold 0..4 s"; }
   grep -q 'steps.restarted.h5:/steps' results/steps.restarted.xmf || fail "the restart's index does not name its file"
+  [ "$(cut -d, -f1 results/steps.restarted.history.csv | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 " ] ||
+    { cat results/steps.restarted.history.csv; fail "the restart's history does not hold steps 0..4"; }
+  grep -q "history: results/steps.restarted.history.csv" run.log || { cat run.log; fail "the summary does not name the restart's history"; }
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > again.log 2>&1 ||
     { cat again.log; fail "the restart from the failed run's checkpoint"; }
   [ "$(h5ls results/steps.h5/steps | wc -l)" = 7 ] || { h5ls results/steps.h5/steps; fail "the completed results do not hold 0..6 s"; }
-  echo "disk_full.sh $case: the earlier results kept whole; the restart's beside them; the series completed"
+  [ "$(cut -d, -f1 results/steps.history.csv | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 5 6 " ] ||
+    { cat results/steps.history.csv; fail "the completed history does not hold steps 0..6"; }
+  [ ! -e results/steps.running.history.csv ] || fail "the completed restart left its running history"
+  echo "disk_full.sh $case: the earlier results and history kept whole; the restart's beside them; the series completed"
   exit 0
   ;;
 exodus_restart)
@@ -269,7 +276,7 @@ exodus_restart_fails)
     "$deck" > exodus_only.xml
   "$mpiexec" -np "$np" "$kiln" exodus_only.xml --restart results/exodus_only.checkpoint-000001.h5 > run.log 2>&1; rc=$?
   [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
-  grep -q "results: results/exodus_only.exo of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
+  grep -q "results: results/exodus_only.exo.* of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
   [ "$before" = "$(md5sum results/exodus_only.exo)" ] || fail "the earlier results changed"
   [ "$(exo_steps results/exodus_only.restarted.exo)" = 3 ] || fail "the restart's results do not hold 0..2 s"
