@@ -71,6 +71,41 @@ check_refused() { # DECK CHECKPOINT MESSAGE WHAT: the restart is refused (exit 1
 no_warning() { # LOG: a clean restart warns of nothing (an output-step count one off did)
   ! grep -q "warning" "$1" || { cat "$1"; fail "$1: a warning from a clean restart"; }
 }
+another_run() { # DECK RESULTS STEP N: run A of DECK keeps its checkpoint of STEP aside; run B
+  # (another initial temperature, the same File Base) replaces RESULTS; A's restart from STEP
+  # is refused naming both files, B's own continues its N output steps up to STEP s.
+  local name; name=$(basename "$1" .xml)
+  "$mpiexec" -np "$np" "$kiln" "$1" > first.log 2>&1 || { cat first.log; fail "run A"; }
+  cp "results/$name.checkpoint-00000$3.h5" a.h5
+  mkdir b # b/NAME.xml: the default File Base, results/NAME, as A's
+  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
+    "$1" > "b/$name.xml"
+  cmp -s "$1" "b/$name.xml" && fail "could not change the initial temperature"
+  "$mpiexec" -np "$np" "$kiln" "b/$name.xml" > other.log 2>&1 || { cat other.log; fail "run B"; }
+  check_refused "$1" a.h5 \
+    "kiln: error: $2: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
+    "naming both files"
+  "$mpiexec" -np "$np" "$kiln" "b/$name.xml" --restart "results/$name.checkpoint-00000$3.h5" > same.log 2>&1 ||
+    { cat same.log; fail "the restart of the run that wrote the results"; }
+  grep -q "results: the $4 output steps up to t = $3 s of $2 continue" same.log ||
+    { cat same.log; fail "B's restart did not continue B's results"; }
+  no_warning same.log
+  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
+  exit 0
+}
+failing_restart() { # DECK STEP FAULT_TIME FILES...: the complete run of DECK, then a restart
+  # from its checkpoint of STEP with a fault injected at FAULT_TIME (its last good state is
+  # written): exit 2, log run.log; FILES (of the complete run) unchanged by it
+  local name before; name=$(basename "$1" .xml)
+  "$mpiexec" -np "$np" "$kiln" "$1" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  before=$(cd results && md5sum "${@:4}")
+  sed "s|<ParameterList name=\"Checkpoint\">|<ParameterList name=\"Debug\">\n    <Parameter name=\"Fault\" type=\"string\" value=\"Exception In Assembly\"/>\n    <Parameter name=\"Time\" type=\"double\" value=\"$3\"/>\n  </ParameterList>\n  &|" \
+    "$1" > "$name.xml"
+  grep -q "Exception In Assembly" "$name.xml" || fail "could not inject the fault"
+  "$mpiexec" -np "$np" "$kiln" "$name.xml" --restart "results/$name.checkpoint-00000$2.h5" > run.log 2>&1; rc=$?
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  [ "$before" = "$(cd results && md5sum "${@:4}")" ] || fail "the earlier results or history changed"
+}
 exo_steps() { # FILE.exo: its number of output steps
   "${PYTHON:-/usr/bin/python3}" -c "import sys; from scipy.io import netcdf_file; print(len(netcdf_file(sys.argv[1], 'r', mmap=False).variables['time_whole'][:]))" "$1"
 }
@@ -190,37 +225,15 @@ restart_end)
 fingerprint)
   # Run A keeps its checkpoint of step 3 aside; run B (another initial temperature, the same
   # File Base) replaces results/steps.h5; A's restart must not append to B's results.
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "run A"; }
-  cp results/steps.checkpoint-000003.h5 a3.h5
-  mkdir b # b/steps.xml: the default File Base, results/steps, as A's
-  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
-    "$here/steps.xml" > b/steps.xml
-  "$mpiexec" -np "$np" "$kiln" b/steps.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
-  check_refused "$here/steps.xml" a3.h5 \
-    "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
-    "naming both files"
-  # B's own restart appends to B's results.
-  "$mpiexec" -np "$np" "$kiln" b/steps.xml --restart results/steps.checkpoint-000003.h5 > same.log 2>&1 ||
-    { cat same.log; fail "the restart of the run that wrote the results"; }
-  grep -q "results: the 4 output steps up to t = 3 s of results/steps.h5 continue" same.log ||
-    { cat same.log; fail "B's restart did not continue B's results"; }
-  no_warning same.log
-  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
-  exit 0
+  another_run "$here/steps.xml" results/steps.h5 3 4
   ;;
 restart_fails)
   # The complete run (outputs at 0..6 s), then a restart from step 3 that fails at 5 s (an
   # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
   # the restart's results go beside it, and a restart from its checkpoint completes the series.
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(md5sum results/steps.h5 results/steps.xmf results/steps.history.csv)
-  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="5"/>\n  </ParameterList>\n  &|' \
-    "$here/steps.xml" > steps.xml
-  "$mpiexec" -np "$np" "$kiln" steps.xml --restart results/steps.checkpoint-000003.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  failing_restart "$here/steps.xml" 3 5 steps.h5 steps.xmf steps.history.csv
   grep -q "results: results/steps.h5 and results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
-  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf results/steps.history.csv)" ] || fail "the earlier results or history changed"
   [ "$(h5ls results/steps.restarted.h5/steps | wc -l)" = 5 ] || { h5ls results/steps.restarted.h5/steps; fail "the restart's results do not hold 0..4 s"; }
   grep -q 'steps.restarted.h5:/steps' results/steps.restarted.xmf || fail "the restart's index does not name its file"
   [ "$(cut -d, -f1 results/steps.restarted.history.csv | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 " ] ||
@@ -252,40 +265,17 @@ exodus_restart)
   exit 0
   ;;
 exodus_fingerprint)
-  # fingerprint with Exodus output only: run B (another initial temperature, the same File
-  # Base) replaces results/exodus_only.exo; A's restart must not continue B's series.
-  deck=$here/exodus_only.xml
-  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "run A"; }
-  cp results/exodus_only.checkpoint-000001.h5 a1.h5
-  mkdir b # b/exodus_only.xml: the default File Base, results/exodus_only, as A's
-  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
-    "$deck" > b/exodus_only.xml
-  cmp -s "$deck" b/exodus_only.xml && fail "could not change the initial temperature"
-  "$mpiexec" -np "$np" "$kiln" b/exodus_only.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
-  check_refused "$deck" a1.h5 \
-    "kiln: error: results/exodus_only.exo: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a1.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
-    "naming both files"
-  "$mpiexec" -np "$np" "$kiln" b/exodus_only.xml --restart results/exodus_only.checkpoint-000001.h5 > same.log 2>&1 ||
-    { cat same.log; fail "the restart of the run that wrote the results"; }
-  grep -q "results: the 2 output steps up to t = 1 s of results/exodus_only.exo continue" same.log ||
-    { cat same.log; fail "B's restart did not continue B's results"; }
-  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
-  exit 0
+  # fingerprint with Exodus output only: A's restart must not continue B's .exo.
+  another_run "$here/exodus_only.xml" results/exodus_only.exo 1 2
   ;;
 exodus_restart_fails)
   # restart_fails with Exodus output only: the complete run (0..3 s), then a restart from step 1
   # that fails at 3 s (its last good state, 2 s, is written): results/exodus_only.exo stays
   # whole, the restart's results go beside it, and a restart from its checkpoint completes.
   deck=$here/exodus_only.xml
-  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(md5sum results/exodus_only.exo)
-  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="3"/>\n  </ParameterList>\n  &|' \
-    "$deck" > exodus_only.xml
-  "$mpiexec" -np "$np" "$kiln" exodus_only.xml --restart results/exodus_only.checkpoint-000001.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  failing_restart "$deck" 1 3 exodus_only.exo exodus_only.history.csv
   grep -q "results: results/exodus_only.exo.* of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
-  [ "$before" = "$(md5sum results/exodus_only.exo)" ] || fail "the earlier results changed"
   [ "$(exo_steps results/exodus_only.restarted.exo)" = 3 ] || fail "the restart's results do not hold 0..2 s"
   "$mpiexec" -np "$np" "$kiln" "$deck" --restart results/exodus_only.checkpoint.h5 > again.log 2>&1 ||
     { cat again.log; fail "the restart from the failed run's checkpoint"; }
