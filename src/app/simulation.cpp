@@ -545,8 +545,14 @@ void Simulation::finish_results(const std::string &status, const double time, Hi
     const bool history_aside = history.path() != outputs_->history_path();
     if (history_aside)
       history.finish(aside + ".history.csv");
-    *out_ << "results: " << outputs_->results_files(false)
-          << (history_aside ? " and " + outputs_->history_path() : std::string())
+    // The files kept: the results if they are the continued run's, the history if this run
+    // wrote beside it.
+    const bool results_kept = time < kept_results_end_ * (1.0 - 1e-12) - 1e-12;
+    const std::string history_kept = history_aside ? outputs_->history_path() : "";
+    *out_ << "results: "
+          << (results_kept ? outputs_->results_files(false) +
+                                 (history_aside ? " and " + history_kept : std::string())
+                           : history_kept)
           << " of the run continued (to t = " << kept_end
           << " s) are kept whole, as this run stopped at t = " << time
           << " s, before it passed them; this run's results are in " << results_aside_

@@ -16,6 +16,7 @@
 #                the history CSV) whole
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
 #   (the restarts that should go on cleanly, in these and other cases, print no warning)
+#   history_kept  restart_fails without the earlier results: the history alone is kept
 #   exodus_fingerprint  fingerprint with Exodus output only: the .exo of another run is refused
 #   exodus_restart_fails  restart_fails with Exodus output only: the earlier .exo kept whole
 #   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
@@ -93,11 +94,10 @@ another_run() { # DECK RESULTS STEP N: run A of DECK keeps its checkpoint of STE
   echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
   exit 0
 }
-failing_restart() { # DECK STEP FAULT_TIME FILES...: the complete run of DECK, then a restart
+failing_restart() { # DECK STEP FAULT_TIME FILES...: after the complete run of DECK, a restart
   # from its checkpoint of STEP with a fault injected at FAULT_TIME (its last good state is
   # written): exit 2, log run.log; FILES (of the complete run) unchanged by it
   local name before; name=$(basename "$1" .xml)
-  "$mpiexec" -np "$np" "$kiln" "$1" > first.log 2>&1 || { cat first.log; fail "first run"; }
   before=$(cd results && md5sum "${@:4}")
   sed "s|<ParameterList name=\"Checkpoint\">|<ParameterList name=\"Debug\">\n    <Parameter name=\"Fault\" type=\"string\" value=\"Exception In Assembly\"/>\n    <Parameter name=\"Time\" type=\"double\" value=\"$3\"/>\n  </ParameterList>\n  &|" \
     "$1" > "$name.xml"
@@ -231,6 +231,7 @@ restart_fails)
   # The complete run (outputs at 0..6 s), then a restart from step 3 that fails at 5 s (an
   # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
   # the restart's results go beside it, and a restart from its checkpoint completes the series.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
   failing_restart "$here/steps.xml" 3 5 steps.h5 steps.xmf steps.history.csv
   grep -q "results: results/steps.h5 and results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
@@ -247,6 +248,17 @@ restart_fails)
     { cat results/steps.history.csv; fail "the completed history does not hold steps 0..6"; }
   [ ! -e results/steps.running.history.csv ] || fail "the completed restart left its running history"
   echo "disk_full.sh $case: the earlier results and history kept whole; the restart's beside them; the series completed"
+  exit 0
+  ;;
+history_kept)
+  # restart_fails without the earlier results (moved away): the history alone is kept whole,
+  # and the log names it alone.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  rm results/steps.h5 results/steps.xmf
+  failing_restart "$here/steps.xml" 3 5 steps.history.csv
+  grep -q "results: results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
+    { cat run.log; fail "no message keeping the earlier history alone"; }
+  echo "disk_full.sh $case: the earlier history kept whole, named alone"
   exit 0
   ;;
 exodus_restart)
@@ -273,6 +285,7 @@ exodus_restart_fails)
   # that fails at 3 s (its last good state, 2 s, is written): results/exodus_only.exo stays
   # whole, the restart's results go beside it, and a restart from its checkpoint completes.
   deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
   failing_restart "$deck" 1 3 exodus_only.exo exodus_only.history.csv
   grep -q "results: results/exodus_only.exo.* of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
