@@ -130,7 +130,13 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 6 checkpoint"));
   CheckpointInfo info = c_.info;
   info.created = internal::utc_now();
-  info.output_steps = output_steps_;
+  // An output due at this time and not written yet (a checkpoint after every N steps comes
+  // before stop_time() writes it, so that a full disk there still leaves this state) is
+  // counted: the restart from here finds it among the earlier results, which it continues
+  // up to this time.
+  const bool output_due = c_.outputs.due_at_time(state.time) &&
+                          !(last_output_ >= 0.0 && internal::same_time(last_output_, state.time));
+  info.output_steps = output_steps_ + (output_due ? 1 : 0);
   info.preconditioner_origin = c_.newton.preconditioner_origin();
   const CoupledProblem::ContactOutput contact = c_.problem.contact_output(*state.x);
   for (std::size_t p = 0; p < c_.mesh.gap_pairs.size(); ++p)

@@ -238,6 +238,21 @@ void Simulation::check()
                               << " s; remove it or add a later time to Kiln/Output/\"Times\"");
 }
 
+namespace
+{
+/// True if `path` names Exodus results (BASE.exo), else they are HDF5.
+bool is_exodus(const std::string &path)
+{
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".exo") == 0;
+}
+
+/// The summary of the HDF5 or Exodus results file `path`.
+ResultsSummary summary_of_results(const std::string &path)
+{
+  return is_exodus(path) ? exodus_results_summary(path) : results_summary(path);
+}
+} // namespace
+
 Simulation::Ending Simulation::run()
 {
   check();
@@ -310,7 +325,7 @@ Simulation::Ending Simulation::run()
     const std::string path = observer.checkpoint(state);
     std::ostringstream when;
     when << "stopped by an error at t = " << state.time << " s";
-    finish_results(when.str() + ": " + e.what(), state.time);
+    finish_results(when.str() + ": " + e.what(), state.time, history);
     progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
           << outputs_->results_files(false) << " and " << path << "\n";
@@ -323,7 +338,7 @@ Simulation::Ending Simulation::run()
     std::ostringstream when;
     when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
          << " s";
-    finish_results(when.str() + "; continued by kiln --restart " + path, state.time);
+    finish_results(when.str() + "; continued by kiln --restart " + path, state.time, history);
     progress.summary(when.str(), state, files_written(path), *comm_);
     *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
           << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
@@ -331,7 +346,7 @@ Simulation::Ending Simulation::run()
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
-  finish_results("complete", state.time);
+  finish_results("complete", state.time, history);
   progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
   return Ending::finished;
 }
@@ -357,10 +372,18 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
   const MPI_Comm mpi_comm =
       *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
   std::vector<HistoryColumn> columns = history_columns(mesh_.gap_side_sets);
+  // A restart writes its history beside an earlier one it would shorten (finish_results()).
+  const std::string running = outputs_->file_base() + ".running.history.csv";
   if (restart_.empty())
+  {
+    // A new run: the history of a restart cut off before (of the results it replaces) goes.
+    std::error_code ignored;
+    if (comm_->getRank() == 0)
+      std::filesystem::remove(running, ignored);
     return HistoryCsv(mpi_comm, outputs_->history_path(), std::move(columns));
+  }
   HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps,
-                     std::move(columns));
+                     std::move(columns), running);
   if (!history.warning().empty())
     *out_ << "warning: " << history.warning() << "\n";
   for (const auto &row : history.kept_rows())
@@ -405,7 +428,7 @@ Simulation::files_written(const std::string &checkpoint) const
 {
   std::vector<std::pair<std::string, std::string>> files = {
       {"results", results_aside_.empty() ? outputs_->results_files() : results_aside_},
-      {"history", outputs_->history_path()}};
+      {"history", history_file_.empty() ? outputs_->history_path() : history_file_}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
     // A line per gap: "gap tables" (the first), "gap tables (2)" ...
@@ -451,15 +474,15 @@ std::string Simulation::earlier_results_file()
   // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
   // name), else BASE.h5; with Exodus output only, the same of BASE.exo.
   const std::string base = outputs_->file_base();
-  const bool hdf5 = outputs_->writes_hdf5();
-  const std::string extension = hdf5 ? ".h5" : ".exo";
+  const std::string extension = outputs_->writes_hdf5() ? ".h5" : ".exo";
+  const std::string complete = base + extension;
   const bool cut_off = std::filesystem::exists(base + ".running" + extension);
-  if (hdf5 && (cut_off || std::filesystem::exists(base + ".h5")))
-    check_same_run(cut_off ? base + ".running.h5" : base + ".h5");
+  if (cut_off || std::filesystem::exists(complete))
+    check_same_run(cut_off ? base + ".running" + extension : complete);
   // The complete results of the run continued stay until this run has passed them.
-  if (hdf5 && std::filesystem::exists(base + ".h5"))
+  if (std::filesystem::exists(complete))
   {
-    const ResultsSummary earlier = results_summary(base + ".h5");
+    const ResultsSummary earlier = summary_of_results(complete);
     if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
       kept_results_end_ = earlier.end_time;
   }
@@ -483,7 +506,7 @@ std::string Simulation::earlier_results_file()
 void Simulation::check_same_run(const std::string &results) const
 {
   // Every rank reads the attribute of the same file: the check gives one answer.
-  const std::string theirs = results_summary(results).run_fingerprint;
+  const std::string theirs = summary_of_results(results).run_fingerprint;
   const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
   KILN_CHECK_INPUT(theirs == ours, results,
                    (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
@@ -506,9 +529,9 @@ int Simulation::continue_results(const std::string &source, const double time)
   ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells(), {}};
   for (const GapPair &pair : mesh_.gap_pairs)
     rows.gap_pairs.emplace_back(pair.node_a, pair.node_b);
-  const bool exodus = source.size() > 4 && source.compare(source.size() - 4, 4, ".exo") == 0;
-  const int n = exodus ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
-                       : replay_results(source, time, rows, writers, *comm_);
+  const int n = is_exodus(source)
+                    ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
+                    : replay_results(source, time, rows, writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
         << " continue in " << outputs_->results_files(false) << "\n";
   if (n != restart_output_steps_)
@@ -517,12 +540,13 @@ int Simulation::continue_results(const std::string &source, const double time)
   return n;
 }
 
-void Simulation::finish_results(const std::string &status, const double time)
+void Simulation::finish_results(const std::string &status, const double time, HistoryCsv &history)
 {
-  if (time < kept_results_end_ * (1.0 - 1e-12) - 1e-12)
+  const double kept_end = std::max(kept_results_end_, history.kept_end());
+  if (time < kept_end * (1.0 - 1e-12) - 1e-12)
   {
-    // A restart that stopped before it passed the results of the run it continued: those
-    // stay whole under BASE, and this run's go beside them.
+    // A restart that stopped before it passed the results (or the history) of the run it
+    // continued: those stay whole under BASE, and this run's go beside them.
     const std::string base = outputs_->file_base();
     const std::string aside = base + ".restarted";
     results_aside_ = outputs_->results_files();
@@ -531,11 +555,25 @@ void Simulation::finish_results(const std::string &status, const double time)
       results_aside_.replace(at, base.size(), aside);
     for (const auto &writer : writers_)
       writer->set_final_base(aside);
-    *out_ << "results: " << outputs_->results_files(false)
-          << " of the run continued (to t = " << kept_results_end_
+    const bool history_aside = history.path() != outputs_->history_path();
+    if (history_aside)
+      history.finish(aside + ".history.csv");
+    // The files kept: the results if they are the continued run's, the history if this run
+    // wrote beside it.
+    const bool results_kept = time < kept_results_end_ * (1.0 - 1e-12) - 1e-12;
+    const std::string history_kept = history_aside ? outputs_->history_path() : "";
+    *out_ << "results: "
+          << (results_kept ? outputs_->results_files(false) +
+                                 (history_aside ? " and " + history_kept : std::string())
+                           : history_kept)
+          << " of the run continued (to t = " << kept_end
           << " s) are kept whole, as this run stopped at t = " << time
-          << " s, before it passed them; this run's results are in " << results_aside_ << "\n";
+          << " s, before it passed them; this run's results are in " << results_aside_
+          << (history_aside ? ", its history in " + history.path() : std::string()) << "\n";
   }
+  else
+    history.finish(outputs_->history_path());
+  history_file_ = history.path();
   for (const auto &writer : writers_)
     writer->finish(status);
 }

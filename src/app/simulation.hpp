@@ -97,8 +97,9 @@ private:
   /// The "key: value" lines of the files written, for the summary.
   std::vector<std::pair<std::string, std::string>>
   files_written(const std::string &checkpoint) const;
-  /// The HDF5 results of the run a restart continues, or "" if there are none; notes the end
-  /// of a BASE.h5 of the same run, kept until this run passes it.
+  /// The results (HDF5, or Exodus with Exodus output only) of the run a restart continues, or
+  /// "" if there are none; notes the end of a BASE.h5 (BASE.exo) of the same run, kept until
+  /// this run passes it.
   std::string earlier_results_file();
   /// Refuses (InputError naming both files) the earlier `results` if their run fingerprint is
   /// not this run's, the checkpoint's: a restart appends only to its own run's results.
@@ -106,10 +107,10 @@ private:
   /// The earlier run's output steps in `source` up to `time` into this run's results;
   /// returns their number.
   int continue_results(const std::string &source, double time);
-  /// Gives the results files their final names, recording `status`. The earlier run's
-  /// results are kept if this run, at `time` [s], has not passed them (the new ones then get
-  /// the base BASE.restarted).
-  void finish_results(const std::string &status, double time);
+  /// Gives the results files and the `history` their final names, recording `status`. The
+  /// earlier run's results and history are kept if this run, at `time` [s], has not passed
+  /// them both (the new ones then get the base BASE.restarted).
+  void finish_results(const std::string &status, double time, HistoryCsv &history);
   /// The results writers of Output/"Format", the gap tables (their first output step
   /// `first_gap_step`) and the field output.
   void open_results(int first_gap_step);
@@ -124,9 +125,11 @@ private:
   std::string mesh_file_;
   std::string restart_;          ///< the checkpoint to continue from, or ""
   int restart_output_steps_ = 0; ///< the output steps written before the checkpoint
-  /// The last output time of the continued run's BASE.h5, kept until this run passes it [s].
+  /// The last output time of the continued run's BASE.h5 (BASE.exo), kept until this run
+  /// passes it [s].
   double kept_results_end_ = -std::numeric_limits<double>::infinity();
   std::string results_aside_; ///< this run's results files, if not under BASE
+  std::string history_file_;  ///< this run's history as finished, or "" before
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Mesh mesh_;

@@ -47,7 +47,7 @@ struct CheckpointInfo
   std::string created;    ///< UTC, ISO 8601
   std::string input_path; ///< the input it ran with
   std::string input_xml;  ///< that input, as given
-  int output_steps = 0;   ///< output steps written before it
+  int output_steps = 0;   ///< output steps up to its time (one due at its time included)
   /// Per gap pair (Mesh::gap_pairs order): 1 in contact, and the normal traction [Pa].
   std::vector<int> active;
   std::vector<double> traction;

@@ -5,6 +5,7 @@
 #include "io/write_room.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -36,7 +37,8 @@ void check_results_write(const int status, const std::string &path, const std::s
 } // namespace
 
 ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
-                                     const std::vector<int> &cell_rank)
+                                     const std::vector<int> &cell_rank,
+                                     const std::string &run_fingerprint)
     : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells()),
       columns_(history_columns(mesh.gap_side_sets))
 {
@@ -58,6 +60,18 @@ ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
     layout_ = exodus_layout(mesh, mesh.gap_side_sets);
     put_exodus_mesh(exo_, path_, mesh, layout_, "Kiln results", ExodusVariables::max_name_length,
                     &cell_rank);
+    if (!run_fingerprint.empty())
+    {
+      // Exodus 6 has no call for a file attribute: netCDF's own, on the same id.
+      const int defining = nc_redef(exo_);
+      const int put = defining == NC_NOERR
+                          ? nc_put_att_text(exo_, NC_GLOBAL, "run_fingerprint",
+                                            run_fingerprint.size(), run_fingerprint.data())
+                          : defining;
+      const int ended = defining == NC_NOERR ? nc_enddef(exo_) : NC_NOERR;
+      check_results_write(put == NC_NOERR && ended == NC_NOERR ? 0 : -1, path_,
+                          "writing the attribute run_fingerprint");
+    }
     check_results_write(ex_update(exo_), path_, "flushing the file");
     size_before_step_ = std::filesystem::file_size(path_, ignored);
     // Before the first step, a guess: a step's fields take about a quarter of the mesh's bytes.

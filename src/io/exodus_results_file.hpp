@@ -22,8 +22,10 @@ class ExodusResultsFile
 {
 public:
   /// Creates `path` (classic netCDF) and writes the mesh, flushed; `cell_rank` is the owner of
-  /// every cell.
-  ExodusResultsFile(const std::string &path, const Mesh &mesh, const std::vector<int> &cell_rank);
+  /// every cell. A `run_fingerprint` that is not empty goes into the netCDF global attribute
+  /// run_fingerprint (exodus_results_summary() reads it back).
+  ExodusResultsFile(const std::string &path, const Mesh &mesh, const std::vector<int> &cell_rank,
+                    const std::string &run_fingerprint = "");
   ~ExodusResultsFile();
   ExodusResultsFile(const ExodusResultsFile &) = delete;
   ExodusResultsFile &operator=(const ExodusResultsFile &) = delete;

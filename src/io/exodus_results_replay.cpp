@@ -6,8 +6,11 @@
 #include "mesh/exodus_io.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace kiln
@@ -92,6 +95,35 @@ std::vector<ExodusField> fields_of(const std::vector<std::string> &names)
   return fields;
 }
 } // namespace
+
+ResultsSummary exodus_results_summary(const std::string &path)
+{
+  ResultsSummary summary{"", -std::numeric_limits<double>::infinity()};
+  try
+  {
+    const ExodusReader file(path);
+    const int exo = file.id();
+    std::size_t length = 0;
+    nc_type type = NC_NAT;
+    if (nc_inq_att(exo, NC_GLOBAL, "run_fingerprint", &type, &length) == NC_NOERR &&
+        type == NC_CHAR)
+    {
+      std::string text(length, '\0');
+      if (nc_get_att_text(exo, NC_GLOBAL, "run_fingerprint", text.data()) == NC_NOERR)
+        summary.run_fingerprint = text.substr(0, text.find('\0'));
+    }
+    const int n_steps = static_cast<int>(ex_inquire_int(exo, EX_INQ_TIME));
+    std::vector<double> times(static_cast<std::size_t>(std::max(n_steps, 0)));
+    if (n_steps > 0 && ex_get_all_times(exo, times.data()) >= 0)
+      for (const double t : times)
+        summary.end_time = std::max(summary.end_time, t);
+  }
+  catch (const std::runtime_error &)
+  {
+    // Not a readable Exodus file: no fingerprint, no steps.
+  }
+  return summary;
+}
 
 int replay_exodus_results(const std::string &path, const double until, const Mesh &mesh,
                           const ReplayRows &rows, const std::vector<ResultsWriter *> &writers,

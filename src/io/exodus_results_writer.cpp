@@ -151,15 +151,18 @@ ExodusResultsWriter::ExodusResultsWriter(const MPI_Comm comm, const std::string 
                                          const Mesh &mesh, const std::vector<int> &owned_nodes,
                                          const std::vector<int> &owned_cells,
                                          const std::vector<int> &cell_rank,
-                                         const ResultsMetadata & /*metadata*/)
+                                         const ResultsMetadata &metadata)
 {
   // The ownership must be a partition of the rows; a mistake here is the caller's.
   internal::check_row_partition(comm, mesh, owned_nodes, owned_cells, cell_rank);
   impl_ = std::make_unique<Impl>(comm, base_path, mesh, owned_nodes, owned_cells);
   Impl &m = *impl_;
-  internal::run_on_rank_zero(
-      comm,
-      [&] { m.file = std::make_unique<internal::ExodusResultsFile>(m.path, mesh, cell_rank); });
+  internal::run_on_rank_zero(comm,
+                             [&]
+                             {
+                               m.file = std::make_unique<internal::ExodusResultsFile>(
+                                   m.path, mesh, cell_rank, metadata.run_fingerprint);
+                             });
 }
 
 ExodusResultsWriter::~ExodusResultsWriter() = default;

@@ -44,8 +44,9 @@ public:
   /// Creates `base_path`.running.exo (collective on `comm`) and writes the mesh; finish()
   /// renames it `base_path`.exo. `owned_nodes` and `owned_cells` are this rank's rows, in
   /// increasing order; every node and cell is owned by exactly one rank. `cell_rank` is the
-  /// owner of every cell (replicated). The metadata is not written (Exodus info records
-  /// hold 80 characters each): the QA record names Kiln and the date.
+  /// owner of every cell (replicated). Of the metadata only the run fingerprint is written
+  /// (the netCDF global attribute run_fingerprint; Exodus info records hold 80 characters
+  /// each): the QA record names Kiln and the date.
   ExodusResultsWriter(MPI_Comm comm, const std::string &base_path, const Mesh &mesh,
                       const std::vector<int> &owned_nodes, const std::vector<int> &owned_cells,
                       const std::vector<int> &cell_rank, const ResultsMetadata &metadata = {});

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -54,6 +55,37 @@ bool parse_row(const std::string &line, const std::size_t n_columns, std::vector
   return row.size() == n_columns;
 }
 } // namespace
+
+/// A history file as read back: its rows up to the first line that cannot be read.
+struct HistoryRows
+{
+  bool opened = false;
+  bool known_columns = false; ///< the header of this Kiln (or of one before changelog 0032)
+  bool cut_short = false;     ///< a line that cannot be read ended the rows
+  std::vector<std::vector<double>> rows;
+};
+
+/// The history at `path`, if it has `columns`.
+HistoryRows read_history(const std::string &path, const std::vector<HistoryColumn> &columns)
+{
+  HistoryRows result;
+  std::ifstream in(path);
+  std::string line;
+  result.opened = static_cast<bool>(in);
+  result.known_columns = result.opened && std::getline(in, line) &&
+                         (line == header_line(columns) || line == header_line(columns, false));
+  std::vector<double> row;
+  while (result.known_columns && std::getline(in, line))
+  {
+    if (!parse_row(line, columns.size(), row))
+    {
+      result.cut_short = true;
+      break;
+    }
+    result.rows.push_back(row);
+  }
+  return result;
+}
 } // namespace internal
 
 const std::vector<HistoryColumn> &history_columns()
@@ -115,58 +147,73 @@ std::string history_number(const double value)
 
 HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path,
                        std::vector<HistoryColumn> columns)
-    : comm_(comm), path_(path), columns_(std::move(columns))
+    : comm_(comm), path_(path), columns_(std::move(columns)),
+      kept_end_(-std::numeric_limits<double>::infinity())
 {
   start({});
 }
 
 HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int step,
-                       std::vector<HistoryColumn> columns)
-    : comm_(comm), path_(path), columns_(std::move(columns))
+                       std::vector<HistoryColumn> columns, const std::string &running_path)
+    : comm_(comm), path_(path), columns_(std::move(columns)),
+      kept_end_(-std::numeric_limits<double>::infinity())
 {
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
   std::vector<double> flat;
+  int running = 0;
   if (rank == 0)
   {
-    std::ifstream in(path_);
-    std::string line;
-    if (!in)
-      warning_ = path_ +
+    std::error_code ignored;
+    const bool cut_off = !running_path.empty() && std::filesystem::exists(running_path, ignored);
+    const std::string source = cut_off ? running_path : path_;
+    const internal::HistoryRows earlier = internal::read_history(source, columns_);
+    bool later = false; // rows after `step` in the file continued
+    if (!earlier.opened)
+      warning_ = source +
                  " (the earlier run's history) is missing; the history starts at the "
                  "restart, step " +
                  std::to_string(step);
-    else if (!std::getline(in, line) || (line != internal::header_line(columns_) &&
-                                         line != internal::header_line(columns_, false)))
+    else if (!earlier.known_columns)
     {
-      in.close();
-      std::error_code ignored;
-      std::filesystem::rename(path_, path_ + ".old", ignored);
-      warning_ = path_ + " has other columns than this Kiln writes; it is kept as " + path_ +
+      std::filesystem::rename(source, source + ".old", ignored);
+      warning_ = source + " has other columns than this Kiln writes; it is kept as " + source +
                  ".old and the history starts at the restart, step " + std::to_string(step);
     }
     else
     {
-      std::vector<double> row;
       int last = -1;
-      while (std::getline(in, line))
+      for (const std::vector<double> &row : earlier.rows)
       {
-        if (!internal::parse_row(line, columns_.size(), row))
+        if (row[0] > step)
         {
-          warning_ = path_ + ": a line after step " + std::to_string(last) +
-                     " cannot be read; the rows from there are dropped";
+          later = true;
           break;
         }
-        if (row[0] > step)
-          break;
         last = static_cast<int>(row[0]);
         flat.insert(flat.end(), row.begin(), row.end());
       }
-      if (warning_.empty() && last < step)
-        warning_ = path_ + " ends at step " + std::to_string(last) + ", before the restart at " +
+      if (!later && earlier.cut_short)
+        warning_ = source + ": a line after step " + std::to_string(last) +
+                   " cannot be read; the rows from there are dropped";
+      else if (last < step)
+        warning_ = source + " ends at step " + std::to_string(last) + ", before the restart at " +
                    std::to_string(step) + "; the rows in between are missing";
     }
+    // The earlier history stays whole while this run has not passed it.
+    if (!running_path.empty() && (cut_off || later))
+    {
+      running = 1;
+      const internal::HistoryRows complete = cut_off ? internal::read_history(path_, columns_) : earlier;
+      if (complete.known_columns && !complete.rows.empty())
+        kept_end_ = complete.rows.back()[1]; // the column "time"
+    }
   }
+  MPI_Bcast(&running, 1, MPI_INT, 0, comm_);
+  MPI_Bcast(&kept_end_, 1, MPI_DOUBLE, 0, comm_);
+  running_ = running == 1;
+  if (running_)
+    path_ = running_path;
   // Every rank gets the warning and the kept rows (the HDF5 history is written collectively).
   int length = static_cast<int>(warning_.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, comm_);
@@ -205,6 +252,23 @@ void HistoryCsv::start(const std::vector<std::vector<double>> &rows)
                          "cannot write the time history; check that the folder is "
                          "writable and the disk is not full");
       });
+}
+
+void HistoryCsv::finish(const std::string &final_path)
+{
+  if (!running_ || final_path == path_)
+    return;
+  internal::run_on_rank_zero(comm_,
+                             [&]
+                             {
+                               KILN_CHECK_INPUT(std::rename(path_.c_str(), final_path.c_str()) == 0,
+                                                final_path,
+                                                "cannot rename " << path_
+                                                                 << " to its final name; check the "
+                                                                    "folder's permissions");
+                             });
+  path_ = final_path;
+  running_ = false;
 }
 
 void HistoryCsv::append(const std::vector<double> &row)

@@ -46,10 +46,22 @@ public:
   /// rows of steps up to `step` are kept (the rest, written after the checkpoint, are
   /// dropped) and returned on every rank by kept_rows(). A missing file, or one with other
   /// columns (moved aside to PATH.old), starts anew, and warning() says so.
+  /// With a `running_path`, no row of the file at `path` is dropped: when it holds rows after
+  /// `step`, it stays whole (kept_end() gives the time of its last row) and this history is
+  /// written at `running_path` until finish() names it. A file at `running_path` (a restart
+  /// cut off before its finish()) is the one continued, `path` again kept whole.
   HistoryCsv(MPI_Comm comm, const std::string &path, int step,
-             std::vector<HistoryColumn> columns = history_columns());
+             std::vector<HistoryColumn> columns = history_columns(),
+             const std::string &running_path = "");
 
+  /// The file being written.
   const std::string &path() const { return path_; }
+  /// The time [s] of the last row of the earlier file kept whole beside the one written, or
+  /// -infinity when the history is written in place (every rank).
+  double kept_end() const { return kept_end_; }
+  /// Renames the history written at the running path to `final_path` (rank 0; collective);
+  /// nothing for a history written in place.
+  void finish(const std::string &final_path);
   /// The rows kept from the earlier run (every rank).
   const std::vector<std::vector<double>> &kept_rows() const { return kept_; }
   /// Why the earlier rows could not be kept (all or some), or "" (every rank).
@@ -67,5 +79,7 @@ private:
   std::vector<HistoryColumn> columns_;
   std::vector<std::vector<double>> kept_;
   std::string warning_;
+  double kept_end_;
+  bool running_ = false;
 };
 } // namespace kiln

@@ -12,8 +12,13 @@
 #   ulimit       a file-size limit (on the ranks) smaller than the results file
 #   restart_end  a restart from a checkpoint at the end time: exit 1, nothing written
 #   fingerprint  a restart whose results were since written by another run: exit 1, both named
-#   restart_fails  a restart that fails before it passes the earlier results keeps them whole
+#   restart_fails  a restart that fails before it passes the earlier results keeps them (and
+#                the history CSV) whole
 #   exodus_restart  Exodus output only: a restart continues the .exo series, value for value
+#   (the restarts that should go on cleanly, in these and other cases, print no warning)
+#   history_kept  restart_fails without the earlier results: the history alone is kept
+#   exodus_fingerprint  fingerprint with Exodus output only: the .exo of another run is refused
+#   exodus_restart_fails  restart_fails with Exodus output only: the earlier .exo kept whole
 #   exodus_results  Exodus output only, its folder a tmpfs smaller than the results
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 #   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
@@ -63,6 +68,46 @@ check_refused() { # DECK CHECKPOINT MESSAGE WHAT: the restart is refused (exit 1
   [ "$(grep -c 'kiln: error:' run.log)" = 1 ] || { cat run.log; fail "not one error line"; }
   grep -q "$3" run.log || { cat run.log; fail "no message $4"; }
   [ "$before" = "$(folder_state)" ] || fail "the results folder changed"
+}
+no_warning() { # LOG: a clean restart warns of nothing (an output-step count one off did)
+  ! grep -q "warning" "$1" || { cat "$1"; fail "$1: a warning from a clean restart"; }
+}
+another_run() { # DECK RESULTS STEP N: run A of DECK keeps its checkpoint of STEP aside; run B
+  # (another initial temperature, the same File Base) replaces RESULTS; A's restart from STEP
+  # is refused naming both files, B's own continues its N output steps up to STEP s.
+  local name; name=$(basename "$1" .xml)
+  "$mpiexec" -np "$np" "$kiln" "$1" > first.log 2>&1 || { cat first.log; fail "run A"; }
+  cp "results/$name.checkpoint-00000$3.h5" a.h5
+  mkdir b # b/NAME.xml: the default File Base, results/NAME, as A's
+  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
+    "$1" > "b/$name.xml"
+  cmp -s "$1" "b/$name.xml" && fail "could not change the initial temperature"
+  "$mpiexec" -np "$np" "$kiln" "b/$name.xml" > other.log 2>&1 || { cat other.log; fail "run B"; }
+  check_refused "$1" a.h5 \
+    "kiln: error: $2: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
+    "naming both files"
+  "$mpiexec" -np "$np" "$kiln" "b/$name.xml" --restart "results/$name.checkpoint-00000$3.h5" > same.log 2>&1 ||
+    { cat same.log; fail "the restart of the run that wrote the results"; }
+  grep -q "results: the $4 output steps up to t = $3 s of $2 continue" same.log ||
+    { cat same.log; fail "B's restart did not continue B's results"; }
+  no_warning same.log
+  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
+  exit 0
+}
+failing_restart() { # DECK STEP FAULT_TIME FILES...: after the complete run of DECK, a restart
+  # from its checkpoint of STEP with a fault injected at FAULT_TIME (its last good state is
+  # written): exit 2, log run.log; FILES (of the complete run) unchanged by it
+  local name before; name=$(basename "$1" .xml)
+  before=$(cd results && md5sum "${@:4}")
+  sed "s|<ParameterList name=\"Checkpoint\">|<ParameterList name=\"Debug\">\n    <Parameter name=\"Fault\" type=\"string\" value=\"Exception In Assembly\"/>\n    <Parameter name=\"Time\" type=\"double\" value=\"$3\"/>\n  </ParameterList>\n  &|" \
+    "$1" > "$name.xml"
+  grep -q "Exception In Assembly" "$name.xml" || fail "could not inject the fault"
+  "$mpiexec" -np "$np" "$kiln" "$name.xml" --restart "results/$name.checkpoint-00000$2.h5" > run.log 2>&1; rc=$?
+  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
+  [ "$before" = "$(cd results && md5sum "${@:4}")" ] || fail "the earlier results or history changed"
+}
+exo_steps() { # FILE.exo: its number of output steps
+  "${PYTHON:-/usr/bin/python3}" -c "import sys; from scipy.io import netcdf_file; print(len(netcdf_file(sys.argv[1], 'r', mmap=False).variables['time_whole'][:]))" "$1"
 }
 restart_from() { # CHECKPOINT STEP: it is readable, and a restart from it completes
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart "$1" > restart.log 2>&1 ||
@@ -180,42 +225,40 @@ restart_end)
 fingerprint)
   # Run A keeps its checkpoint of step 3 aside; run B (another initial temperature, the same
   # File Base) replaces results/steps.h5; A's restart must not append to B's results.
-  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "run A"; }
-  cp results/steps.checkpoint-000003.h5 a3.h5
-  mkdir b # b/steps.xml: the default File Base, results/steps, as A's
-  sed 's|name="Initial Temperature" type="double" value="288"|name="Initial Temperature" type="double" value="300"|' \
-    "$here/steps.xml" > b/steps.xml
-  "$mpiexec" -np "$np" "$kiln" b/steps.xml > other.log 2>&1 || { cat other.log; fail "run B"; }
-  check_refused "$here/steps.xml" a3.h5 \
-    "kiln: error: results/steps.h5: was written by another run (run fingerprint [0-9a-f]\{16\}) than the checkpoint a3.h5 (run fingerprint [0-9a-f]\{16\}: its mesh, physics and initial state).*nothing was written" \
-    "naming both files"
-  # B's own restart appends to B's results.
-  "$mpiexec" -np "$np" "$kiln" b/steps.xml --restart results/steps.checkpoint-000003.h5 > same.log 2>&1 ||
-    { cat same.log; fail "the restart of the run that wrote the results"; }
-  grep -q "results: the 4 output steps up to t = 3 s of results/steps.h5 continue" same.log ||
-    { cat same.log; fail "B's restart did not continue B's results"; }
-  echo "disk_full.sh $case: refused with exit 1 naming both files, nothing written; the same run continues"
-  exit 0
+  another_run "$here/steps.xml" results/steps.h5 3 4
   ;;
 restart_fails)
   # The complete run (outputs at 0..6 s), then a restart from step 3 that fails at 5 s (an
   # injected fault; its last good state, 4 s, is written): results/steps.h5 must stay whole,
   # the restart's results go beside it, and a restart from its checkpoint completes the series.
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
-  before=$(md5sum results/steps.h5 results/steps.xmf)
-  sed 's|<ParameterList name="Checkpoint">|<ParameterList name="Debug">\n    <Parameter name="Fault" type="string" value="Exception In Assembly"/>\n    <Parameter name="Time" type="double" value="5"/>\n  </ParameterList>\n  &|' \
-    "$here/steps.xml" > steps.xml
-  "$mpiexec" -np "$np" "$kiln" steps.xml --restart results/steps.checkpoint-000003.h5 > run.log 2>&1; rc=$?
-  [ "$rc" = 2 ] || { cat run.log; fail "exit status $rc, expected 2"; }
-  grep -q "results: results/steps.h5 of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf" run.log ||
+  failing_restart "$here/steps.xml" 3 5 steps.h5 steps.xmf steps.history.csv
+  grep -q "results: results/steps.h5 and results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
     { cat run.log; fail "no message keeping the earlier results"; }
-  [ "$before" = "$(md5sum results/steps.h5 results/steps.xmf)" ] || fail "the earlier results changed"
   [ "$(h5ls results/steps.restarted.h5/steps | wc -l)" = 5 ] || { h5ls results/steps.restarted.h5/steps; fail "the restart's results do not hold 0..4 s"; }
   grep -q 'steps.restarted.h5:/steps' results/steps.restarted.xmf || fail "the restart's index does not name its file"
+  [ "$(cut -d, -f1 results/steps.restarted.history.csv | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 " ] ||
+    { cat results/steps.restarted.history.csv; fail "the restart's history does not hold steps 0..4"; }
+  grep -q "history: results/steps.restarted.history.csv" run.log || { cat run.log; fail "the summary does not name the restart's history"; }
   "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" --restart results/steps.checkpoint.h5 > again.log 2>&1 ||
     { cat again.log; fail "the restart from the failed run's checkpoint"; }
+  no_warning again.log
   [ "$(h5ls results/steps.h5/steps | wc -l)" = 7 ] || { h5ls results/steps.h5/steps; fail "the completed results do not hold 0..6 s"; }
-  echo "disk_full.sh $case: the earlier results kept whole; the restart's beside them; the series completed"
+  [ "$(cut -d, -f1 results/steps.history.csv | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 5 6 " ] ||
+    { cat results/steps.history.csv; fail "the completed history does not hold steps 0..6"; }
+  [ ! -e results/steps.running.history.csv ] || fail "the completed restart left its running history"
+  echo "disk_full.sh $case: the earlier results and history kept whole; the restart's beside them; the series completed"
+  exit 0
+  ;;
+history_kept)
+  # restart_fails without the earlier results (moved away): the history alone is kept whole,
+  # and the log names it alone.
+  "$mpiexec" -np "$np" "$kiln" "$here/steps.xml" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  rm results/steps.h5 results/steps.xmf
+  failing_restart "$here/steps.xml" 3 5 steps.history.csv
+  grep -q "results: results/steps.history.csv of the run continued (to t = 6 s) are kept whole, as this run stopped at t = 4 s, before it passed them; this run's results are in results/steps.restarted.h5 and results/steps.restarted.xmf, its history in results/steps.restarted.history.csv" run.log ||
+    { cat run.log; fail "no message keeping the earlier history alone"; }
+  echo "disk_full.sh $case: the earlier history kept whole, named alone"
   exit 0
   ;;
 exodus_restart)
@@ -228,8 +271,29 @@ exodus_restart)
     { cat run.log; fail "the restart"; }
   grep -q "results: the 2 output steps up to t = 1 s of results/exodus_only.exo continue in results/exodus_only.exo" run.log ||
     { cat run.log; fail "the restart did not continue the .exo"; }
+  no_warning run.log
   "${PYTHON:-/usr/bin/python3}" "$here/same_exodus.py" whole.exo results/exodus_only.exo || fail "the continued .exo differs from the whole run's"
   echo "disk_full.sh $case: the restart continued the .exo series, equal to the whole run's"
+  exit 0
+  ;;
+exodus_fingerprint)
+  # fingerprint with Exodus output only: A's restart must not continue B's .exo.
+  another_run "$here/exodus_only.xml" results/exodus_only.exo 1 2
+  ;;
+exodus_restart_fails)
+  # restart_fails with Exodus output only: the complete run (0..3 s), then a restart from step 1
+  # that fails at 3 s (its last good state, 2 s, is written): results/exodus_only.exo stays
+  # whole, the restart's results go beside it, and a restart from its checkpoint completes.
+  deck=$here/exodus_only.xml
+  "$mpiexec" -np "$np" "$kiln" "$deck" > first.log 2>&1 || { cat first.log; fail "first run"; }
+  failing_restart "$deck" 1 3 exodus_only.exo exodus_only.history.csv
+  grep -q "results: results/exodus_only.exo.* of the run continued (to t = 3 s) are kept whole, as this run stopped at t = 2 s, before it passed them; this run's results are in results/exodus_only.restarted.exo" run.log ||
+    { cat run.log; fail "no message keeping the earlier results"; }
+  [ "$(exo_steps results/exodus_only.restarted.exo)" = 3 ] || fail "the restart's results do not hold 0..2 s"
+  "$mpiexec" -np "$np" "$kiln" "$deck" --restart results/exodus_only.checkpoint.h5 > again.log 2>&1 ||
+    { cat again.log; fail "the restart from the failed run's checkpoint"; }
+  [ "$(exo_steps results/exodus_only.exo)" = 4 ] || fail "the completed results do not hold 0..3 s"
+  echo "disk_full.sh $case: the earlier .exo kept whole; the restart's beside it; the series completed"
   exit 0
   ;;
 *) fail "unknown case" ;;

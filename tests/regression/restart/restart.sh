@@ -73,6 +73,7 @@ exact | exact_block_triangular)
   grep -q "restart from results/close.checkpoint.h5: t = 53 s.*25 of 25 gap pairs" part2.log ||
     fail "the restart did not start from the closed state at 53 s"
   grep -q "the 3 output steps up to t = 53 s" part2.log || fail "the results did not continue"
+  ! grep -q "warning" part2.log || { cat part2.log; fail "a warning from a clean restart"; }
   if [ "$case" = exact_block_triangular ]; then
     for log in full.log part1.log part2.log; do
       grep -q "preconditioner: Block Triangular" "$log" || fail "$log: not Block Triangular"

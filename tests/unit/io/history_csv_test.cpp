@@ -1,7 +1,8 @@
 // Tests io/history_csv: the header names every column, numbers are written in their shortest
 // exact form and read back bit for bit, rows are appended as they come (rank 0 writes), and a
 // restart keeps the rows up to its step and drops the later ones, or starts anew (and says
-// why) without the earlier file or with one of other columns.
+// why) without the earlier file or with one of other columns; with a running path it keeps
+// the earlier file whole and writes beside it until finish().
 // KILN_TEST_NP: 1 2
 #include "io/history_csv.hpp"
 
@@ -200,4 +201,69 @@ TEST(HistoryCsv, ColumnsPerGapOnlyWithSeveralGaps)
   EXPECT_EQ(again.warning(), "");
   ASSERT_EQ(again.kept_rows().size(), 1u);
   EXPECT_EQ(again.kept_rows()[0], row);
+}
+
+TEST(HistoryCsv, ARestartWithARunningPathKeepsTheEarlierHistoryWhole)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string base = kiln_test::temporary_base("history_csv_running", *comm);
+  const std::string path = base + ".history.csv";
+  const std::string running = base + ".running.history.csv";
+  {
+    kiln::HistoryCsv history(raw(*comm), path);
+    for (int step = 0; step <= 5; ++step)
+      history.append(row_of(step));
+  }
+  comm->barrier();
+  const std::vector<std::string> written = lines_of(path);
+  comm->barrier();
+
+  // A restart after step 3 would drop rows 4 and 5: the earlier file stays whole, this
+  // history (rows 0-3 and its own) goes to the running path, and kept_end() is the time of
+  // the earlier file's last row (every rank).
+  {
+    kiln::HistoryCsv history(raw(*comm), path, 3, kiln::history_columns(), running);
+    EXPECT_EQ(history.warning(), "");
+    EXPECT_EQ(history.path(), running);
+    EXPECT_EQ(history.kept_end(), row_of(5)[1]);
+    ASSERT_EQ(history.kept_rows().size(), 4u);
+    history.append(row_of(4));
+    comm->barrier();
+    EXPECT_EQ(lines_of(path), written);
+    EXPECT_EQ(lines_of(running).size(), 6u);
+  }
+  comm->barrier();
+
+  // Cut off before finish(): the next restart continues the running file (its rows up to
+  // the step), the earlier file still kept whole.
+  {
+    kiln::HistoryCsv history(raw(*comm), path, 4, kiln::history_columns(), running);
+    EXPECT_EQ(history.warning(), "");
+    EXPECT_EQ(history.path(), running);
+    EXPECT_EQ(history.kept_end(), row_of(5)[1]);
+    EXPECT_EQ(history.kept_rows().size(), 5u);
+    history.append(row_of(5));
+    history.append(row_of(6));
+    // Passed the earlier history: finish() puts it in place of the earlier file.
+    history.finish(path);
+    EXPECT_EQ(history.path(), path);
+  }
+  comm->barrier();
+  EXPECT_FALSE(std::filesystem::exists(running));
+  EXPECT_EQ(lines_of(path).size(), 8u);
+  comm->barrier();
+
+  // Nothing after the step: written in place, as without a running path.
+  {
+    kiln::HistoryCsv history(raw(*comm), path, 6, kiln::history_columns(), running);
+    EXPECT_EQ(history.path(), path);
+    EXPECT_EQ(history.kept_end(), -std::numeric_limits<double>::infinity());
+    history.finish(base + ".restarted.history.csv");
+    EXPECT_EQ(history.path(), path);
+  }
+  comm->barrier();
+  EXPECT_FALSE(std::filesystem::exists(base + ".restarted.history.csv"));
+  comm->barrier();
+  if (comm->getRank() == 0)
+    std::filesystem::remove(path);
 }

@@ -50,15 +50,15 @@ TEST(LinearElasticModel, StressIsTheElasticityKernels)
   const kiln::Voigt strain{1e-3, -2e-4, 3e-4, 5e-4, -1e-4, 2e-4};
   static constexpr int index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
   const kiln::HexNodes x = kiln_test::unit_cube();
-  kiln::ElasticityKernel::NodalDisplacements u{};
+  std::array<kiln::Point, 8> u{};
   for (int i = 0; i < 8; ++i)
     for (int d = 0; d < 3; ++d)
       for (int k = 0; k < 3; ++k)
         u[i][d] += strain[index[d][k]] * x[i][k];
-  kiln::ElasticityKernel::NodalValues T;
+  std::array<double, 8> T;
   T.fill(350.0);
   kiln::ElementValues fe;
-  fe.reinit(x);
+  kiln_test::reinit(fe, x);
   const kiln::Voigt expected = kernel.cell_averages(fe, u, T).stress;
   kiln::PointInput in;
   in.strain = strain;
