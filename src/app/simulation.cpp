@@ -382,8 +382,8 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
       std::filesystem::remove(running, ignored);
     return HistoryCsv(mpi_comm, outputs_->history_path(), std::move(columns));
   }
-  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps,
-                     std::move(columns), running);
+  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps, std::move(columns),
+                     running);
   if (!history.warning().empty())
     *out_ << "warning: " << history.warning() << "\n";
   for (const auto &row : history.kept_rows())

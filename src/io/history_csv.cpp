@@ -204,7 +204,8 @@ HistoryCsv::HistoryCsv(const MPI_Comm comm, const std::string &path, const int s
     if (!running_path.empty() && (cut_off || later))
     {
       running = 1;
-      const internal::HistoryRows complete = cut_off ? internal::read_history(path_, columns_) : earlier;
+      const internal::HistoryRows complete =
+          cut_off ? internal::read_history(path_, columns_) : earlier;
       if (complete.known_columns && !complete.rows.empty())
         kept_end_ = complete.rows.back()[1]; // the column "time"
     }

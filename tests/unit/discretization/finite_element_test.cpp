@@ -9,9 +9,9 @@
 // KILN_TEST_NP: 1
 #include "elements/finite_element.hpp"
 #include "elements/quadrature_rules.hpp"
+#include "elements/reference_cell.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/mesh.hpp"
-#include "elements/reference_cell.hpp"
 
 #include <gtest/gtest.h>
 
