@@ -7,8 +7,11 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -115,6 +118,33 @@ std::uintmax_t ParallelHdf5File::size() const
   return bytes;
 }
 
+namespace
+{
+/// Allocates `bytes` after the end of the file at `path` without changing its size; "" on
+/// success or where the file system cannot (EOPNOTSUPP), else the system's reason.
+std::string allocate_after_end(const std::string &path, const std::uintmax_t bytes)
+{
+  const int fd = ::open(path.c_str(), O_WRONLY);
+  if (fd < 0)
+    return "";
+  struct stat info = {};
+  int status = ::fstat(fd, &info);
+  int error = 0;
+  if (status == 0)
+  {
+    status = ::fallocate(fd, FALLOC_FL_KEEP_SIZE, info.st_size, static_cast<off_t>(bytes));
+    error = status == 0 ? 0 : errno;
+  }
+  ::close(fd);
+  if (status == 0 || error == EOPNOTSUPP || error == ENOSYS)
+    return "";
+  std::ostringstream text;
+  text << std::strerror(error) << ": cannot set aside the " << bytes
+       << " bytes the next step needs";
+  return text.str();
+}
+} // namespace
+
 void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
 {
   // Every rank: the ranks' file-size limits (and, on several nodes, their views of the disk)
@@ -124,6 +154,16 @@ void ParallelHdf5File::reserve(const std::uintmax_t bytes) const
   const Teuchos::MpiComm<int> comm(comm_);
   check_write_collectively(comm, shortfall.empty(), path_,
                            "the next step cannot be written (" + shortfall + "); " +
+                               write_failure_advice());
+  // The room found is then taken: rank 0 allocates the blocks after the file's end (the size
+  // stays), so that another program filling the disk before the step's collective writes
+  // cannot make them fail on some ranks only (which hangs HDF5). A file system without
+  // fallocate keeps the check alone.
+  std::string taken;
+  if (comm.getRank() == 0)
+    taken = allocate_after_end(path_, bytes);
+  check_write_collectively(comm, taken.empty(), path_,
+                           "the next step cannot be written (" + taken + "); " +
                                write_failure_advice());
 }
 

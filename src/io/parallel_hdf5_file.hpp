@@ -75,7 +75,10 @@ public:
   /// "File too large") unless the file's disk has `bytes` free and the file-size limit
   /// (ulimit -f) lets it grow by as much: checked before a step is written, on every rank (their
   /// limits may differ), because HDF5 cannot flush or close a parallel file cleanly after a
-  /// write failed on some ranks only: its ranks hang in different collectives.
+  /// write failed on some ranks only: its ranks hang in different collectives. Then rank 0
+  /// allocates those bytes after the file's end (fallocate, keeping its size), so that another
+  /// program filling the disk meanwhile cannot fail the step's writes (where the file system
+  /// has no fallocate, the check alone).
   void reserve(std::uintmax_t bytes) const;
   /// The file's size on disk now [bytes] (rank 0's view, on every rank).
   std::uintmax_t size() const;

@@ -23,6 +23,8 @@
 #   exodus_ulimit   Exodus output only, a file-size limit smaller than the results
 #   csv_full     the gap table and the time history written to /dev/full (the kernel's ENOSPC)
 #   killed       a run killed with SIGKILL mid-run: its results readable to the last complete step
+#   filled_after_check  KILN is unit_parallel_hdf5_file: the room a step needs, reserved, survives
+#                a disk that another program fills before the step's writes
 #   ulimit_one_rank  a file-size limit on the last rank only (a write that fails on one rank
 #                only inside HDF5 hung the run): ends within 30 s, as a full disk
 set -uo pipefail
@@ -294,6 +296,18 @@ exodus_restart_fails)
     { cat again.log; fail "the restart from the failed run's checkpoint"; }
   [ "$(exo_steps results/exodus_only.exo)" = 4 ] || fail "the completed results do not hold 0..3 s"
   echo "disk_full.sh $case: the earlier .exo kept whole; the restart's beside it; the series completed"
+  exit 0
+  ;;
+filled_after_check)
+  # KILN is the unit test of ParallelHdf5File: on a 2 MB tmpfs it reserves a step's room,
+  # fills the disk from another file, then writes the step: it must not fail.
+  mount_small 2M
+  KILN_TEST_SMALL_DISK=$dir/small "$mpiexec" -np "$np" "$kiln" \
+    --gtest_color=no --gtest_filter='ParallelHdf5File.TheRoomReservedSurvivesADiskFilledByAnotherProgram' \
+    > run.log 2>&1; rc=$?
+  [ "$rc" = 0 ] || { cat run.log; fail "exit status $rc: the step's writes failed on the full disk"; }
+  grep -q "\[  PASSED  \] 1 test" run.log || { cat run.log; fail "the test did not run"; }
+  echo "disk_full.sh $case: the room reserved before the writes kept them from the full disk"
   exit 0
   ;;
 *) fail "unknown case" ;;
