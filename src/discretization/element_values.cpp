@@ -17,11 +17,13 @@ void ElementValues::reinit(const Mesh &mesh, const int c)
 
 void ElementValues::reinit(const CellType type, const Point *x)
 {
-  const ReferenceValues &ref = ReferenceValues::of(type);
-  KILN_ASSERT(ref.n_shape > 0 && ReferenceCell::of(type).dim() == 3,
-              "no volume basis for " << ReferenceCell::of(type).name());
   if (shape_ == nullptr || type != type_)
   {
+    const ReferenceValues &ref = ReferenceValues::of(type);
+    KILN_ASSERT(ref.n_shape > 0 && ReferenceCell::of(type).dim() == 3,
+                "no volume basis for " << ReferenceCell::of(type).name());
+    ref_grad_ = ref.grad.data();
+    weights_ = ref.weights.data();
     type_ = type;
     n_shape_ = ref.n_shape;
     n_qpoints_ = ref.n_qpoints;
@@ -30,11 +32,22 @@ void ElementValues::reinit(const CellType type, const Point *x)
     JxW_.resize(n_qpoints_);
     quadrature_point_.resize(n_qpoints_);
   }
-  const int n = n_shape_;
-  for (int q = 0; q < n_qpoints_; ++q)
+  // The common HEX8 (8 shape functions, 8 points) with compile-time loop bounds.
+  if (n_shape_ == small_cell && n_qpoints_ == small_cell)
+    map<small_cell>(x);
+  else
+    map<0>(x);
+}
+
+template <int fixed> void ElementValues::map(const Point *x)
+{
+  const int n = fixed > 0 ? fixed : n_shape_;
+  const int n_q = fixed > 0 ? fixed : n_qpoints_;
+  const CellType type = type_;
+  for (int q = 0; q < n_q; ++q)
   {
     const double *N = shape_ + q * n;
-    const Point *dN = ref.grad.data() + q * n;
+    const Point *dN = ref_grad_ + q * n;
     double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; // J[d][r] = dx_d/dxi_r
     Point xq{0, 0, 0};
     for (int i = 0; i < n; ++i)
@@ -69,7 +82,7 @@ void ElementValues::reinit(const CellType type, const Point *x)
     for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
         grad[i][d] = (C[d][0] * dN[i][0] + C[d][1] * dN[i][1] + C[d][2] * dN[i][2]) * inv_det;
-    JxW_[q] = det * ref.weights[q];
+    JxW_[q] = det * weights_[q];
     quadrature_point_[q] = xq;
   }
 }

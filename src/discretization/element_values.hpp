@@ -37,12 +37,20 @@ public:
   const Point &quadrature_point(const int q) const { return quadrature_point_[q]; }
 
 private:
+  /// The size (shape functions and points) of the common HEX8, mapped with compile-time loop
+  /// bounds.
+  static constexpr int small_cell = 8;
+  /// Maps the cell: with `fixed` > 0, n_shape_ == n_qpoints_ == fixed (compile-time bounds).
+  template <int fixed> void map(const Point *x);
+
   CellType type_ = CellType::hex8;
   int n_shape_ = 0;
   int n_qpoints_ = 0;
   /// ReferenceValues::of(type_).shape, looked up once per type: shape() is inlined in the
   /// kernels' loops.
   const double *shape_ = nullptr;
+  const Point *ref_grad_ = nullptr; ///< ReferenceValues::of(type_).grad
+  const double *weights_ = nullptr; ///< ReferenceValues::of(type_).weights
   std::vector<Point> grad_;
   std::vector<double> JxW_;
   std::vector<Point> quadrature_point_;

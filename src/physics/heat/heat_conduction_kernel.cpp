@@ -12,10 +12,13 @@ HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel
 {
 }
 
-void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &T_nodes,
+/// With `fixed` > 0 the cell has that many shape functions (compile-time loop bounds).
+template <int fixed>
+void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &T_nodes,
                                     const NodalValues &T_dot_nodes, const double dTdot_dT,
                                     LocalSystem &local) const
 {
+  const int n = fixed > 0 ? fixed : fe.n_shape();
   constexpr int T_field = static_cast<int>(Field::T);
   const bool lumped = capacity_ == Capacity::lumped;
   for (int q = 0; q < fe.n_qpoints(); ++q)
@@ -23,7 +26,7 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
     double T = 0.0;
     double T_dot = 0.0;
     Point grad_T{0.0, 0.0, 0.0};
-    for (int j = 0; j < fe.n_shape(); ++j)
+    for (int j = 0; j < n; ++j)
     {
       T += fe.shape(j, q) * T_nodes[j];
       T_dot += fe.shape(j, q) * T_dot_nodes[j];
@@ -33,7 +36,7 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
     const double k = conductivity_.value(T);
     const double dk_dT = conductivity_.derivative(T);
     const double JxW = fe.JxW(q);
-    for (int i = 0; i < fe.n_shape(); ++i)
+    for (int i = 0; i < n; ++i)
     {
       const double phi_i = fe.shape(i, q);
       const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
@@ -45,7 +48,7 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
         continue;
       // Capacity: consistent rho c a φ_j φ_i, or lumped rho c a φ_i on the diagonal.
       const double capacity_i = rho_c_ * dTdot_dT * (lumped ? 0.0 : phi_i);
-      for (int j = 0; j < fe.n_shape(); ++j)
+      for (int j = 0; j < n; ++j)
         local.jacobian(T_field, i, T_field, j) +=
             (capacity_i * fe.shape(j, q) + k * dot(fe.grad(j, q), fe.grad(i, q)) +
              dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
@@ -54,6 +57,16 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
         local.jacobian(T_field, i, T_field, i) += rho_c_ * dTdot_dT * phi_i * JxW;
     }
   }
+}
+
+void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &T_nodes,
+                                    const NodalValues &T_dot_nodes, const double dTdot_dT,
+                                    LocalSystem &local) const
+{
+  if (fe.n_shape() == small_cell_nodes)
+    assemble<small_cell_nodes>(fe, T_nodes, T_dot_nodes, dTdot_dT, local);
+  else
+    assemble<0>(fe, T_nodes, T_dot_nodes, dTdot_dT, local);
 }
 
 void HeatConductionKernel::evaluate(const CellState &state, LocalSystem &local) const

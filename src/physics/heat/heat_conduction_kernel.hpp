@@ -53,6 +53,12 @@ public:
   Capacity capacity() const { return capacity_; }
 
 private:
+  /// A cell of this many nodes (HEX8, the common case) runs with compile-time loop bounds.
+  static constexpr int small_cell_nodes = 8;
+  template <int fixed>
+  void assemble(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
+                double dTdot_dT, LocalSystem &local) const;
+
   double rho_c_;
   Capacity capacity_;
   ConductivityModel conductivity_;

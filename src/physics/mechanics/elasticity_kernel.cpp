@@ -11,10 +11,10 @@ using Tensor = std::array<std::array<double, 3>, 3>;
 
 /// ε = sym ∇u at Gauss point q, with (∇u)_dk = ∂u_d/∂x_k [-].
 Tensor strain_at(const ElementValues &fe, const ElasticityKernel::NodalDisplacements &u,
-                 const int q)
+                 const int q, const int n)
 {
   Tensor grad_u{};
-  for (int j = 0; j < fe.n_shape(); ++j)
+  for (int j = 0; j < n; ++j)
   {
     const Point &grad_phi = fe.grad(j, q);
     for (int d = 0; d < 3; ++d)
@@ -111,7 +111,7 @@ void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacement
       phi[j] = fe.shape(j, q);
       dT += phi[j] * dT_nodes[j];
     }
-    const Tensor stress = hooke_stress(lambda_, G_, thermal_modulus_, strain_at(fe, u, q), dT);
+    const Tensor stress = hooke_stress(lambda_, G_, thermal_modulus_, strain_at(fe, u, q, n), dT);
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k)
         grad_JxW[i][k] = fe.grad(i, q)[k] * JxW;
@@ -196,7 +196,7 @@ ElasticityKernel::CellAverages ElasticityKernel::cell_averages(const ElementValu
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     const double JxW = fe.JxW(q);
-    const Tensor strain = strain_at(fe, u, q);
+    const Tensor strain = strain_at(fe, u, q, fe.n_shape());
     const double dT = temperature_change_at(fe, T_nodes, T_ref_, q);
     add_to_voigt(JxW, strain, averages.strain);
     add_to_voigt(JxW, hooke_stress(lambda_, G_, thermal_modulus_, strain, dT), averages.stress);
