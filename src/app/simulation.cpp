@@ -153,10 +153,10 @@ void Simulation::setup()
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
     const MaterialMap materials(params_, mesh_.block_ids(), input_path_);
-    const Material &material = materials.uniform_material();
-    problem_ =
-        Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
-                                        params_.sublist("Mechanics"), input_path_ + ": Kiln"));
+    const Material &material = materials.uniform_material(layout_.temperature);
+    problem_ = Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
+                                               params_.sublist("Mechanics"), input_path_ + ": Kiln",
+                                               &materials));
     problem_->set_log(out_);
     solved_ = FaultInjection::wrap(problem_, params_.sublist("Debug"), input_path_ + ": Kiln/Debug",
                                    *out_);
@@ -382,8 +382,8 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
       std::filesystem::remove(running, ignored);
     return HistoryCsv(mpi_comm, outputs_->history_path(), std::move(columns));
   }
-  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps,
-                     std::move(columns), running);
+  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps, std::move(columns),
+                     running);
   if (!history.warning().empty())
     *out_ << "warning: " << history.warning() << "\n";
   for (const auto &row : history.kept_rows())

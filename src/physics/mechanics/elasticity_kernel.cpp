@@ -244,14 +244,12 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
   }
   std::vector<PointResponse> responses;
   std::vector<Voigt> strains;
-  // The state at t_{n+1} is recomputed from t_n into a copy: the averages never move it.
-  std::vector<double> new_state;
+  // The points at the state `history.old_state` with Δt = 0: the stress of that state, whose
+  // next state goes to a scratch copy (the averages never move the state).
+  std::vector<double> scratch(static_cast<std::size_t>(model_->n_state()) * fe.n_qpoints());
   PointHistory copy = history;
-  if (history.new_state != nullptr)
-  {
-    new_state.resize(static_cast<std::size_t>(model_->n_state()) * fe.n_qpoints());
-    copy.new_state = new_state.data();
-  }
+  copy.time_step = 0.0;
+  copy.new_state = scratch.empty() ? nullptr : scratch.data();
   evaluate_points(fe, u, T, copy, responses, &strains);
   double volume = 0.0;
   const int n_state = model_->n_state();
@@ -264,12 +262,11 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
       averages.strain[I] += JxW * strains[q][I];
     }
     averages.von_mises += JxW * von_mises_of(responses[q].stress);
-    if (n_state > 0 && copy.new_state != nullptr)
+    if (n_state > 0 && history.old_state != nullptr)
     {
-      averages.plastic_strain +=
-          JxW * model_->equivalent_plastic_strain(copy.new_state + q * n_state);
-      averages.plastic_strain_rate +=
-          JxW * model_->plastic_strain_rate(copy.new_state + q * n_state);
+      const double *state = history.old_state + q * n_state;
+      averages.plastic_strain += JxW * model_->equivalent_plastic_strain(state);
+      averages.plastic_strain_rate += JxW * model_->plastic_strain_rate(state);
     }
     volume += JxW;
   }

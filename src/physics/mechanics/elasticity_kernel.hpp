@@ -70,7 +70,9 @@ public:
                 const PointHistory &history, const Point &body_force, int u_slot, int T_slot,
                 LocalSystem &local) const;
   /// The general path's cell averages of σ, ε, the von Mises stress [Pa], the equivalent
-  /// plastic strain [-] and its rate [1/s], from the state written by the last evaluate().
+  /// plastic strain [-] and its rate [1/s] at the points' state `history.old_state` (for
+  /// output: the state of the step's end), the model taken with Δt = 0 (the stress of that
+  /// state, the state unchanged); the history's other members are not read.
   struct PointAverages
   {
     Voigt stress{};
@@ -104,7 +106,9 @@ public:
   CellAverages cell_averages(const ElementValues &fe, const NodalDisplacements &u,
                              const NodalValues &T) const;
 
-  /// λ [Pa].
+  /// b [N/m^3], the body force of evaluate(CellState).
+  const Point &body_force() const { return body_force_; }
+  /// λ [Pa] (0 on the general path).
   double lambda() const { return lambda_; }
   /// G [Pa].
   double shear_modulus() const { return G_; }
