@@ -680,6 +680,21 @@ void check_general_jacobian(const kiln::ElasticityKernel &general,
   std::cout << "general path: max |J - J_fd| / max |J|: u columns " << error_u / scale_u
             << ", T columns " << error_T / scale_T << "\n";
 }
+/// The distorted cell under an affine displacement and a temperature varying over its nodes.
+struct AffineCell
+{
+  AffineCell()
+  {
+    const kiln::HexNodes x = distorted_cell();
+    kiln_test::reinit(fe, x);
+    u = affine_displacement(x, gradient_E, Point{1e-4, 0.0, -2e-4});
+    for (int i = 0; i < 8; ++i)
+      T[i] = T_ref + 3.0 * i;
+  }
+  kiln::ElementValues fe;
+  NodalDisplacements u;
+  NodalValues T;
+};
 } // namespace
 
 TEST(ElasticityKernel, ConstantLinearModelTakesTheFastPathBitIdentically)
@@ -688,13 +703,10 @@ TEST(ElasticityKernel, ConstantLinearModelTakesTheFastPathBitIdentically)
       std::make_shared<kiln::LinearElasticModel>(lambda, G, alpha, T_ref), Point{1.0, 2.0, 3.0});
   EXPECT_FALSE(from_model.general());
   EXPECT_TRUE(from_model.constant_jacobian());
-  const kiln::HexNodes x = distorted_cell();
-  kiln::ElementValues fe;
-  kiln_test::reinit(fe, x);
-  NodalDisplacements u = affine_displacement(x, gradient_E, Point{1e-4, 0.0, -2e-4});
-  NodalValues T;
-  for (int i = 0; i < 8; ++i)
-    T[i] = T_ref + 3.0 * i;
+  const AffineCell cell;
+  const kiln::ElementValues &fe = cell.fe;
+  const NodalDisplacements &u = cell.u;
+  const NodalValues &T = cell.T;
   kiln::LocalSystem a(8, 4), b(8, 4);
   from_model.evaluate(fe, u, T, Point{1.0, 2.0, 3.0}, 1, 0, a);
   kernel.evaluate(fe, u, T, Point{1.0, 2.0, 3.0}, 1, 0, b);
@@ -717,13 +729,10 @@ TEST(ElasticityKernel, GeneralPathOfAConstantModelEqualsTheFastPath)
   const kiln::ElasticityKernel general(kiln::create_constitutive_model(p, "test", "Model"),
                                        Point{});
   ASSERT_TRUE(general.general());
-  const kiln::HexNodes x = distorted_cell();
-  kiln::ElementValues fe;
-  kiln_test::reinit(fe, x);
-  NodalDisplacements u = affine_displacement(x, gradient_E, Point{1e-4, 0.0, -2e-4});
-  NodalValues T;
-  for (int i = 0; i < 8; ++i)
-    T[i] = T_ref + 3.0 * i;
+  const AffineCell cell;
+  const kiln::ElementValues &fe = cell.fe;
+  const NodalDisplacements &u = cell.u;
+  const NodalValues &T = cell.T;
   kiln::LocalSystem a(8, 4), b(8, 4);
   general.evaluate(fe, u, T, kiln::ElasticityKernel::PointHistory{}, Point{1, 2, 3}, 1, 0, a);
   kernel.evaluate(fe, u, T, Point{1, 2, 3}, 1, 0, b);
