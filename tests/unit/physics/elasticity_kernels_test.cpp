@@ -118,6 +118,31 @@ std::vector<double> residual_of(const kiln::ElasticityKernel &kernel, const kiln
 const Matrix gradient_E = {
     {{1.0e-3, -4.0e-4, 2.5e-4}, {6.0e-4, -7.0e-4, 3.0e-4}, {-2.0e-4, 9.0e-4, 5.0e-4}}};
 
+/// The unknowns of the distorted cell's 8 nodes, (T, u_x, u_y, u_z) per node: T around
+/// T_ref + 40 K, u a small wiggle plus `scale` times the affine gradient_E.
+std::vector<double> cell_unknowns(const kiln::HexNodes &x, const double scale)
+{
+  std::vector<double> state(32);
+  for (int i = 0; i < 8; ++i)
+  {
+    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
+    for (int d = 0; d < 3; ++d)
+      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + scale * dot(gradient_E[d], x[i]);
+  }
+  return state;
+}
+
+/// The nodal u and T of cell_unknowns().
+void unpack(const std::vector<double> &s, NodalDisplacements &u, NodalValues &T)
+{
+  for (int i = 0; i < 8; ++i)
+  {
+    T[i] = s[4 * i];
+    for (int d = 0; d < 3; ++d)
+      u[i][d] = s[4 * i + 1 + d];
+  }
+}
+
 const kiln::ElasticityKernel kernel(lambda, G, alpha, T_ref);
 } // namespace
 
@@ -136,23 +161,8 @@ TEST(ElasticityKernel, JacobianMatchesFiniteDifferencesOnADistortedCell)
   const kiln::HexNodes x = distorted_cell();
   kiln::ElementValues fe;
   kiln_test::reinit(fe, x);
-  std::vector<double> state(32);
-  for (int i = 0; i < 8; ++i)
-  {
-    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
-    for (int d = 0; d < 3; ++d)
-      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + 1e-3 * dot(gradient_E[d], x[i]);
-  }
+  const std::vector<double> state = cell_unknowns(x, 1e-3);
   const Point b{1.0e4, -2.0e4, 7.8e4};
-  const auto unpack = [](const std::vector<double> &s, NodalDisplacements &u, NodalValues &T)
-  {
-    for (int i = 0; i < 8; ++i)
-    {
-      T[i] = s[4 * i];
-      for (int d = 0; d < 3; ++d)
-        u[i][d] = s[4 * i + 1 + d];
-    }
-  };
   const auto residual = [&](const std::vector<double> &s)
   {
     NodalDisplacements u;
@@ -627,24 +637,13 @@ void check_general_jacobian(const kiln::ElasticityKernel &general,
   const kiln::HexNodes x = distorted_cell();
   kiln::ElementValues fe;
   kiln_test::reinit(fe, x);
-  std::vector<double> state(32);
-  for (int i = 0; i < 8; ++i)
-  {
-    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
-    for (int d = 0; d < 3; ++d)
-      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + dot(gradient_E[d], x[i]);
-  }
+  const std::vector<double> state = cell_unknowns(x, 1.0);
   const Point b{1.0e4, -2.0e4, 7.8e4};
   const auto residual_and_jacobian = [&](const std::vector<double> &s, kiln::LocalSystem &local)
   {
     NodalDisplacements u;
     NodalValues T;
-    for (int i = 0; i < 8; ++i)
-    {
-      T[i] = s[4 * i];
-      for (int d = 0; d < 3; ++d)
-        u[i][d] = s[4 * i + 1 + d];
-    }
+    unpack(s, u, T);
     general.evaluate(fe, u, T, history, b, 1, 0, local);
   };
   const auto residual = [&](const std::vector<double> &s)
