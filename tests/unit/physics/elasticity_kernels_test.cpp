@@ -610,8 +610,9 @@ public:
   }
 };
 
-/// A Power Law viscoplastic model whose rate depends on T (Q > 0).
-std::shared_ptr<const kiln::ConstitutiveModel> power_law_model()
+/// A Power Law viscoplastic model of the steel-like constants, rate A σ^n exp(−Q/(R T)).
+std::shared_ptr<const kiln::ConstitutiveModel> power_law_model(const double A, const double n,
+                                                               const double Q)
 {
   Teuchos::ParameterList p;
   p.set("Type", std::string("Power Law"));
@@ -619,9 +620,9 @@ std::shared_ptr<const kiln::ConstitutiveModel> power_law_model()
   p.set("Shear Modulus", G);
   p.set("Thermal Expansion", alpha);
   p.set("Reference Temperature", T_ref);
-  p.set("Power Law A", 4e-28);
-  p.set("Power Law n", 3.0);
-  p.set("Power Law Q", 1.0e4);
+  p.set("Power Law A", A);
+  p.set("Power Law n", n);
+  p.set("Power Law Q", Q);
   p.set("Local Tolerance", 1e-14);
   return kiln::create_constitutive_model(p, "test", "Model");
 }
@@ -717,16 +718,7 @@ TEST(ElasticityKernel, GeneralPathOfAConstantModelEqualsTheFastPath)
 {
   // The Power Law model with A = 0 is elastic but not constant_linear(): the general path
   // must then give the fast path's residual and Jacobian up to rounding.
-  Teuchos::ParameterList p;
-  p.set("Type", std::string("Power Law"));
-  p.set("Lame Lambda", lambda);
-  p.set("Shear Modulus", G);
-  p.set("Thermal Expansion", alpha);
-  p.set("Reference Temperature", T_ref);
-  p.set("Power Law A", 0.0);
-  p.set("Power Law n", 1.0);
-  const kiln::ElasticityKernel general(kiln::create_constitutive_model(p, "test", "Model"),
-                                       Point{});
+  const kiln::ElasticityKernel general(power_law_model(0.0, 1.0, 0.0), Point{});
   ASSERT_TRUE(general.general());
   const AffineCell cell;
   const kiln::ElementValues &fe = cell.fe;
@@ -755,7 +747,8 @@ TEST(ElasticityKernel, GeneralPathJacobianOfTemperatureDependentElasticity)
 
 TEST(ElasticityKernel, GeneralPathJacobianOfAViscoplasticStep)
 {
-  const auto model = power_law_model();
+  // A rate that depends on T (Q > 0): ~1e-4 of plastic strain against 1e-3 elastic in 1 s.
+  const auto model = power_law_model(4e-28, 3.0, 1.0e4);
   ASSERT_GT(model->n_state(), 0);
   const kiln::ElasticityKernel general(model, Point{});
   kiln::ElementValues fe;
