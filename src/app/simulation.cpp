@@ -153,10 +153,10 @@ void Simulation::setup()
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
     const MaterialMap materials(params_, mesh_.block_ids(), input_path_);
-    const Material &material = materials.uniform_material();
-    problem_ =
-        Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
-                                        params_.sublist("Mechanics"), input_path_ + ": Kiln"));
+    const Material &material = materials.uniform_material(layout_.temperature);
+    problem_ = Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
+                                               params_.sublist("Mechanics"), input_path_ + ": Kiln",
+                                               &materials));
     problem_->set_log(out_);
     solved_ = FaultInjection::wrap(problem_, params_.sublist("Debug"), input_path_ + ": Kiln/Debug",
                                    *out_);

@@ -68,6 +68,18 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
     writer.write_cell_field("von_mises_stress", 1, von_mises_stress);
     writer.write_cell_field("pressure", 1, mean_pressure);
     writer.write_cell_field("principal_stress", 3, principal_stress);
+    if (problem_.quadrature_state() != nullptr)
+    {
+      // A model with state: its plastic strain and rate, averaged over each cell's points.
+      std::vector<double> plastic_strain, plastic_strain_rate;
+      for (const auto &c : problem_.point_averages(x))
+      {
+        plastic_strain.push_back(c.plastic_strain);
+        plastic_strain_rate.push_back(c.plastic_strain_rate);
+      }
+      writer.write_cell_field("plastic_strain", 1, plastic_strain);
+      writer.write_cell_field("plastic_strain_rate", 1, plastic_strain_rate);
+    }
   }
   write_gap_field(writer, "gap_opening", gap_opening(u));
   if (problem_.has_contact())

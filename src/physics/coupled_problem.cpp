@@ -5,6 +5,7 @@
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/mechanics/free_motions.hpp"
+#include "physics/quadrature_state_setup.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
@@ -20,7 +21,8 @@ namespace kiln
 {
 CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                                const Teuchos::ParameterList &thermal,
-                               const Teuchos::ParameterList &mechanics, const std::string &where)
+                               const Teuchos::ParameterList &mechanics, const std::string &where,
+                               const MaterialMap *materials)
     : mesh_(mesh), dofs_(dofs), slots_{dofs.layout().slot(Field::T), dofs.layout().slot(Field::ux)},
       constraints_(mesh, dofs)
 {
@@ -29,7 +31,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   if (slots_.T >= 0)
     thermal_.emplace(thermal, material, mesh, dofs.layout(), interior, where + "/Thermal");
   if (slots_.u >= 0)
-    mechanics_.emplace(mechanics, material, mesh, interior, where + "/Mechanics");
+    mechanics_.emplace(mechanics, material, mesh, interior, where + "/Mechanics", materials);
 
   // Constraints: the conditions', then the free axes of contact; then the frames are final.
   for (const auto *physics_conditions : {thermal_ ? &thermal_->conditions() : nullptr,
@@ -37,7 +39,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
     if (physics_conditions != nullptr)
       for (const auto &condition : *physics_conditions)
         condition->add_constraints(mesh, constraints_);
-  const double modulus = material.lame_lambda() + 2.0 * material.shear_modulus();
+  const double T_ref = material.reference_temperature();
+  const double modulus = material.lame_lambda(T_ref) + 2.0 * material.shear_modulus(T_ref);
   const Teuchos::ParameterList &contact = mechanics.sublist("Contact");
   // One interface per gap, each of its Kind (Contact/Gaps, else Contact's).
   if (dofs.layout().contact && mechanics_)
@@ -84,6 +87,24 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
                                           material.reference_temperature());
   hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus);
 
+  if (mechanics_ && materials != nullptr)
+  {
+    // The state of the models at the points of their cells (none if no model has state).
+    const BlockElasticityKernel &blocks = mechanics_->block_elasticity();
+    std::vector<const ConstitutiveModel *> models;
+    for (const ElasticityKernel &kernel : blocks.kernels())
+      models.push_back(kernel.model());
+    set_quadrature_state(make_quadrature_state(
+        models, dofs.owned_cells(),
+        [&blocks](const int cell) { return blocks.of_cell(cell).model(); },
+        [&mesh](const int cell)
+        {
+          ElementValues fe;
+          fe.reinit(mesh, cell);
+          return fe.n_qpoints();
+        },
+        where + "/Materials"));
+  }
   terms_ = std::make_unique<ResidualTerms>(mesh, dofs, slots_);
   if (thermal_)
   {
@@ -144,6 +165,9 @@ void CoupledProblem::set_log(Teuchos::RCP<Teuchos::FancyOStream> out)
 
 void CoupledProblem::set_time_derivative(const double time, const double a, const Vector &b)
 {
+  if (mechanics_)
+    mechanics_->block_elasticity().set_time_step(
+        std::isnan(accepted_time_) ? 0.0 : std::max(0.0, time - accepted_time_));
   fields_->set_time_derivative(time, a, b);
   constraints_.set_time(time);
   decided_ = false;
@@ -341,6 +365,7 @@ void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSyst
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
+  accepted_time_ = time;
   if (quadrature_state_)
     quadrature_state_->commit();
   if (interfaces_.empty())
@@ -519,14 +544,14 @@ std::vector<Point> CoupledProblem::node_displacements(const Vector &x)
   return u;
 }
 
-std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const Vector &x)
+void CoupledProblem::for_each_owned_cell(const Vector &x, const CellVisitor &visit)
 {
-  KILN_ASSERT(mechanics_, "cell_averages() needs the displacement");
+  KILN_ASSERT(mechanics_, "the cell averages need the displacement");
   prepare(x);
-  std::vector<ElasticityKernel::CellAverages> result;
   ElementValues fe;
   std::vector<double> T;
   std::vector<Point> u;
+  int cell_local = 0;
   for (const int c : dofs_.owned_cells())
   {
     T.clear();
@@ -537,8 +562,43 @@ std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const 
       u.push_back(fields_->u(n));
     }
     fe.reinit(mesh_, c);
-    result.push_back(mechanics_->elasticity().cell_averages(fe, u, T));
+    visit(mechanics_->block_elasticity().of_cell(c), fe, T, u,
+          mechanics_->block_elasticity().output_history(cell_local++));
   }
+}
+
+std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const Vector &x)
+{
+  std::vector<ElasticityKernel::CellAverages> result;
+  for_each_owned_cell(x,
+                      [&result](const ElasticityKernel &kernel, const ElementValues &fe,
+                                const std::vector<double> &T, const std::vector<Point> &u,
+                                const ElasticityKernel::PointHistory &history)
+                      {
+                        if (!kernel.general())
+                        {
+                          result.push_back(kernel.cell_averages(fe, u, T));
+                          return;
+                        }
+                        // The general path: σ and ε from the model's points; the thermal strain is
+                        // not the model's to tell (left 0).
+                        const ElasticityKernel::PointAverages points =
+                            kernel.point_averages(fe, u, T, history);
+                        ElasticityKernel::CellAverages averages{};
+                        averages.stress = points.stress;
+                        averages.strain = points.strain;
+                        result.push_back(averages);
+                      });
+  return result;
+}
+
+std::vector<ElasticityKernel::PointAverages> CoupledProblem::point_averages(const Vector &x)
+{
+  std::vector<ElasticityKernel::PointAverages> result;
+  for_each_owned_cell(x, [&result](const ElasticityKernel &kernel, const ElementValues &fe,
+                                   const std::vector<double> &T, const std::vector<Point> &u,
+                                   const ElasticityKernel::PointHistory &history)
+                      { result.push_back(kernel.point_averages(fe, u, T, history)); });
   return result;
 }
 } // namespace kiln

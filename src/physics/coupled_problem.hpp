@@ -19,6 +19,8 @@
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,10 +43,13 @@ class CoupledProblem final : public TransientProblem
 public:
   /// `thermal` and `mechanics` have been validated against ThermalPhysics and
   /// MechanicalPhysics::valid_parameters(); each is read if the layout has its field.
-  /// `where` names the root in messages ("in.xml: Kiln").
+  /// `where` names the root in messages ("in.xml: Kiln"). With `materials` (read during
+  /// the construction), the mechanics takes each block's material and model (MechanicalPhysics)
+  /// and, if a model has state, the problem makes its QuadratureState; the heat equation and the
+  /// scales take `material`.
   CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                  const Teuchos::ParameterList &thermal, const Teuchos::ParameterList &mechanics,
-                 const std::string &where);
+                 const std::string &where, const MaterialMap *materials = nullptr);
   ~CoupledProblem() override;
 
   Teuchos::RCP<const Map> solution_map() const override { return dofs_.owned_dof_map(); }
@@ -92,6 +97,8 @@ public:
   void set_quadrature_state(std::unique_ptr<QuadratureState> state)
   {
     quadrature_state_ = std::move(state);
+    if (mechanics_)
+      mechanics_->block_elasticity().set_state(quadrature_state_.get());
   }
   QuadratureState *quadrature_state() { return quadrature_state_.get(); }
   const QuadratureState *quadrature_state() const { return quadrature_state_.get(); }
@@ -115,6 +122,9 @@ public:
   std::vector<Point> node_displacements(const Vector &x);
   /// Volume averages over each owned cell (owned_cells() order).
   std::vector<ElasticityKernel::CellAverages> cell_averages(const Vector &x);
+  /// Per owned cell: averages of σ, ε, the von Mises stress and the plastic strain and rate
+  /// at the step's end (the state being computed, which the last step accepted).
+  std::vector<ElasticityKernel::PointAverages> point_averages(const Vector &x);
   /// Contact per mesh node, on every rank: the normal traction across the gap (-p, negative
   /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap. A node where gaps
   /// cross shows its pair of the first gap (Mesh::gap_side_sets order). pair_traction and
@@ -185,5 +195,13 @@ private:
   Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
   std::unique_ptr<QuadratureState> quadrature_state_; ///< null: no model with state
+  /// Calls `visit` on each owned cell (owned order) with its kernel, values, nodal T and u
+  /// at x, and its output history (BlockElasticityKernel::output_history).
+  using CellVisitor = std::function<void(const ElasticityKernel &, const ElementValues &,
+                                         const std::vector<double> &, const std::vector<Point> &,
+                                         const ElasticityKernel::PointHistory &)>;
+  void for_each_owned_cell(const Vector &x, const CellVisitor &visit);
+  /// The time of the last accepted step (NaN before one): Δt of the next.
+  double accepted_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 } // namespace kiln

@@ -33,6 +33,8 @@ struct CellState
   double dTdot_dT;          ///< a in Tdot = a T + b [1/s]
   double time;              ///< [s]
   FieldSlots slots;
+  int cell = -1;       ///< its global index (mesh.block_id[cell]: its material's block)
+  int cell_local = -1; ///< its index among the owned cells (QuadratureState's)
 };
 
 class CellKernel

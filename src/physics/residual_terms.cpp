@@ -123,8 +123,10 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
   std::vector<int> nodes;
   std::array<double, max_cell_nodes> T{}, T_dot{};
   std::array<Point, max_cell_nodes> u{};
+  int cell_local = -1;
   for (const int c : dofs_.owned_cells())
   {
+    ++cell_local;
     const Span<const int> cell = mesh_.cell_nodes(c);
     const int n = cell.size();
     nodes.assign(cell.begin(), cell.end());
@@ -135,7 +137,8 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
       u[i] = fields.u(nodes[i]);
     }
     const CellState state{
-        fe, {T.data(), n}, {T_dot.data(), n}, {u.data(), n}, fields.a(), fields.time(), slots_};
+        fe, {T.data(), n}, {T_dot.data(), n}, {u.data(), n}, fields.a(), fields.time(), slots_,
+        c,  cell_local};
     internal::naming(
         [&]
         {

@@ -98,6 +98,10 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
                      "is \"Contact Dependent\", which needs the contact state: set Kiln/"
                      "\"Physics\" to \"Thermo-Elasticity\" with Mechanics/Contact/\"Enabled\" "
                      "true, or use \"Constant\"");
+    KILN_CHECK_INPUT(material.elastically_constant(), where + "/\"Gap Conductance Model\"",
+                     "is \"Contact Dependent\", which takes constant elastic constants and "
+                     "expansion, but the material's depend on T; give them as numbers, or use "
+                     "\"Constant\"");
     ContactConductanceKernel::Parameters k;
     k.h0 = h;
     k.length = thermal.get<double>("Gap Width Scale");

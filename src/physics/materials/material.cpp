@@ -1,5 +1,9 @@
 #include "physics/materials/material.hpp"
 
+#include "physics/materials/constitutive_models.hpp"
+#include "physics/materials/linear_elastic_model.hpp"
+#include "physics/materials/material_elastic_model.hpp"
+
 #include "base/errors.hpp"
 #include "base/log.hpp"
 #include "base/parameters.hpp"
@@ -85,6 +89,10 @@ Teuchos::ParameterList Material::valid_parameters()
         "T_ref, the stress-free temperature: the thermal strain is alpha(T) (T - T_ref); a "
         "number, must be > 0 [K]",
         positive_double_validator());
+  p.set("Model", constitutive_model_parameters(),
+        "The mechanical constitutive model (doc/materials.md): \"Type\" and that model's "
+        "parameters; its elastic constants, when not given here, are the material's. Without "
+        "it, linear elasticity from the material's constants");
   return p;
 }
 
@@ -95,9 +103,49 @@ Material::Material(const Teuchos::ParameterList &p, const std::string &where)
       conductivity_(p.sublist("Conductivity"), where + "/Conductivity", PropertyRange::positive()),
       thermal_expansion_(p.sublist("Thermal Expansion"), where + "/Thermal Expansion",
                          PropertyRange::nonnegative()),
-      reference_temperature_(p.get<double>("Reference Temperature"))
+      reference_temperature_(p.get<double>("Reference Temperature")),
+      model_given_(given_in_input(p, "Model")), where_(where)
 {
   set_elasticity(p, where);
+  if (model_given_)
+  {
+    model_ = p.sublist("Model");
+    mechanical_model(); // its errors now, with the material's others
+  }
+}
+
+bool Material::elastically_constant() const
+{
+  return first_.is_constant() && second_.is_constant() && thermal_expansion_.is_constant();
+}
+
+std::shared_ptr<const ConstitutiveModel> Material::mechanical_model() const
+{
+  const double T_ref = reference_temperature_;
+  if (!model_given_)
+  {
+    if (elastically_constant())
+      return std::make_shared<LinearElasticModel>(lame_lambda(T_ref), shear_modulus(T_ref),
+                                                  thermal_expansion(T_ref), T_ref);
+    return std::make_shared<MaterialElasticModel>(*this);
+  }
+  Teuchos::ParameterList p = model_;
+  const std::pair<std::string, double> own[] = {{"Lame Lambda", lame_lambda(T_ref)},
+                                                {"Shear Modulus", shear_modulus(T_ref)},
+                                                {"Thermal Expansion", thermal_expansion(T_ref)},
+                                                {"Reference Temperature", T_ref}};
+  for (const auto &[name, value] : own)
+    if (!given_in_input(model_, name))
+    {
+      KILN_CHECK_INPUT(elastically_constant(), where_ + "/Model/\"" + name + "\"",
+                       "is not given, so it would be the material's, but the material's "
+                       "elastic constants or expansion depend on T, which the \""
+                           << p.get<std::string>("Type")
+                           << "\" model does not take; give it in Model, or give the "
+                              "material's elastic constants and expansion as numbers");
+      p.set(name, value);
+    }
+  return create_constitutive_model(p, where_, "Model");
 }
 
 /// Reads whichever pair of elastic constants the input gives, (E, nu) or (lambda, G), and

@@ -1,10 +1,12 @@
 #pragma once
 /// A material: the properties every physics kernel reads, each a function of temperature.
 #include "physics/materials/conductivity_model.hpp"
+#include "physics/materials/constitutive_model.hpp"
 #include "physics/materials/temperature_function.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,15 @@ public:
   /// the secant coefficient is measured from).
   double reference_temperature() const { return reference_temperature_; }
 
+  /// The mechanical constitutive model of the material (its "Model" sublist, doc/materials.md):
+  /// without one, linear elasticity from the material's constants (a LinearElasticModel if
+  /// they are numbers, the kernels' fast path; else a MaterialElasticModel of E(T), nu(T),
+  /// alpha(T)); with one, the registry's model of its "Type", whose elastic constants not
+  /// given in it are the material's (which must then be numbers: an InputError otherwise).
+  std::shared_ptr<const ConstitutiveModel> mechanical_model() const;
+  /// Whether the elastic constants and the expansion do not depend on T.
+  bool elastically_constant() const;
+
   /// Whether no property depends on T.
   bool is_constant() const { return temperature_dependent_properties().empty(); }
   /// The input names of the properties that depend on T ("Young's Modulus", ...), in input
@@ -103,5 +114,10 @@ private:
   TemperatureFunction second_ = TemperatureFunction::constant(2.6e10);
   TemperatureFunction thermal_expansion_ = TemperatureFunction::constant(2.2e-5);
   double reference_temperature_ = 298.0;
+  /// The "Model" sublist as validated, whether the input gave it, and the material's place in
+  /// messages.
+  Teuchos::ParameterList model_;
+  bool model_given_ = false;
+  std::string where_;
 };
 } // namespace kiln

@@ -104,8 +104,18 @@ bool MaterialMap::all_constant() const
                      [](const Material &m) { return m.is_constant(); });
 }
 
-const Material &MaterialMap::uniform_material() const
+const Material &MaterialMap::uniform_material(const bool heat) const
 {
+  if (!heat)
+  {
+    for (int i = 0; i < n_materials(); ++i)
+      for (const std::string &property : materials_[i].temperature_dependent_properties())
+        KILN_CHECK_INPUT(property != "Density", paths_[i] + "/\"" + property + "\"",
+                         "depends on temperature, but the body force takes a constant "
+                         "density yet; give a number (the value at the temperatures of "
+                         "interest)");
+    return materials_.front();
+  }
   if (n_materials() > 1)
   {
     std::ostringstream which;
@@ -114,15 +124,16 @@ const Material &MaterialMap::uniform_material() const
             << (blocks_[i].size() == 1 ? " " : "s ") << listed(blocks_[i]);
     KILN_CHECK_INPUT(false, paths_.front().substr(0, paths_.front().rfind('/')),
                      "gives " << n_materials() << " materials (" << which.str()
-                              << "); several materials need the kernels to take the material "
-                                 "of each cell's block, which Kiln does not do yet: give one "
-                                 "material for every block");
+                              << "); the mechanics takes the material of each cell's block, "
+                                 "but the heat equation does not yet: give one material for "
+                                 "every block, or Physics \"Elasticity\"");
   }
   for (const std::string &property : materials_.front().temperature_dependent_properties())
-    KILN_CHECK_INPUT(property == "Conductivity", paths_.front() + "/\"" + property + "\"",
-                     "depends on temperature, but the kernels take only the conductivity as a "
-                     "function of T yet; give a number (the value at the temperatures of "
-                     "interest)");
+    KILN_CHECK_INPUT(property != "Density" && property != "Specific Heat",
+                     paths_.front() + "/\"" + property + "\"",
+                     "depends on temperature, but the heat equation takes only the "
+                     "conductivity and the elastic constants and expansion as functions of T "
+                     "yet; give a number (the value at the temperatures of interest)");
   return materials_.front();
 }
 } // namespace kiln

@@ -45,11 +45,13 @@ public:
   /// Whether no property of any material depends on T.
   bool all_constant() const;
 
-  /// The material of every block, for the kernels of today, which take one material with
-  /// constant properties except the conductivity. Throws InputError if there are several
-  /// materials, or if a property other than "Conductivity" depends on T (naming it): the
-  /// kernels do not take these yet.
-  const Material &uniform_material() const;
+  /// The material of the heat kernels and of the problem's scales: the mechanics takes each
+  /// block's material and its T-dependent elastic constants and expansion (MechanicalPhysics),
+  /// the heat equation one material with a constant rho c and k(T). With `heat`, throws
+  /// InputError if there are several materials, or if the density or the specific heat
+  /// depends on T (naming it); without, returns the first material and throws if a density
+  /// depends on T (the body force takes a constant rho).
+  const Material &uniform_material(bool heat = true) const;
 
 private:
   std::vector<Material> materials_;

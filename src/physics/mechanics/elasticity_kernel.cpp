@@ -1,6 +1,9 @@
 #include "physics/mechanics/elasticity_kernel.hpp"
 
 #include "base/errors.hpp"
+#include "physics/materials/linear_elastic_model.hpp"
+
+#include <cmath>
 
 namespace kiln
 {
@@ -64,7 +67,218 @@ void add_to_voigt(const double w, const Tensor &t, Voigt &v)
   v[4] += w * t[0][2];
   v[5] += w * t[1][2];
 }
+/// The Voigt vector (tensor shear components) of a symmetric tensor.
+Voigt to_voigt(const Tensor &t)
+{
+  return {t[0][0], t[1][1], t[2][2], t[0][1], t[0][2], t[1][2]};
+}
+
+/// The Voigt index of tensor component (d, k).
+constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+
+/// sqrt(3/2 s:s), s the deviator of σ (Voigt, shear components counted twice) [Pa].
+double von_mises_of(const Voigt &s)
+{
+  const double mean = (s[0] + s[1] + s[2]) / 3.0;
+  double ss = 0.0;
+  for (int I = 0; I < 3; ++I)
+    ss += (s[I] - mean) * (s[I] - mean);
+  for (int I = 3; I < 6; ++I)
+    ss += 2.0 * s[I] * s[I];
+  return std::sqrt(1.5 * ss);
+}
+
+/// The fast path's constants of `model` if it is a constant linear-elastic model, else null.
+const LinearElasticModel *fast_model(const ConstitutiveModel &model)
+{
+  return model.constant_linear() ? dynamic_cast<const LinearElasticModel *>(&model) : nullptr;
+}
 } // namespace
+
+ElasticityKernel::ElasticityKernel(std::shared_ptr<const ConstitutiveModel> model,
+                                   const Point &body_force)
+    : lambda_(0.0), G_(0.0), alpha_(0.0), T_ref_(0.0), thermal_modulus_(0.0),
+      body_force_(body_force)
+{
+  KILN_ASSERT(model != nullptr, "an elasticity kernel without a model");
+  if (const LinearElasticModel *linear = fast_model(*model))
+  {
+    lambda_ = linear->lame_lambda();
+    G_ = linear->shear_modulus();
+    alpha_ = linear->thermal_expansion();
+    T_ref_ = linear->reference_temperature();
+    thermal_modulus_ = (3.0 * lambda_ + 2.0 * G_) * alpha_;
+  }
+  else
+    model_ = std::move(model);
+}
+
+void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDisplacements &u,
+                                       const NodalValues &T, const PointHistory &history,
+                                       std::vector<PointResponse> &responses,
+                                       std::vector<Voigt> *strains) const
+{
+  const int n_state = model_->n_state();
+  // Without a given state (a cell evaluated outside a run's steps) the points start from the
+  // model's initial state and their new state is dropped.
+  std::vector<double> scratch_old, scratch_new;
+  const double *old_state = history.old_state;
+  double *new_state = history.new_state;
+  if (n_state > 0 && (old_state == nullptr || new_state == nullptr))
+  {
+    scratch_old.resize(static_cast<std::size_t>(n_state) * fe.n_qpoints());
+    scratch_new.resize(scratch_old.size());
+    for (int q = 0; q < fe.n_qpoints(); ++q)
+      model_->initial_state(scratch_old.data() + q * n_state);
+    old_state = old_state != nullptr ? old_state : scratch_old.data();
+    new_state = new_state != nullptr ? new_state : scratch_new.data();
+  }
+  const bool has_old = history.T_old.size() == T.size();
+  responses.resize(fe.n_qpoints());
+  if (strains != nullptr)
+    strains->resize(fe.n_qpoints());
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+  {
+    PointInput in;
+    in.strain = to_voigt(strain_at(fe, u, q));
+    for (int j = 0; j < fe.n_shape(); ++j)
+    {
+      in.temperature += fe.shape(j, q) * T[j];
+      in.temperature_old += fe.shape(j, q) * (has_old ? history.T_old[j] : T[j]);
+    }
+    in.time_step = history.time_step;
+    responses[q] = PointResponse{};
+    model_->evaluate(in, n_state > 0 ? old_state + q * n_state : nullptr,
+                     n_state > 0 ? new_state + q * n_state : nullptr, responses[q]);
+    if (strains != nullptr)
+      (*strains)[q] = in.strain;
+  }
+}
+
+void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisplacements &u,
+                                        const NodalValues &T, const PointHistory &history,
+                                        const Point &body_force, const int u_slot, const int T_slot,
+                                        LocalSystem &local) const
+{
+  std::vector<PointResponse> responses;
+  evaluate_points(fe, u, T, history, responses, nullptr);
+  const int n = fe.n_shape();
+  const bool jacobian = local.has_jacobian();
+  const bool coupled = T_slot >= 0 && jacobian;
+  // ∂σ_I/∂u_{j,e} at a point: C B, B_{I,(j,e)} = ∂ε_I/∂u_{j,e} (tensor shear strains).
+  std::vector<Voigt> dstress(static_cast<std::size_t>(3 * n));
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+  {
+    const double JxW = fe.JxW(q);
+    const PointResponse &r = responses[q];
+    if (jacobian)
+      for (int j = 0; j < n; ++j)
+      {
+        const Point &g = fe.grad(j, q);
+        for (int e = 0; e < 3; ++e)
+        {
+          // ∂ε_dk/∂u_{j,e} = (δ_de g_k + δ_ke g_d) / 2.
+          Voigt B{};
+          for (int d = 0; d < 3; ++d)
+            for (int k = d; k < 3; ++k)
+              B[voigt_index[d][k]] = d == k ? (d == e ? g[d] : 0.0)
+                                            : 0.5 * ((d == e ? g[k] : 0.0) + (k == e ? g[d] : 0.0));
+          Voigt &column = dstress[3 * j + e];
+          for (int I = 0; I < 6; ++I)
+          {
+            double value = 0.0;
+            for (int J = 0; J < 6; ++J)
+              value += r.tangent[I][J] * B[J];
+            column[I] = value;
+          }
+        }
+      }
+    for (int i = 0; i < n; ++i)
+    {
+      const Point &g_i = fe.grad(i, q);
+      const double phi_i = fe.shape(i, q);
+      for (int d = 0; d < 3; ++d)
+      {
+        double value = -body_force[d] * phi_i;
+        for (int k = 0; k < 3; ++k)
+          value += r.stress[voigt_index[d][k]] * g_i[k];
+        local.residual(u_slot + d, i) += value * JxW;
+        if (!jacobian)
+          continue;
+        for (int j = 0; j < n; ++j)
+        {
+          for (int e = 0; e < 3; ++e)
+          {
+            const Voigt &column = dstress[3 * j + e];
+            double K = 0.0;
+            for (int k = 0; k < 3; ++k)
+              K += column[voigt_index[d][k]] * g_i[k];
+            local.jacobian(u_slot + d, i, u_slot + e, j) += K * JxW;
+          }
+          if (coupled)
+          {
+            double K = 0.0;
+            for (int k = 0; k < 3; ++k)
+              K += r.stress_temperature_derivative[voigt_index[d][k]] * g_i[k];
+            local.jacobian(u_slot + d, i, T_slot, j) += K * fe.shape(j, q) * JxW;
+          }
+        }
+      }
+    }
+  }
+}
+
+ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementValues &fe,
+                                                                 const NodalDisplacements &u,
+                                                                 const NodalValues &T,
+                                                                 const PointHistory &history) const
+{
+  PointAverages averages;
+  if (model_ == nullptr)
+  {
+    const CellAverages cell = cell_averages(fe, u, T);
+    averages.stress = cell.stress;
+    averages.strain = cell.strain;
+    averages.von_mises = von_mises_of(cell.stress);
+    return averages;
+  }
+  std::vector<PointResponse> responses;
+  std::vector<Voigt> strains;
+  // The points at the state `history.old_state` with Δt = 0: the stress of that state, whose
+  // next state goes to a scratch copy (the averages never move the state).
+  std::vector<double> scratch(static_cast<std::size_t>(model_->n_state()) * fe.n_qpoints());
+  PointHistory copy = history;
+  copy.time_step = 0.0;
+  copy.new_state = scratch.empty() ? nullptr : scratch.data();
+  evaluate_points(fe, u, T, copy, responses, &strains);
+  double volume = 0.0;
+  const int n_state = model_->n_state();
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+  {
+    const double JxW = fe.JxW(q);
+    for (int I = 0; I < 6; ++I)
+    {
+      averages.stress[I] += JxW * responses[q].stress[I];
+      averages.strain[I] += JxW * strains[q][I];
+    }
+    averages.von_mises += JxW * von_mises_of(responses[q].stress);
+    if (n_state > 0 && history.old_state != nullptr)
+    {
+      const double *state = history.old_state + q * n_state;
+      averages.plastic_strain += JxW * model_->equivalent_plastic_strain(state);
+      averages.plastic_strain_rate += JxW * model_->plastic_strain_rate(state);
+    }
+    volume += JxW;
+  }
+  for (double &v : averages.stress)
+    v /= volume;
+  for (double &v : averages.strain)
+    v /= volume;
+  averages.von_mises /= volume;
+  averages.plastic_strain /= volume;
+  averages.plastic_strain_rate /= volume;
+  return averages;
+}
 
 ElasticityKernel::ElasticityKernel(const double lambda, const double G, const double alpha,
                                    const double T_ref, const Point &body_force)
@@ -75,7 +289,22 @@ ElasticityKernel::ElasticityKernel(const double lambda, const double G, const do
 
 void ElasticityKernel::evaluate(const CellState &state, LocalSystem &local) const
 {
-  evaluate(state.fe, state.u, state.T, body_force_, state.slots.u, state.slots.T, local);
+  if (model_ != nullptr)
+    assemble_general(state.fe, state.u, state.T, PointHistory{}, body_force_, state.slots.u,
+                     state.slots.T, local);
+  else
+    evaluate(state.fe, state.u, state.T, body_force_, state.slots.u, state.slots.T, local);
+}
+
+void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacements &u,
+                                const NodalValues &T, const PointHistory &history,
+                                const Point &body_force, const int u_slot, const int T_slot,
+                                LocalSystem &local) const
+{
+  if (model_ == nullptr)
+    evaluate(fe, u, T, body_force, u_slot, T_slot, local);
+  else
+    assemble_general(fe, u, T, history, body_force, u_slot, T_slot, local);
 }
 
 /// The cell's terms with per-cell buffers of capacity N >= fe.n_shape(). With `exact` the

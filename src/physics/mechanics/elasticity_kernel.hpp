@@ -3,15 +3,14 @@
 #include "discretization/element_values.hpp"
 #include "discretization/local_system.hpp"
 #include "physics/kernel.hpp"
+#include "physics/materials/constitutive_model.hpp"
 
 #include <array>
+#include <memory>
+#include <vector>
 
 namespace kiln
 {
-/// Voigt order used everywhere: xx, yy, zz, xy, xz, yz; strains are TENSOR components
-/// (eps_xy, not gamma_xy = 2 eps_xy).
-using Voigt = std::array<double, 6>;
-
 /// Static equilibrium of a linear thermo-elastic solid:  -div σ(u, T) = b.
 ///
 ///   ε = sym ∇u,   σ = λ tr(ε) I + 2G ε − β (T − T_ref) I,   β = (3λ + 2G) α
@@ -25,6 +24,14 @@ using Voigt = std::array<double, 6>;
 /// (fields u_slot .. u_slot + 2) are touched, and the temperature columns (field T_slot) only
 /// when T_slot >= 0, so the kernel serves the mechanical system (3 unknowns per node, T given)
 /// and the coupled one (4 per node) alike.
+///
+/// General path (a kernel made from a ConstitutiveModel that is not constant_linear(): a
+/// T-dependent or viscoplastic law): at each point the model gives σ(ε, T, state), its tangent
+/// C = ∂σ/∂ε and ∂σ/∂T, and
+///   R_{i,d}           = ∫ (σ_dk ∂_k φ_i − b_d φ_i) dΩ
+///   dR_{i,d}/du_{j,e} = ∫ ∂_k φ_i C_{dk,I} B_{I,(j,e)} dΩ,  B = ∂ε/∂u (tensor shear strains)
+///   dR_{i,d}/dT_j     = ∫ ∂_k φ_i (∂σ/∂T)_dk φ_j dΩ.
+/// A constant linear-elastic model keeps the fast Hooke path above (bit-identical results).
 class ElasticityKernel final : public CellKernel
 {
 public:
@@ -38,6 +45,45 @@ public:
   ElasticityKernel(double lambda, double G, double alpha, double T_ref,
                    const Point &body_force = Point{});
 
+  /// The kernel of `model` (shared: a block's model serves its cells). A constant_linear()
+  /// LinearElasticModel takes the fast Hooke path with its constants; any other model the
+  /// general path (state through evaluate_points()).
+  ElasticityKernel(std::shared_ptr<const ConstitutiveModel> model, const Point &body_force);
+
+  /// The general path's inputs beyond the cell's u and T: the temperature at t_n at the nodes
+  /// (empty: T itself), Δt [s], and the cell's state at t_n and t_{n+1}, n_state() doubles per
+  /// point, point after point (QuadratureState::old(c, 0), current(c, 0); null if no state).
+  struct PointHistory
+  {
+    Span<const double> T_old{nullptr, 0};
+    double time_step = 0.0;
+    const double *old_state = nullptr;
+    double *new_state = nullptr;
+  };
+  /// Whether the kernel runs the general path (a model that is not constant_linear()).
+  bool general() const { return model_ != nullptr; }
+  /// Its model on the general path (null on the fast path).
+  const ConstitutiveModel *model() const { return model_.get(); }
+  /// As evaluate(fe, ...) with the point history of the general path (on the fast path the
+  /// history is ignored).
+  void evaluate(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
+                const PointHistory &history, const Point &body_force, int u_slot, int T_slot,
+                LocalSystem &local) const;
+  /// The general path's cell averages of σ, ε, the von Mises stress [Pa], the equivalent
+  /// plastic strain [-] and its rate [1/s] at the points' state `history.old_state` (for
+  /// output: the state of the step's end), the model taken with Δt = 0 (the stress of that
+  /// state, the state unchanged); the history's other members are not read.
+  struct PointAverages
+  {
+    Voigt stress{};
+    Voigt strain{};
+    double von_mises = 0.0;
+    double plastic_strain = 0.0;
+    double plastic_strain_rate = 0.0;
+  };
+  PointAverages point_averages(const ElementValues &fe, const NodalDisplacements &u,
+                               const NodalValues &T, const PointHistory &history) const;
+
   /// Adds to `local` (one node per cell node) the residual [N] at local field index u_slot + d (d =
   /// 0, 1, 2) of local node i, the Jacobian d/du_{j,e} [N/m] (field u_slot + e) and, if T_slot >=
   /// 0, d/dT_j [N/K] (field T_slot). body_force b [N/m^3] is constant over the cell.
@@ -45,8 +91,8 @@ public:
                 const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
   /// The same from a cell's state, with the body force given at construction.
   void evaluate(const CellState &state, LocalSystem &local) const override;
-  /// Linear thermo-elasticity.
-  bool constant_jacobian() const override { return true; }
+  /// Linear thermo-elasticity (the fast path).
+  bool constant_jacobian() const override { return model_ == nullptr; }
 
   /// Volume averages over the cell: stress [Pa], total strain ε [-] and thermal strain
   /// α (T − T_ref) I [-].
@@ -60,7 +106,9 @@ public:
   CellAverages cell_averages(const ElementValues &fe, const NodalDisplacements &u,
                              const NodalValues &T) const;
 
-  /// λ [Pa].
+  /// b [N/m^3], the body force of evaluate(CellState).
+  const Point &body_force() const { return body_force_; }
+  /// λ [Pa] (0 on the general path).
   double lambda() const { return lambda_; }
   /// G [Pa].
   double shear_modulus() const { return G_; }
@@ -85,5 +133,14 @@ private:
   /// β = (3λ + 2G) α [Pa/K]: the stress of a blocked unit temperature rise.
   double thermal_modulus_;
   Point body_force_;
+  /// The general path's model (null: the fast path).
+  std::shared_ptr<const ConstitutiveModel> model_;
+  /// σ, C and ∂σ/∂T at each point of the general path, by calling the model.
+  void evaluate_points(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
+                       const PointHistory &history, std::vector<PointResponse> &responses,
+                       std::vector<Voigt> *strains) const;
+  void assemble_general(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
+                        const PointHistory &history, const Point &body_force, int u_slot,
+                        int T_slot, LocalSystem &local) const;
 };
 } // namespace kiln

@@ -56,12 +56,50 @@ Teuchos::ParameterList MechanicalPhysics::valid_parameters()
   return p;
 }
 
+namespace
+{
+/// One kernel per material of `materials`, or `material`'s alone. The body force ρ g + f
+/// takes each material's ρ at its T_ref.
+std::vector<ElasticityKernel> elasticity_kernels(const Teuchos::ParameterList &mechanics,
+                                                 const Material &material,
+                                                 const MaterialMap *materials,
+                                                 const std::string &where)
+{
+  std::vector<ElasticityKernel> kernels;
+  if (materials == nullptr)
+  {
+    kernels.emplace_back(material.lame_lambda(), material.shear_modulus(),
+                         material.thermal_expansion(), material.reference_temperature(),
+                         internal::body_force(mechanics, material.density(), where));
+    return kernels;
+  }
+  for (int i = 0; i < materials->n_materials(); ++i)
+  {
+    const Material &m = materials->material(i);
+    kernels.emplace_back(
+        m.mechanical_model(),
+        internal::body_force(mechanics, m.density(m.reference_temperature()), where));
+  }
+  return kernels;
+}
+
+/// Block id -> material index of `materials` (empty without).
+std::map<int, int> kernel_of_block(const Mesh &mesh, const MaterialMap *materials)
+{
+  std::map<int, int> result;
+  if (materials != nullptr)
+    for (const int block : mesh.block_ids())
+      result[block] = materials->index_of_block(block);
+  return result;
+}
+} // namespace
+
 MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
                                      const Material &material, const Mesh &mesh,
-                                     const InteriorFaceCheck &interior, const std::string &where)
-    : elasticity_(material.lame_lambda(), material.shear_modulus(), material.thermal_expansion(),
-                  material.reference_temperature(),
-                  internal::body_force(mechanics, material.density(), where))
+                                     const InteriorFaceCheck &interior, const std::string &where,
+                                     const MaterialMap *materials)
+    : elasticity_(mesh, elasticity_kernels(mechanics, material, materials, where),
+                  kernel_of_block(mesh, materials))
 {
   conditions_ =
       read_boundary_conditions(mechanical_conditions(), mechanics.sublist("Boundary Conditions"),

@@ -4,6 +4,8 @@
 #include "mesh/mesh.hpp"
 #include "physics/boundary_condition.hpp"
 #include "physics/materials/material.hpp"
+#include "physics/materials/material_map.hpp"
+#include "physics/mechanics/block_elasticity_kernel.hpp"
 #include "physics/mechanics/elasticity_kernel.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -25,18 +27,23 @@ public:
 
   /// `mechanics` has been validated against valid_parameters(); `where` names it ("in.xml:
   /// Kiln/Mechanics").
+  /// With `materials`, each block's cells take its material's mechanical_model() (and body
+  /// force); without, every cell `material`'s constants.
   MechanicalPhysics(const Teuchos::ParameterList &mechanics, const Material &material,
-                    const Mesh &mesh, const InteriorFaceCheck &interior, const std::string &where);
+                    const Mesh &mesh, const InteriorFaceCheck &interior, const std::string &where,
+                    const MaterialMap *materials = nullptr);
 
-  const ElasticityKernel &elasticity() const { return elasticity_; }
+  /// The kernel of the first material (of every cell with one material).
+  const ElasticityKernel &elasticity() const { return elasticity_.kernels().front(); }
+  /// The kernels of each block.
+  const BlockElasticityKernel &block_elasticity() const { return elasticity_; }
+  BlockElasticityKernel &block_elasticity() { return elasticity_; }
   /// The kernels of every cell (a new cell kernel of the mechanics is added here).
   std::vector<const CellKernel *> cell_kernels() const { return {&elasticity_}; }
-  /// lambda + 2G [Pa], the scale of the force rows.
-  double modulus() const { return elasticity_.lambda() + 2.0 * elasticity_.shear_modulus(); }
   const std::vector<std::unique_ptr<BoundaryCondition>> &conditions() const { return conditions_; }
 
 private:
-  ElasticityKernel elasticity_;
+  BlockElasticityKernel elasticity_;
   std::vector<std::unique_ptr<BoundaryCondition>> conditions_;
 };
 } // namespace kiln

@@ -14,6 +14,8 @@
 #include "discretization/local_system.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/materials/constitutive_models.hpp"
+#include "physics/materials/linear_elastic_model.hpp"
 #include "support/jacobian_check.hpp"
 #include "support/reference_cells.hpp"
 
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 namespace
@@ -115,6 +118,31 @@ std::vector<double> residual_of(const kiln::ElasticityKernel &kernel, const kiln
 const Matrix gradient_E = {
     {{1.0e-3, -4.0e-4, 2.5e-4}, {6.0e-4, -7.0e-4, 3.0e-4}, {-2.0e-4, 9.0e-4, 5.0e-4}}};
 
+/// The unknowns of the distorted cell's 8 nodes, (T, u_x, u_y, u_z) per node: T around
+/// T_ref + 40 K, u a small wiggle plus `scale` times the affine gradient_E.
+std::vector<double> cell_unknowns(const kiln::HexNodes &x, const double scale)
+{
+  std::vector<double> state(32);
+  for (int i = 0; i < 8; ++i)
+  {
+    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
+    for (int d = 0; d < 3; ++d)
+      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + scale * dot(gradient_E[d], x[i]);
+  }
+  return state;
+}
+
+/// The nodal u and T of cell_unknowns().
+void unpack(const std::vector<double> &s, NodalDisplacements &u, NodalValues &T)
+{
+  for (int i = 0; i < 8; ++i)
+  {
+    T[i] = s[4 * i];
+    for (int d = 0; d < 3; ++d)
+      u[i][d] = s[4 * i + 1 + d];
+  }
+}
+
 const kiln::ElasticityKernel kernel(lambda, G, alpha, T_ref);
 } // namespace
 
@@ -133,23 +161,8 @@ TEST(ElasticityKernel, JacobianMatchesFiniteDifferencesOnADistortedCell)
   const kiln::HexNodes x = distorted_cell();
   kiln::ElementValues fe;
   kiln_test::reinit(fe, x);
-  std::vector<double> state(32);
-  for (int i = 0; i < 8; ++i)
-  {
-    state[4 * i] = T_ref + 40.0 + 15.0 * std::sin(0.9 * i + 0.3);
-    for (int d = 0; d < 3; ++d)
-      state[4 * i + 1 + d] = 1e-6 * std::cos(1.3 * i - 0.7 * d) + 1e-3 * dot(gradient_E[d], x[i]);
-  }
+  const std::vector<double> state = cell_unknowns(x, 1e-3);
   const Point b{1.0e4, -2.0e4, 7.8e4};
-  const auto unpack = [](const std::vector<double> &s, NodalDisplacements &u, NodalValues &T)
-  {
-    for (int i = 0; i < 8; ++i)
-    {
-      T[i] = s[4 * i];
-      for (int d = 0; d < 3; ++d)
-        u[i][d] = s[4 * i + 1 + d];
-    }
-  };
   const auto residual = [&](const std::vector<double> &s)
   {
     NodalDisplacements u;
@@ -563,4 +576,196 @@ TEST(TractionKernel, PressurePushesAgainstTheOutwardNormal)
     for (int d = 0; d < 3; ++d)
       EXPECT_NEAR(bent.residual(d, i), p * shares.area_vector[i][d], 1e-12 * p)
           << "node " << i << ", " << d;
+}
+
+namespace
+{
+/// Isotropic elasticity with E(T) = E0 (1 + c (T − T_ref)), ν constant and the secant
+/// thermal strain α(T) (T − T_ref), α(T) = α0 (1 + a (T − T_ref)) (doc/materials.md): not
+/// constant_linear(), so the kernel takes its general path.
+class TemperatureDependentElasticity final : public kiln::ConstitutiveModel
+{
+public:
+  void evaluate(const kiln::PointInput &in, const double *, double *,
+                kiln::PointResponse &out) const override
+  {
+    const double dT = in.temperature - T_ref;
+    const double scale = 1.0 + 2e-3 * dT, dscale = 2e-3;
+    const double a = alpha * (1.0 + 1e-3 * dT), thermal = a * dT;
+    const double dthermal = alpha * (1.0 + 2e-3 * dT);
+    kiln::Voigt e = in.strain;
+    for (int I = 0; I < 3; ++I)
+      e[I] -= thermal;
+    const double trace = e[0] + e[1] + e[2];
+    for (int I = 0; I < 6; ++I)
+    {
+      const double base = (I < 3 ? lambda * trace : 0.0) + 2.0 * G * e[I];
+      out.stress[I] = scale * base;
+      // d/dT: dscale * base + scale * (−(3λ + 2G) dthermal on the diagonal).
+      out.stress_temperature_derivative[I] =
+          dscale * base - (I < 3 ? scale * (3.0 * lambda + 2.0 * G) * dthermal : 0.0);
+      for (int J = 0; J < 6; ++J)
+        out.tangent[I][J] = scale * ((I < 3 && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0));
+    }
+  }
+};
+
+/// A Power Law viscoplastic model of the steel-like constants, rate A σ^n exp(−Q/(R T)).
+std::shared_ptr<const kiln::ConstitutiveModel> power_law_model(const double A, const double n,
+                                                               const double Q)
+{
+  Teuchos::ParameterList p;
+  p.set("Type", std::string("Power Law"));
+  p.set("Lame Lambda", lambda);
+  p.set("Shear Modulus", G);
+  p.set("Thermal Expansion", alpha);
+  p.set("Reference Temperature", T_ref);
+  p.set("Power Law A", A);
+  p.set("Power Law n", n);
+  p.set("Power Law Q", Q);
+  p.set("Local Tolerance", 1e-14);
+  return kiln::create_constitutive_model(p, "test", "Model");
+}
+
+/// The general path's Jacobian against central differences on the distorted cell, for u
+/// (strain ~1e-3) and T columns, with `history` fixed (the state at t_n).
+void check_general_jacobian(const kiln::ElasticityKernel &general,
+                            const kiln::ElasticityKernel::PointHistory &history,
+                            const double tolerance)
+{
+  ASSERT_TRUE(general.general());
+  EXPECT_FALSE(general.constant_jacobian());
+  const kiln::HexNodes x = distorted_cell();
+  kiln::ElementValues fe;
+  kiln_test::reinit(fe, x);
+  const std::vector<double> state = cell_unknowns(x, 1.0);
+  const Point b{1.0e4, -2.0e4, 7.8e4};
+  const auto residual_and_jacobian = [&](const std::vector<double> &s, kiln::LocalSystem &local)
+  {
+    NodalDisplacements u;
+    NodalValues T;
+    unpack(s, u, T);
+    general.evaluate(fe, u, T, history, b, 1, 0, local);
+  };
+  const auto residual = [&](const std::vector<double> &s)
+  {
+    kiln::LocalSystem local(8, 4);
+    residual_and_jacobian(s, local);
+    return local.residual_values();
+  };
+  kiln::LocalSystem local(8, 4);
+  residual_and_jacobian(state, local);
+  const Dense J = local_jacobian(local);
+  const Dense fd = finite_difference_jacobian(residual, state,
+                                              [](const int c) { return c % 4 == 0 ? 1e-3 : 1e-9; });
+  double scale_u = 0.0, scale_T = 0.0, error_u = 0.0, error_T = 0.0;
+  for (int r = 0; r < 32; ++r)
+    for (int c = 0; c < 32; ++c)
+    {
+      if (r % 4 == 0)
+      {
+        EXPECT_EQ(J[r][c], 0.0);
+        continue;
+      }
+      const double difference = std::abs(J[r][c] - fd[r][c]);
+      double &scale = c % 4 == 0 ? scale_T : scale_u;
+      double &error = c % 4 == 0 ? error_T : error_u;
+      scale = std::max(scale, std::abs(J[r][c]));
+      error = std::max(error, difference);
+    }
+  ASSERT_GT(scale_u, 0.0);
+  ASSERT_GT(scale_T, 0.0);
+  EXPECT_LT(error_u, tolerance * scale_u);
+  EXPECT_LT(error_T, tolerance * scale_T);
+  std::cout << "general path: max |J - J_fd| / max |J|: u columns " << error_u / scale_u
+            << ", T columns " << error_T / scale_T << "\n";
+}
+/// The distorted cell under an affine displacement and a temperature varying over its nodes.
+struct AffineCell
+{
+  AffineCell()
+  {
+    const kiln::HexNodes x = distorted_cell();
+    kiln_test::reinit(fe, x);
+    u = affine_displacement(x, gradient_E, Point{1e-4, 0.0, -2e-4});
+    for (int i = 0; i < 8; ++i)
+      T[i] = T_ref + 3.0 * i;
+  }
+  kiln::ElementValues fe;
+  NodalDisplacements u;
+  NodalValues T;
+};
+} // namespace
+
+TEST(ElasticityKernel, ConstantLinearModelTakesTheFastPathBitIdentically)
+{
+  const kiln::ElasticityKernel from_model(
+      std::make_shared<kiln::LinearElasticModel>(lambda, G, alpha, T_ref), Point{1.0, 2.0, 3.0});
+  EXPECT_FALSE(from_model.general());
+  EXPECT_TRUE(from_model.constant_jacobian());
+  const AffineCell cell;
+  const kiln::ElementValues &fe = cell.fe;
+  const NodalDisplacements &u = cell.u;
+  const NodalValues &T = cell.T;
+  kiln::LocalSystem a(8, 4), b(8, 4);
+  from_model.evaluate(fe, u, T, Point{1.0, 2.0, 3.0}, 1, 0, a);
+  kernel.evaluate(fe, u, T, Point{1.0, 2.0, 3.0}, 1, 0, b);
+  EXPECT_EQ(a.residual_values(), b.residual_values());
+  EXPECT_EQ(local_jacobian(a), local_jacobian(b));
+}
+
+TEST(ElasticityKernel, GeneralPathOfAConstantModelEqualsTheFastPath)
+{
+  // The Power Law model with A = 0 is elastic but not constant_linear(): the general path
+  // must then give the fast path's residual and Jacobian up to rounding.
+  const kiln::ElasticityKernel general(power_law_model(0.0, 1.0, 0.0), Point{});
+  ASSERT_TRUE(general.general());
+  const AffineCell cell;
+  const kiln::ElementValues &fe = cell.fe;
+  const NodalDisplacements &u = cell.u;
+  const NodalValues &T = cell.T;
+  kiln::LocalSystem a(8, 4), b(8, 4);
+  general.evaluate(fe, u, T, kiln::ElasticityKernel::PointHistory{}, Point{1, 2, 3}, 1, 0, a);
+  kernel.evaluate(fe, u, T, Point{1, 2, 3}, 1, 0, b);
+  const Dense Ja = local_jacobian(a), Jb = local_jacobian(b);
+  EXPECT_LT(max_difference(Ja, Jb), 1e-12 * max_abs(Jb));
+  const std::vector<double> ra = a.residual_values(), rb = b.residual_values();
+  double error = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < ra.size(); ++i)
+  {
+    error = std::max(error, std::abs(ra[i] - rb[i]));
+    scale = std::max(scale, std::abs(rb[i]));
+  }
+  EXPECT_LT(error, 1e-12 * scale);
+}
+
+TEST(ElasticityKernel, GeneralPathJacobianOfTemperatureDependentElasticity)
+{
+  const kiln::ElasticityKernel general(std::make_shared<TemperatureDependentElasticity>(), Point{});
+  check_general_jacobian(general, kiln::ElasticityKernel::PointHistory{}, 1e-7);
+}
+
+TEST(ElasticityKernel, GeneralPathJacobianOfAViscoplasticStep)
+{
+  // A rate that depends on T (Q > 0): ~1e-4 of plastic strain against 1e-3 elastic in 1 s.
+  const auto model = power_law_model(4e-28, 3.0, 1.0e4);
+  ASSERT_GT(model->n_state(), 0);
+  const kiln::ElasticityKernel general(model, Point{});
+  kiln::ElementValues fe;
+  kiln_test::reinit(fe, distorted_cell());
+  const int size = model->n_state() * fe.n_qpoints();
+  std::vector<double> old_state(size), new_state(size);
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+    model->initial_state(old_state.data() + q * model->n_state());
+  NodalValues T_old;
+  T_old.fill(T_ref + 30.0);
+  kiln::ElasticityKernel::PointHistory history;
+  history.T_old = T_old;
+  history.time_step = 1.0;
+  history.old_state = old_state.data();
+  history.new_state = new_state.data();
+  check_general_jacobian(general, history, 1e-5);
+  // The step flowed: some plastic strain at every point.
+  for (int q = 0; q < fe.n_qpoints(); ++q)
+    EXPECT_GT(model->equivalent_plastic_strain(new_state.data() + q * model->n_state()), 0.0);
 }

@@ -1,7 +1,8 @@
 // Tests src/physics/materials/material_map.cpp: Kiln/Material for every block, Kiln/Materials
 // by name with their "Blocks", the messages for a block without material, a block in two
 // materials, an unknown block, both lists given, and the bridge to today's kernels
-// (uniform_material: one material, only the conductivity may depend on T).
+// (uniform_material: one material for the heat equation, whose density and specific heat
+// are numbers; the mechanics takes E(T), nu(T), alpha(T) and several materials).
 // KILN_TEST_NP: 1
 #include "physics/materials/material_map.hpp"
 
@@ -82,8 +83,11 @@ TEST(MaterialMap, MaterialsByNameOnBlocks)
   EXPECT_EQ(map.of_block(2).density(), 7900.0);
   EXPECT_EQ(error_of(user),
             "in.xml: Kiln/Materials: gives 2 materials (\"aluminium\" on block 1, \"steel\" on "
-            "block 2); several materials need the kernels to take the material of each cell's "
-            "block, which Kiln does not do yet: give one material for every block");
+            "block 2); the mechanics takes the material of each cell's block, but the heat "
+            "equation does not yet: give one material for every block, or Physics "
+            "\"Elasticity\"");
+  // Without the heat equation (Physics "Elasticity") the mechanics takes them by block.
+  EXPECT_EQ(map.uniform_material(false).density(), 2700.0);
   // One named material for every block is what Kiln/Material is.
   Teuchos::ParameterList one;
   add_material(one, "steel", 7900.0, {2, 1});
@@ -139,7 +143,7 @@ TEST(MaterialMap, PropertyErrorsNameTheMaterial)
   EXPECT_EQ(error_of(user), "in.xml: Kiln/Materials/steel/\"Density\" = -7900: must be > 0");
 }
 
-TEST(MaterialMap, OnlyTheConductivityMayDependOnTemperatureYet)
+TEST(MaterialMap, TheHeatEquationTakesOnlyTheConductivityAsAFunctionOfTYet)
 {
   Teuchos::ParameterList k_of_T;
   Teuchos::ParameterList &k = k_of_T.sublist("Material").sublist("Conductivity");
@@ -154,8 +158,62 @@ TEST(MaterialMap, OnlyTheConductivityMayDependOnTemperatureYet)
   E.set("Type", "Expression");
   E.set("Expression", "7e10 - 3e7*(T - 300)");
   E_of_T.sublist("Material").set("Poisson's Ratio", 0.33);
+  // The mechanics takes E(T) (its general path).
+  EXPECT_FALSE(make(E_of_T).uniform_material().elastically_constant());
+  EXPECT_TRUE(make(E_of_T).uniform_material().mechanical_model() != nullptr);
+  EXPECT_FALSE(make(E_of_T).uniform_material().mechanical_model()->constant_linear());
+
+  Teuchos::ParameterList rho_of_T;
+  Teuchos::ParameterList &rho = rho_of_T.sublist("Material").sublist("Density");
+  rho.set("Type", "Expression");
+  rho.set("Expression", "7900 - 0.3*(T - 300)");
+  EXPECT_EQ(error_of(rho_of_T),
+            "in.xml: Kiln/Material/\"Density\": depends on temperature, but the heat equation "
+            "takes only the conductivity and the elastic constants and expansion as functions of "
+            "T yet; give a number (the value at the temperatures of interest)");
+}
+
+TEST(MaterialMap, ModelSublistChoosesTheMechanicalModel)
+{
+  // Without Model: the material's constants, the fast path's LinearElasticModel.
+  Teuchos::ParameterList plain;
+  plain.sublist("Material").set("Lame Lambda", 2e9);
+  plain.sublist("Material").set("Shear Modulus", 1e9);
+  const auto elastic = make(plain).uniform_material().mechanical_model();
+  EXPECT_TRUE(elastic->constant_linear());
+  EXPECT_EQ(elastic->n_state(), 0);
+
+  // A Power Law model takes the material's elastic constants where it does not give them.
+  Teuchos::ParameterList power = plain;
+  Teuchos::ParameterList &model = power.sublist("Material").sublist("Model");
+  model.set("Type", "Power Law");
+  model.set("Power Law A", 1e-12);
+  model.set("Power Law n", 0.5);
+  const auto viscoplastic = make(power).uniform_material().mechanical_model();
+  EXPECT_FALSE(viscoplastic->constant_linear());
+  EXPECT_EQ(viscoplastic->n_state(), 8);
+  // A uniaxial strain 1e-3 gives the material's stress (lambda + 2G) 1e-3 = 4e6 Pa.
+  kiln::PointInput in;
+  in.strain[0] = 1e-3;
+  in.temperature = in.temperature_old = 298.0;
+  std::vector<double> old_state(8), new_state(8);
+  viscoplastic->initial_state(old_state.data());
+  kiln::PointResponse out;
+  viscoplastic->evaluate(in, old_state.data(), new_state.data(), out);
+  EXPECT_NEAR(out.stress[0], 4e6, 1e-6);
+  EXPECT_NEAR(out.stress[1], 2e6, 1e-6);
+
+  // With E(T), a model must give its own constants.
+  Teuchos::ParameterList E_of_T = power;
+  Teuchos::ParameterList &material = E_of_T.sublist("Material");
+  material.remove("Lame Lambda");
+  material.remove("Shear Modulus");
+  material.sublist("Young's Modulus").set("Type", "Expression");
+  material.sublist("Young's Modulus").set("Expression", "7e10 - 3e7*(T - 300)");
+  material.set("Poisson's Ratio", 0.33);
   EXPECT_EQ(error_of(E_of_T),
-            "in.xml: Kiln/Material/\"Young's Modulus\": depends on temperature, but the kernels "
-            "take only the conductivity as a function of T yet; give a number (the value at the "
-            "temperatures of interest)");
+            "in.xml: Kiln/Material/Model/\"Lame Lambda\": is not given, so it would be the "
+            "material's, but the material's elastic constants or expansion depend on T, which the "
+            "\"Power Law\" model does not take; give it in Model, or give the material's elastic "
+            "constants and expansion as numbers");
 }
