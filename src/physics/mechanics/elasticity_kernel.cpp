@@ -140,7 +140,7 @@ void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDispl
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     PointInput in;
-    in.strain = to_voigt(strain_at(fe, u, q));
+    in.strain = to_voigt(strain_at(fe, u, q, fe.n_shape()));
     for (int j = 0; j < fe.n_shape(); ++j)
     {
       in.temperature += fe.shape(j, q) * T[j];
