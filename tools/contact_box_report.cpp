@@ -366,7 +366,8 @@ int report(const Options &o)
   // The results: mesh sizes, then the fields of the last step.
   const Results results(o.results);
   const Field coordinates = results.read("/mesh/coordinates", 0, 3);
-  const Field connectivity = results.read("/mesh/connectivity", 0, 8);
+  // The cells of any type: one block id each.
+  const Field connectivity = results.read("/mesh/block_id", 0, 1);
   const std::size_t n_nodes = coordinates.rows, n_cells = connectivity.rows;
   if (n_nodes == 0 || n_cells == 0)
     throw ReportError(o.results + ": the mesh is empty");

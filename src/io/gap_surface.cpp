@@ -37,10 +37,12 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
   {
     if (face.gap != gap)
       continue;
-    std::array<std::int64_t, 4> quad{};
-    for (int i = 0; i < 4; ++i)
-      quad[i] = point_of_pair.at({mesh.face_node(face.cell_a, face.face_a, i), face.node_b[i]});
-    quads.push_back(quad);
+    const ReferenceCell &cell = mesh.reference_cell(face.cell_a);
+    const int n_corners = ReferenceCell::of(cell.face_type(face.face_a)).n_vertices();
+    std::vector<std::int64_t> corners(static_cast<std::size_t>(n_corners));
+    for (int i = 0; i < n_corners; ++i)
+      corners[i] = point_of_pair.at({mesh.face_node(face.cell_a, face.face_a, i), face.node_b[i]});
+    faces.push_back(std::move(corners));
   }
   if (points.empty())
     return;
@@ -50,12 +52,12 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
     normal[d] = length > 0.0 ? normal[d] / length : (d == 0 ? 1.0 : 0.0);
     centroid[d] = total_area > 0.0 ? centroid[d] / total_area : points[0][d];
   }
-  // Along the first edge of the first quadrilateral (a mesh edge: for a structured mesh the
+  // Along the first edge of the first face (a mesh edge: for a structured mesh the
   // axes follow its rows of faces), else the coordinate axis most nearly in the plane.
   Point e_s{0.0, 0.0, 0.0};
-  if (!quads.empty())
+  if (!faces.empty())
     for (int d = 0; d < 3; ++d)
-      e_s[d] = points[quads[0][1]][d] - points[quads[0][0]][d];
+      e_s[d] = points[faces[0][1]][d] - points[faces[0][0]][d];
   else
   {
     int axis = 0;
@@ -78,6 +80,27 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
     s.push_back(dot(r, e_s));
     t.push_back(dot(r, e_t));
   }
+}
+int GapSurface::corners_per_face() const
+{
+  if (faces.empty())
+    return 0;
+  for (const auto &face : faces)
+    if (face.size() != faces.front().size())
+      return 0;
+  return static_cast<int>(faces.front().size());
+}
+
+std::vector<std::int64_t> mixed_gap_connectivity(const GapSurface &gap)
+{
+  std::vector<std::int64_t> list;
+  for (const auto &face : gap.faces)
+  {
+    list.push_back(
+        ReferenceCell::of(face.size() == 3 ? CellType::tri3 : CellType::quad4).xdmf_code());
+    list.insert(list.end(), face.begin(), face.end());
+  }
+  return list;
 }
 } // namespace internal
 } // namespace kiln

@@ -1,7 +1,7 @@
 #pragma once
 /// Private to src/io: a gap (one of the mesh's gap side sets) as a surface of its own, seen
-/// from side a: one point per gap pair, one quadrilateral per cut face, and coordinates in
-/// the gap's plane.
+/// from side a: one point per gap pair, one polygon (its corners) per cut face, and coordinates
+/// in the gap's plane.
 #include "mesh/mesh.hpp"
 
 #include <array>
@@ -13,10 +13,11 @@ namespace kiln
 namespace internal
 {
 /// Point p is the p-th pair of gap `gap` in Mesh::gap_pairs (mesh pair pair[p]): at node_a's
-/// coordinates. Quad q is the q-th cut face of the gap in Mesh::gap_faces, its corners as
-/// point numbers in hex_face_nodes order. The in-plane coordinates (s, t) of a point are measured
+/// coordinates. Face q is the q-th cut face of the gap in Mesh::gap_faces, its corners (a
+/// quadratic face's corners only; its mid-side nodes are points of no face) as point numbers
+/// in ReferenceCell::face_nodes order. The in-plane coordinates (s, t) of a point are measured
 /// from the area-weighted centroid of the gap along e_s and e_t: with n the area-weighted mean
-/// normal, e_s is the first edge of the first quadrilateral projected onto the plane normal
+/// normal, e_s is the first edge of the first face projected onto the plane normal
 /// to n (for a structured mesh, s and t then follow its rows of faces), and e_t = n x e_s.
 /// For a plane gap they are lengths along the gap [m]; for a curved one, along its
 /// projection.
@@ -25,15 +26,20 @@ struct GapSurface
   /// Gap `gap`: an index into Mesh::gap_side_sets.
   GapSurface(const Mesh &mesh, int gap);
   int n_points() const { return static_cast<int>(points.size()); }
-  int n_quads() const { return static_cast<int>(quads.size()); }
+  int n_faces() const { return static_cast<int>(faces.size()); }
+  /// The corners every face has (3 or 4), or 0 when the faces differ (or there are none).
+  int corners_per_face() const;
 
-  std::vector<Point> points;                      ///< [m]
-  std::vector<std::array<std::int64_t, 4>> quads; ///< point numbers
-  std::vector<int> pair;                          ///< its index in Mesh::gap_pairs
-  std::vector<std::int64_t> node_a;               ///< mesh node of each point (side a)
-  std::vector<std::int64_t> node_b;               ///< its twin on side b
-  std::vector<double> area;                       ///< the pair's share of the gap area [m^2]
-  std::vector<double> s, t;                       ///< in-plane coordinates [m]
+  std::vector<Point> points;                    ///< [m]
+  std::vector<std::vector<std::int64_t>> faces; ///< corner point numbers
+  std::vector<int> pair;                        ///< its index in Mesh::gap_pairs
+  std::vector<std::int64_t> node_a;             ///< mesh node of each point (side a)
+  std::vector<std::int64_t> node_b;             ///< its twin on side b
+  std::vector<double> area;                     ///< the pair's share of the gap area [m^2]
+  std::vector<double> s, t;                     ///< in-plane coordinates [m]
 };
+/// The faces of `gap` as XDMF's Mixed topology lists them: per face its XDMF type code
+/// (Triangle 4, Quadrilateral 5) and its corners.
+std::vector<std::int64_t> mixed_gap_connectivity(const GapSurface &gap);
 } // namespace internal
 } // namespace kiln

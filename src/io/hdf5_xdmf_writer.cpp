@@ -102,7 +102,8 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
         value_row.push_back(it->second);
       }
     const internal::OwnedRows rows(owned_points, surface.n_points());
-    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_quads());
+    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_faces(),
+                  surface.corners_per_face(), internal::mixed_gap_connectivity(surface).size());
     gaps.push_back({mesh.gap_name(g), std::move(surface), std::move(owned_points),
                     std::move(value_row), rows, internal::H5Handle()});
   }
@@ -246,23 +247,31 @@ void Hdf5XdmfWriter::Impl::write_gap_surface(const GapGrid &grid) const
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // Rank 0 writes every row (the gap is small and replicated).
-  std::vector<int> all_points, all_quads;
+  // One kind of face: n_faces x corners; both: XDMF's Mixed list (type code, corners).
+  const int corners = gap.corners_per_face();
+  const std::vector<std::int64_t> mixed =
+      corners == 0 ? internal::mixed_gap_connectivity(gap) : std::vector<std::int64_t>();
+  const int n_rows = corners == 0 ? static_cast<int>(mixed.size()) : gap.n_faces();
+  std::vector<int> all_points, all_rows;
   if (rank == 0)
   {
     for (int p = 0; p < gap.n_points(); ++p)
       all_points.push_back(p);
-    for (int q = 0; q < gap.n_quads(); ++q)
-      all_quads.push_back(q);
+    for (int q = 0; q < n_rows; ++q)
+      all_rows.push_back(q);
   }
-  const internal::OwnedRows points(all_points, gap.n_points()), quads(all_quads, gap.n_quads());
+  const internal::OwnedRows points(all_points, gap.n_points()), rows(all_rows, n_rows);
   std::vector<double> coordinates, area, s, t;
   std::vector<std::int64_t> connectivity, node_a, node_b;
   if (rank == 0)
   {
     for (const Point &x : gap.points)
       coordinates.insert(coordinates.end(), x.begin(), x.end());
-    for (const auto &quad : gap.quads)
-      connectivity.insert(connectivity.end(), quad.begin(), quad.end());
+    if (corners == 0)
+      connectivity = mixed;
+    else
+      for (const auto &face : gap.faces)
+        connectivity.insert(connectivity.end(), face.begin(), face.end());
     area = gap.area;
     s = gap.s;
     t = gap.t;
@@ -270,7 +279,7 @@ void Hdf5XdmfWriter::Impl::write_gap_surface(const GapGrid &grid) const
     node_b = gap.node_b;
   }
   file.write_rows(group.get(), "coordinates", points, 3, coordinates);
-  file.write_rows(group.get(), "connectivity", quads, 4, connectivity);
+  file.write_rows(group.get(), "connectivity", rows, corners == 0 ? 1 : corners, connectivity);
   file.write_rows(group.get(), "node_a", points, 1, node_a);
   file.write_rows(group.get(), "node_b", points, 1, node_b);
   file.write_rows(group.get(), "area", points, 1, area);

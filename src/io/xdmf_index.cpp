@@ -136,10 +136,11 @@ void XdmfIndex::rename(const std::string &xmf_path, const std::string &h5_path)
   h5_name_ = file_name_of(h5_path);
 }
 
-void XdmfIndex::add_gap(const std::string &name, const int n_points, const int n_quads)
+void XdmfIndex::add_gap(const std::string &name, const int n_points, const int n_faces,
+                        const int corners_per_face, const long long n_entries)
 {
   if (n_points > 0)
-    gaps_.push_back({name, n_points, n_quads});
+    gaps_.push_back({name, n_points, n_faces, corners_per_face, n_entries});
 }
 
 void XdmfIndex::add_step(const double time)
@@ -222,21 +223,32 @@ void XdmfIndex::write_attribute(std::ostream &out, const std::string &indent, co
   out << indent << "</Attribute>\n";
 }
 
-/// The gap surface at one step: its quadrilaterals and the step's node fields at its points.
+/// The gap surface at one step: its faces (triangles, quadrilaterals or both) and the step's node
+/// fields at its points.
 void XdmfIndex::write_gap_grid(std::ostream &out, const std::string &indent, const Gap &gap,
                                const Step &step, const int index) const
 {
   const std::string in1 = indent + "  ";
   const std::string in2 = in1 + "  ";
   const std::string points = std::to_string(gap.n_points);
-  const std::string quads = std::to_string(gap.n_quads);
+  const std::string faces = std::to_string(gap.n_faces);
   const std::string group = "/" + gap.name;
   out << indent << "<Grid Name=\"" << gap.name << "_" << step_group_name(index)
       << "\" GridType=\"Uniform\">\n";
   out << in1 << "<Time Value=\"" << std::setprecision(17) << step.time << "\"/>\n";
-  out << in1 << "<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << quads
-      << "\" NodesPerElement=\"4\">\n";
-  write_data_item(out, in2, group + "/connectivity", quads + " 4", "Int", 8);
+  if (gap.corners_per_face == 0)
+  {
+    out << in1 << "<Topology TopologyType=\"Mixed\" NumberOfElements=\"" << faces << "\">\n";
+    write_data_item(out, in2, group + "/connectivity", std::to_string(gap.n_entries), "Int", 8);
+  }
+  else
+  {
+    const std::string corners = std::to_string(gap.corners_per_face);
+    out << in1 << "<Topology TopologyType=\""
+        << (gap.corners_per_face == 3 ? "Triangle" : "Quadrilateral") << "\" NumberOfElements=\""
+        << faces << "\" NodesPerElement=\"" << corners << "\">\n";
+    write_data_item(out, in2, group + "/connectivity", faces + " " + corners, "Int", 8);
+  }
   out << in1 << "</Topology>\n";
   out << in1 << "<Geometry GeometryType=\"XYZ\">\n";
   write_data_item(out, in2, group + "/coordinates", points + " 3", "Float", 8);

@@ -4,7 +4,7 @@
 /// (one Uniform grid, no time); after, a Temporal collection with one Uniform grid per step:
 /// the mesh, the mesh attributes block_id and cell_rank, and the step's fields. With gaps,
 /// a Temporal collection per gap comes first, named as the gap's HDF5 group ("gap", "gap_ID":
-/// Mesh::gap_name()): per step the gap surface (quadrilaterals) with the step's node fields
+/// Mesh::gap_name()): per step the gap surface (its faces' corners) with the step's node fields
 /// at its points.
 #include "io/field_spec.hpp"
 #include "mesh/mesh.hpp"
@@ -48,9 +48,12 @@ public:
   /// From now on the index is `xmf_path` and points at `h5_path` (the final names).
   void rename(const std::string &xmf_path, const std::string &h5_path);
 
-  /// A gap surface, the HDF5 group /NAME, of `n_points` points and `n_quads` quadrilaterals
-  /// (none: not shown).
-  void add_gap(const std::string &name, int n_points, int n_quads);
+  /// A gap surface, the HDF5 group /NAME, of `n_points` points and `n_faces` faces of
+  /// `corners_per_face` corners each (3: triangles, 4: quadrilaterals; /NAME/connectivity is
+  /// n_faces x corners), or of both kinds (corners_per_face 0: "Mixed", /NAME/connectivity the
+  /// `n_entries` values of each face's XDMF type code and corners). None: not shown.
+  void add_gap(const std::string &name, int n_points, int n_faces, int corners_per_face,
+               long long n_entries);
   /// Adds an output step at `time` [s]; add_field() adds its fields.
   void add_step(double time);
   /// Adds a field to the last step.
@@ -76,7 +79,9 @@ private:
   {
     std::string name;
     int n_points = 0;
-    int n_quads = 0;
+    int n_faces = 0;
+    int corners_per_face = 0; ///< 0: mixed
+    long long n_entries = 0;  ///< mixed only
   };
   void write_gap_grid(std::ostream &out, const std::string &indent, const Gap &gap,
                       const Step &step, int index) const;

@@ -7,12 +7,113 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 
 namespace kiln
 {
+namespace
+{
+/// How many cells of `type` one hexahedron of the grid becomes.
+int cells_per_hexahedron(const CellType type)
+{
+  switch (type)
+  {
+  case CellType::tet4:
+  case CellType::tet10:
+    return 6;
+  case CellType::wedge6:
+    return 2;
+  default:
+    return 1;
+  }
+}
+
+using Lattice = std::array<int, 3>;
+
+/// The corners of the linear cells one hexahedron with lowest corner `o` becomes, on the grid
+/// at half the spacing (a corner (i, j, k) is (2i, 2j, 2k)), each cell in its linear type's
+/// Exodus order and positively oriented.
+std::vector<std::vector<Lattice>> split_hexahedron(const CellType type, const Lattice &o)
+{
+  const auto corner = [&](const int a, const int b, const int c) {
+    return Lattice{o[0] + 2 * a, o[1] + 2 * b, o[2] + 2 * c};
+  };
+  std::vector<std::vector<Lattice>> cells;
+  if (type == CellType::tet4 || type == CellType::tet10)
+  {
+    // Kuhn: a path from corner 000 to 111 along the axes in each of the 6 orders.
+    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto &order : orders)
+    {
+      std::vector<Lattice> tet{corner(0, 0, 0)};
+      std::array<int, 3> at{0, 0, 0};
+      for (const int axis : order)
+      {
+        at[axis] = 1;
+        tet.push_back(corner(at[0], at[1], at[2]));
+      }
+      // An odd order gives a negative volume: swap two corners.
+      const auto edge = [&](const int v, const int d) { return tet[v][d] - tet[0][d]; };
+      const int det = edge(1, 0) * (edge(2, 1) * edge(3, 2) - edge(2, 2) * edge(3, 1)) -
+                      edge(1, 1) * (edge(2, 0) * edge(3, 2) - edge(2, 2) * edge(3, 0)) +
+                      edge(1, 2) * (edge(2, 0) * edge(3, 1) - edge(2, 1) * edge(3, 0));
+      if (det < 0)
+        std::swap(tet[1], tet[2]);
+      cells.push_back(tet);
+    }
+  }
+  else if (type == CellType::wedge6)
+  {
+    // The triangles 00-10-11 and 00-11-01, counterclockwise seen from +z, swept along z.
+    for (const auto &tri : {std::array<std::array<int, 2>, 3>{{{0, 0}, {1, 0}, {1, 1}}},
+                            std::array<std::array<int, 2>, 3>{{{0, 0}, {1, 1}, {0, 1}}}})
+    {
+      std::vector<Lattice> wedge;
+      for (int c = 0; c < 2; ++c)
+        for (const auto &v : tri)
+          wedge.push_back(corner(v[0], v[1], c));
+      cells.push_back(wedge);
+    }
+  }
+  else
+    cells.push_back({corner(0, 0, 0), corner(1, 0, 0), corner(1, 1, 0), corner(0, 1, 0),
+                     corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1)});
+  return cells;
+}
+
+/// The grid points of all nodes of a cell of `type` whose corners are `corners`: the corners,
+/// then the higher-order nodes mapped from their reference coordinates (the cells are
+/// affine images of their reference cells on the grid).
+std::vector<Lattice> cell_lattice_nodes(const CellType type, const std::vector<Lattice> &corners)
+{
+  const ReferenceCell &ref = ReferenceCell::of(type);
+  std::vector<Lattice> nodes(corners);
+  const bool hex = ref.n_vertices() == 8;
+  // The origin and the three edge vectors of the affine map, with the reference coordinate
+  // each multiplies (hex: (x + 1) / 2; tet: x).
+  const Lattice &o = corners[0];
+  const Lattice *ends[3] = {&corners[1], hex ? &corners[3] : &corners[2],
+                            hex ? &corners[4] : &corners[3]};
+  for (int n = ref.n_vertices(); n < ref.n_nodes(); ++n)
+  {
+    Lattice p = o;
+    for (int e = 0; e < 3; ++e)
+    {
+      const double t = hex ? (ref.node(n)[e] + 1) / 2 : ref.node(n)[e];
+      for (int d = 0; d < 3; ++d)
+        p[d] += static_cast<int>(std::lround(t * ((*ends[e])[d] - o[d])));
+    }
+    nodes.push_back(p);
+  }
+  return nodes;
+}
+
+} // namespace
+
 Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
 {
   Teuchos::ParameterList p("Box");
@@ -28,6 +129,11 @@ Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
         double_range_validator(-360.0, 360.0));
   p.set("Translation", Teuchos::Array<double>(Teuchos::tuple(0.0, 0.0, 0.0)),
         "translation applied after the rotation [m]", double_array_validator(3));
+  p.set("Cell Type", "HEX8",
+        "the cells: HEX8 the grid's hexahedra; TETRA4 each split in 6 tetrahedra (Kuhn); "
+        "WEDGE6 in 2 wedges (prisms along z); HEX20, HEX27 quadratic hexahedra; TETRA10 the "
+        "tetrahedra made quadratic (see doc/mesh.md) [-]",
+        choice_validator({"HEX8", "TETRA4", "WEDGE6", "HEX20", "HEX27", "TETRA10"}));
   return p;
 }
 
@@ -45,6 +151,9 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   }
   phi_ = p.get<double>("Phi");
   theta_ = p.get<double>("Theta");
+  for (const CellType type : ReferenceCell::volume_types()) // the validator allows only these
+    if (ReferenceCell::of(type).name() == p.get<std::string>("Cell Type"))
+      type_ = type;
   // Odd: suggest the even counts next to it that are valid (1 has only 2).
   const std::string even_choices =
       cells_[0] > 1 ? std::to_string(cells_[0] - 1) + " or " + std::to_string(cells_[0] + 1)
@@ -56,10 +165,13 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
                                      << even_choices);
   // Nodes and cells are numbered with int: refuse counts that overflow it before the
   // generator computes them.
+  // Quadratic cells: up to the nodes of the grid at half the spacing.
+  const long double m = ReferenceCell::of(type_).degree();
   const long double n_nodes =
-      static_cast<long double>(cells_[0] + 1.0L) * (cells_[1] + 1.0L) * (cells_[2] + 1.0L);
-  const long double n_cells =
-      static_cast<long double>(cells_[0]) * static_cast<long double>(cells_[1]) * cells_[2];
+      (m * cells_[0] + 1.0L) * (m * cells_[1] + 1.0L) * (m * cells_[2] + 1.0L);
+  const long double n_cells = static_cast<long double>(cells_[0]) *
+                              static_cast<long double>(cells_[1]) * cells_[2] *
+                              cells_per_hexahedron(type_);
   KILN_CHECK_INPUT(n_nodes <= std::numeric_limits<int>::max(), where + "/\"Cells\"",
                    "{" << cells_[0] << ", " << cells_[1] << ", " << cells_[2] << "} gives "
                        << static_cast<double>(n_cells) << " cells and "
@@ -71,12 +183,27 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
 
 long long BoxMeshGenerator::n_cells() const
 {
-  return static_cast<long long>(cells_[0]) * cells_[1] * cells_[2];
+  return static_cast<long long>(cells_[0]) * cells_[1] * cells_[2] * cells_per_hexahedron(type_);
 }
 
 long long BoxMeshGenerator::n_nodes() const
 {
-  return (cells_[0] + 1LL) * (cells_[1] + 1LL) * (cells_[2] + 1LL);
+  const long long nx = cells_[0], ny = cells_[1], nz = cells_[2];
+  const long long corners = (nx + 1) * (ny + 1) * (nz + 1);
+  const long long edges =
+      nx * (ny + 1) * (nz + 1) + (nx + 1) * ny * (nz + 1) + (nx + 1) * (ny + 1) * nz;
+  const long long faces = nx * ny * (nz + 1) + nx * (ny + 1) * nz + (nx + 1) * ny * nz;
+  switch (type_)
+  {
+  case CellType::hex20:
+    return corners + edges;
+  case CellType::hex27:
+    return (2 * nx + 1) * (2 * ny + 1) * (2 * nz + 1);
+  case CellType::tet10: // the grid's edges, one diagonal per square face and per hexahedron
+    return corners + edges + faces + nx * ny * nz;
+  default:
+    return corners;
+  }
 }
 
 Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
@@ -88,95 +215,113 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
   KILN_CHECK_INPUT(!mid_z || nz % 2 == 0, where_ + "/\"Cells\"",
                    "has " << nz << " cells along z: side set 12 (the plane z = 0) needs an even "
                           << "number; use " << nz + 1);
-  const auto node = [&](const int i, const int j, const int k)
-  { return i + (nx + 1) * (j + (ny + 1) * k); };
   const auto A = rotation_matrix(phi_, theta_);
+  const int n_corners = (nx + 1) * (ny + 1) * (nz + 1);
 
   Mesh mesh;
-  mesh.coordinates.resize(static_cast<std::size_t>(nx + 1) * (ny + 1) * (nz + 1));
+  // A node at grid point p (on the grid at half the spacing): the grid's corners keep their
+  // x-fastest numbers, the other points are numbered as first met.
+  std::vector<Lattice> lattice(static_cast<std::size_t>(n_corners));
+  std::unordered_map<long long, int> extra_nodes;
+  const auto node_at = [&](const Lattice &p)
+  {
+    if (p[0] % 2 == 0 && p[1] % 2 == 0 && p[2] % 2 == 0)
+      return p[0] / 2 + (nx + 1) * (p[1] / 2 + (ny + 1) * (p[2] / 2));
+    const long long key = p[0] + (2LL * nx + 1) * (p[1] + (2LL * ny + 1) * p[2]);
+    const auto [it, added] = extra_nodes.emplace(key, static_cast<int>(lattice.size()));
+    if (added)
+      lattice.push_back(p);
+    return it->second;
+  };
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i)
-      {
-        const Point x{size_[0] * (double(i) / nx - 0.5), size_[1] * (double(j) / ny - 0.5),
-                      size_[2] * (double(k) / nz - 0.5)};
-        Point &y = mesh.coordinates[node(i, j, k)];
-        for (int d = 0; d < 3; ++d)
-          y[d] = A[d][0] * x[0] + A[d][1] * x[1] + A[d][2] * x[2] + translation_[d];
-      }
+        lattice[i + (nx + 1) * (j + (ny + 1) * k)] = {2 * i, 2 * j, 2 * k};
 
-  // Side sets 1..6 and 10, filled while the cells are made.
-  mesh.side_sets.resize(7);
-  const char *const face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-  for (int s = 0; s < 6; ++s)
-  {
-    mesh.side_sets[s].id = s + 1;
-    mesh.side_sets[s].name = face_names[s];
-  }
-  mesh.side_sets[6].id = 10;
-  mesh.side_sets[6].name = "gap";
-  SideSet &gap = mesh.side_sets[6];
-  const auto add_side = [](SideSet &set, const int cell, const int face)
-  {
-    set.cells.push_back(cell);
-    set.faces.push_back(face);
-  };
-  // Local faces (Exodus order): 0 y-, 1 x+, 2 y+, 3 x-, 4 z-, 5 z+.
-  std::vector<std::pair<int, int>> gap_sides_b; // block 2's sides, listed after block 1's
+  // The cells, block 1 first, each hexahedron of the grid in x-fastest order.
+  const ReferenceCell &ref = ReferenceCell::of(type_);
+  std::vector<int> nodes(static_cast<std::size_t>(ref.n_nodes()));
   for (int block = 1; block <= 2; ++block)
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
         for (int i = (block == 1 ? 0 : nx / 2); i < (block == 1 ? nx / 2 : nx); ++i)
-        {
-          const int cell = mesh.n_cells();
-          mesh.add_cell(CellType::hex8,
-                        {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
-                         node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
-                         node(i, j + 1, k + 1)},
-                        block);
-          if (i == 0)
-            add_side(mesh.side_sets[0], cell, 3);
-          if (i == nx - 1)
-            add_side(mesh.side_sets[1], cell, 1);
-          if (j == 0)
-            add_side(mesh.side_sets[2], cell, 0);
-          if (j == ny - 1)
-            add_side(mesh.side_sets[3], cell, 2);
-          if (k == 0)
-            add_side(mesh.side_sets[4], cell, 4);
-          if (k == nz - 1)
-            add_side(mesh.side_sets[5], cell, 5);
-          if (i == nx / 2 - 1)
-            add_side(gap, cell, 1);
-          if (i == nx / 2)
-            gap_sides_b.emplace_back(cell, 3);
-        }
-  for (const auto &[cell, face] : gap_sides_b)
-    add_side(gap, cell, face);
-  // The mid-planes y = 0 and z = 0 on request: the lower side's faces, then the upper's.
+          for (const auto &corners : split_hexahedron(type_, {2 * i, 2 * j, 2 * k}))
+          {
+            const std::vector<Lattice> points = cell_lattice_nodes(type_, corners);
+            for (int n = 0; n < ref.n_nodes(); ++n)
+              nodes[n] = node_at(points[n]);
+            mesh.add_cell(type_, nodes.data(), block);
+          }
+
+  mesh.coordinates.resize(lattice.size());
+  for (std::size_t n = 0; n < lattice.size(); ++n)
+  {
+    // A corner (2i, 2j, 2k) gives i / nx exactly as the grid of corners would.
+    Point x;
+    for (int d = 0; d < 3; ++d)
+      x[d] = size_[d] * (lattice[n][d] % 2 == 0 ? double(lattice[n][d] / 2) / cells_[d] - 0.5
+                                                : double(lattice[n][d]) / (2 * cells_[d]) - 0.5);
+    Point &y = mesh.coordinates[n];
+    for (int d = 0; d < 3; ++d)
+      y[d] = A[d][0] * x[0] + A[d][1] * x[1] + A[d][2] * x[2] + translation_[d];
+  }
+
+  // Side sets: 1..6 the outer planes, 10 the plane x = 0 (block 1's faces first: the cells are
+  // in block order), 11 and 12 on request the planes y = 0 and z = 0 (the lower side's faces
+  // first). A face is on a plane when all its corners are.
+  const char *const face_names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  for (int s = 0; s < 6; ++s)
+    mesh.side_sets.push_back({s + 1, face_names[s], {}, {}});
+  mesh.side_sets.push_back({10, "gap", {}, {}});
+  // For each set: its axis, its plane's grid coordinate, and (mid-planes) which side's faces.
+  struct Plane
+  {
+    int set;
+    int axis;
+    int at;
+    int side; // -1: any; 0: cells below the plane; 1: above
+  };
+  std::vector<Plane> planes;
+  for (int d = 0; d < 3; ++d)
+  {
+    planes.push_back({2 * d, d, 0, -1});
+    planes.push_back({2 * d + 1, d, 2 * cells_[d], -1});
+  }
+  planes.push_back({6, 0, nx, -1});
   for (const auto &[wanted, id, axis, name] :
        {std::tuple{mid_y, 11, 1, "mid_y"}, std::tuple{mid_z, 12, 2, "mid_z"}})
+    if (wanted)
+    {
+      mesh.side_sets.push_back({id, name, {}, {}});
+      const int set = static_cast<int>(mesh.side_sets.size()) - 1;
+      planes.push_back({set, axis, cells_[axis], 0});
+      planes.push_back({set, axis, cells_[axis], 1});
+    }
+  for (const Plane &plane : planes)
   {
-    if (!wanted)
-      continue;
-    SideSet set;
-    set.id = id;
-    set.name = name;
-    const int n = cells_[axis];
-    // Local faces: y+ 2, y- 0, z+ 5, z- 4.
-    const int upper_face = axis == 1 ? 2 : 5, lower_face = axis == 1 ? 0 : 4;
-    for (int side = 0; side < 2; ++side)
-      for (int c = 0; c < mesh.n_cells(); ++c)
+    SideSet &set = mesh.side_sets[plane.set];
+    for (int c = 0; c < mesh.n_cells(); ++c)
+    {
+      const Span<const int> cell = mesh.cell_nodes(c);
+      int lowest = std::numeric_limits<int>::max();
+      for (int n = 0; n < ref.n_vertices(); ++n)
+        lowest = std::min(lowest, lattice[cell[n]][plane.axis]);
+      if (plane.side >= 0 && (lowest < plane.at) != (plane.side == 0))
+        continue;
+      for (int f = 0; f < ref.n_faces(); ++f)
       {
-        const Span<const int> nodes = mesh.cell_nodes(c);
-        const int index =
-            axis == 1 ? nodes[0] / (nx + 1) % (ny + 1) : nodes[0] / ((nx + 1) * (ny + 1));
-        if (side == 0 && index == n / 2 - 1)
-          add_side(set, c, upper_face);
-        if (side == 1 && index == n / 2)
-          add_side(set, c, lower_face);
+        const std::vector<int> &face = ref.face_nodes(f);
+        const int n_corners_f = ReferenceCell::of(ref.face_type(f)).n_vertices();
+        bool on = true;
+        for (int n = 0; n < n_corners_f && on; ++n)
+          on = lattice[cell[face[n]]][plane.axis] == plane.at;
+        if (on)
+        {
+          set.cells.push_back(c);
+          set.faces.push_back(f);
+        }
       }
-    mesh.side_sets.push_back(std::move(set));
+    }
   }
   return mesh;
 }

@@ -7,6 +7,13 @@
 /// frame) and gap. On request the mid-planes y = 0 (side set 11, mid_y) and z = 0 (12,
 /// mid_z), each listed from its lower side first, for gaps that cross. Cells are numbered
 /// block 1 first, each block in x-fastest order; nodes in x-fastest order.
+/// "Cell Type" other than HEX8: each hexahedron of the grid becomes 6 tetrahedra (Kuhn's split,
+/// every tet holding the diagonal from the cell's lowest to its highest corner, so that shared
+/// faces are split alike), 2 wedges (the square in x, y cut by its diagonal from the lowest
+/// corner, prisms along z) or a quadratic cell (HEX20, HEX27; TETRA10 on the Kuhn tets); the
+/// cells of one hexahedron are numbered consecutively. The grid's corner nodes keep their
+/// x-fastest numbers; mid-edge, face and centre nodes follow, numbered as first met, each
+/// shared by the cells around it. Side sets list every face on their planes.
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -33,6 +40,7 @@ private:
   double phi_;
   double theta_;
   std::array<double, 3> translation_;
+  CellType type_ = CellType::hex8;
   std::string where_;
 };
 } // namespace kiln

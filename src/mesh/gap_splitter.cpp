@@ -92,7 +92,7 @@ void check_not_unmerged(const Mesh &mesh, const SideSet &side_set, const std::st
   };
   std::map<std::array<long long, 3>, int> side_nodes;
   for (int s = 0; s < side_set.n_sides(); ++s)
-    for (const int n : mesh.face_key(side_set.cells[s], side_set.faces[s]))
+    for (const int n : mesh.face_nodes(side_set.cells[s], side_set.faces[s]))
       side_nodes.emplace(rounded(mesh.coordinates[n]), n);
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {
@@ -175,9 +175,14 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
 
   // The parts around each node of the cut faces.
   std::map<int, std::set<int>> node_parts;
+  // Every node of the cut faces (a key lists only the corners, a triangle's with -1 first;
+  // quadratic faces have mid-side nodes too).
   for (const auto &entry : cut)
-    for (const int n : entry.first)
+  {
+    const auto &side = faces.at(entry.first)[0];
+    for (const int n : mesh.face_nodes(side.first, side.second))
       node_parts[n];
+  }
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (const int n : mesh.cell_nodes(c))
       if (auto it = node_parts.find(n); it != node_parts.end())

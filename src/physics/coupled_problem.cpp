@@ -435,8 +435,11 @@ std::vector<double> CoupledProblem::gap_heat_flow(const Vector &x)
   terms_->evaluate_gap_faces(*fields_, false,
                              [&](const std::vector<int> &nodes, LocalSystem &system)
                              {
-                               const int gap = mesh_.gap_faces[faces[call++]].gap;
-                               for (int i = 0; i < 4; ++i)
+                               const GapFace &face = mesh_.gap_faces[faces[call++]];
+                               const int gap = face.gap;
+                               // The face's side-a nodes come first (any face type).
+                               const int n_side_a = static_cast<int>(face.node_b.size());
+                               for (int i = 0; i < n_side_a; ++i)
                                  local[pair_of.at({gap, nodes[i]})] += system.residual(slots_.T, i);
                              });
   Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
