@@ -2,6 +2,7 @@
 
 #include "base/errors.hpp"
 #include "elements/finite_element.hpp"
+#include "mesh/mesh_quality.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,24 +28,6 @@ double cell_extent(const Mesh &mesh, const int c)
     d = std::max(d, std::hypot(x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]));
   }
   return d;
-}
-
-/// det(dx/dxi) of cell c at quadrature point q of its type's rule.
-double jacobian_determinant(const Mesh &mesh, const int c, const ReferenceValues &ref, const int q)
-{
-  const Span<const int> nodes = mesh.cell_nodes(c);
-  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; // J[d][r] = dx_d/dxi_r
-  for (int i = 0; i < nodes.size(); ++i)
-  {
-    const Point &x = mesh.coordinates[nodes[i]];
-    const Point &dN = ref.grad[q * ref.n_shape + i];
-    for (int d = 0; d < 3; ++d)
-      for (int r = 0; r < 3; ++r)
-        J[d][r] += x[d] * dN[r];
-  }
-  return J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-         J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-         J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
 }
 
 /// Cells outside [smallest_cell, largest_cell] metres come from a wrong scale, not from a
