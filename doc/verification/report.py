@@ -309,7 +309,8 @@ class Geometry:
         distance = np.abs((x - centre) @ normal)
         self.end = distance > distance.max() * (1 - 1e-9)
         side_1 = np.zeros(len(x), bool)
-        side_1[np.unique(connectivity[block == block.min()])] = True
+        first_side = np.unique(connectivity[block == block.min()])
+        side_1[first_side[first_side >= 0]] = True  # rows padded with -1 on a mixed mesh
         self.gap_1, self.gap_2 = gap & side_1, gap & ~side_1
         self.gap = gap
         self.n_cells = len(connectivity)

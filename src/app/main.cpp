@@ -7,6 +7,7 @@
 #include "base/log.hpp"
 #include "base/stop_request.hpp"
 #include "io/input_reader.hpp"
+#include "mesh/mesh_quality.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_GlobalMPISession.hpp>
@@ -49,6 +50,8 @@ int run(const kiln::CommandLine &cl, const Teuchos::RCP<const Teuchos::Comm<int>
   if (cl.mode == Mode::check)
   {
     simulation.check();
+    // The mesh by block and element type: count and quality range (issue 32).
+    kiln::print_mesh_quality(kiln::mesh_quality(simulation.mesh()), *out);
     *out << cl.input << ": input and mesh are valid\n";
   }
   else

@@ -2,11 +2,13 @@
 
 #include "base/errors.hpp"
 #include "elements/finite_element.hpp"
+#include "mesh/mesh_quality.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -27,24 +29,6 @@ double cell_extent(const Mesh &mesh, const int c)
     d = std::max(d, std::hypot(x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]));
   }
   return d;
-}
-
-/// det(dx/dxi) of cell c at quadrature point q of its type's rule.
-double jacobian_determinant(const Mesh &mesh, const int c, const ReferenceValues &ref, const int q)
-{
-  const Span<const int> nodes = mesh.cell_nodes(c);
-  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; // J[d][r] = dx_d/dxi_r
-  for (int i = 0; i < nodes.size(); ++i)
-  {
-    const Point &x = mesh.coordinates[nodes[i]];
-    const Point &dN = ref.grad[q * ref.n_shape + i];
-    for (int d = 0; d < 3; ++d)
-      for (int r = 0; r < 3; ++r)
-        J[d][r] += x[d] * dN[r];
-  }
-  return J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-         J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-         J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
 }
 
 /// Cells outside [smallest_cell, largest_cell] metres come from a wrong scale, not from a
@@ -97,6 +81,78 @@ void check_scale(const Mesh &mesh, const std::string &where, const std::string &
                    "cell " << largest + 1 << " (block " << mesh.block_id[largest] << ") is "
                            << largest_extent << " m across, above " << largest_cell
                            << " m: Kiln takes coordinates in metres; " << hint);
+}
+
+/// A cell face for the conformity check: its key (sorted corners) and where it is.
+struct KeyedFace
+{
+  FaceKey key;
+  int cell;
+  int face;
+};
+
+/// How many corner nodes two face keys share (-1 entries do not count).
+int shared_corners(const FaceKey &a, const FaceKey &b)
+{
+  int n = 0;
+  for (const int x : a)
+    n += x >= 0 && std::find(b.begin(), b.end(), x) != b.end() ? 1 : 0;
+  return n;
+}
+
+/// Cells meet at whole faces: two faces of different cells that share three or more corner
+/// nodes are the same face (the same corners). A hex face against two tet faces (the tets
+/// split it along a diagonal) is not: each looks like a boundary face, and the fields are
+/// not continuous across them. Only faces that no other cell shares can be such a pair.
+void check_conforming(const Mesh &mesh, const std::string &where)
+{
+  std::vector<KeyedFace> faces;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int f = 0; f < mesh.reference_cell(c).n_faces(); ++f)
+      faces.push_back({mesh.face_key(c, f), c, f});
+  std::sort(faces.begin(), faces.end(),
+            [](const KeyedFace &a, const KeyedFace &b) { return a.key < b.key; });
+  std::vector<KeyedFace> alone; // the faces of one cell only
+  for (std::size_t i = 0; i < faces.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].key == faces[i].key)
+      ++j;
+    if (j == i + 1)
+      alone.push_back(faces[i]);
+    i = j;
+  }
+  std::vector<std::pair<int, int>> at_node; // (corner node, index into alone), sorted
+  for (std::size_t k = 0; k < alone.size(); ++k)
+    for (const int n : alone[k].key)
+      if (n >= 0)
+        at_node.emplace_back(n, static_cast<int>(k));
+  std::sort(at_node.begin(), at_node.end());
+  for (std::size_t k = 0; k < alone.size(); ++k)
+  {
+    const KeyedFace &a = alone[k];
+    for (const int n : a.key)
+    {
+      if (n < 0)
+        continue;
+      auto it = std::lower_bound(at_node.begin(), at_node.end(), std::make_pair(n, 0));
+      for (; it != at_node.end() && it->first == n; ++it)
+      {
+        const KeyedFace &b = alone[static_cast<std::size_t>(it->second)];
+        KILN_CHECK_INPUT(b.cell == a.cell || shared_corners(a.key, b.key) < 3, where,
+                         "the mesh is not conforming: cell "
+                             << a.cell + 1 << " (block " << mesh.block_id[a.cell] << ", "
+                             << mesh.reference_cell(a.cell).name() << ") side " << a.face + 1
+                             << " and cell " << b.cell + 1 << " (block " << mesh.block_id[b.cell]
+                             << ", " << mesh.reference_cell(b.cell).name() << ") side "
+                             << b.face + 1
+                             << " share corner nodes but are not the same face (e.g. a hex "
+                                "face against two tet faces). Cells must meet at whole faces: "
+                                "put pyramids between hexahedra and tetrahedra (Cubit does "
+                                "when the tets are meshed against the hexes' faces)");
+      }
+    }
+  }
 }
 } // namespace
 
@@ -154,5 +210,6 @@ void check_mesh(const Mesh &mesh, const std::string &where, const std::string &s
                                << mesh.reference_cell(c).name() << " order; fix the mesh");
     }
   }
+  check_conforming(mesh, where);
 }
 } // namespace kiln

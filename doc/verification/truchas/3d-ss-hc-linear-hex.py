@@ -26,8 +26,9 @@ def figures(results, deck):
         last = steps[sorted(steps.keys())[-1]]
         time = float(last.attrs["time"])
         T_nodes = last["temperature"][...]
-    centroids = x[cells].mean(axis=1)
-    T_cells = T_nodes[cells].mean(axis=1)
+    nodes = [row[row >= 0] for row in cells]  # rows padded with -1 on a mixed mesh
+    centroids = np.array([x[n].mean(axis=0) for n in nodes])
+    T_cells = np.array([T_nodes[n].mean() for n in nodes])
     T_ref = 1 + centroids[:, 0] + 2 * centroids[:, 1] + 3 * centroids[:, 2]
     err_T = float(np.max(np.abs((T_cells - T_ref) / T_ref)))
     with open(str(results)[:-len(".h5")] + ".history.csv", newline="") as f:

@@ -6,6 +6,9 @@ deck inputs/truchas/truchas_fields.xml exists, so the report never loads it as o
 - golden_series(path, n): Truchas' golden output series n (Simulations/MAIN/Series Data/
   Series n; its mesh under Meshes/DEFAULT, connectivity 1-based), with its tensors reordered
   from Truchas' xx yy zz xy xz yz into Kiln's order;
+- cell_nodes(cells) / centroids(x, cells): each cell's nodes (a row of /mesh/connectivity
+  without its -1 padding: a mixed mesh's rows are padded to the most nodes, output-format.md)
+  and its centroid (the mean of its distinct nodes: also right for Truchas' degenerate hexes);
 - match(points, reference): for each reference point, the index of the equal point (the
   meshes are matched by coordinates, never by index);
 - figure(...): one row of the report (doc/verification/truchas_section.py).
@@ -17,6 +20,17 @@ import numpy as np
 TRUCHAS_TO_KILN = [0, 1, 2, 3, 5, 4]
 
 
+def cell_nodes(cells):
+    """The nodes of each cell: its row of a connectivity table without the -1 padding."""
+    return [row[row >= 0] for row in cells]
+
+
+def centroids(x, cells):
+    """The centroid of each cell, the mean of its distinct nodes (Kiln's rows padded with -1;
+    Truchas' tets, wedges and pyramids written as hexes with repeated nodes)."""
+    return np.array([x[np.unique(nodes)].mean(axis=0) for nodes in cell_nodes(cells)])
+
+
 class Step:
     """One output step of a Kiln run (SI units; stress and strain per cell)."""
 
@@ -24,7 +38,7 @@ class Step:
         self.time = float(group.attrs["time"])
         self.x = x
         self.cells = cells
-        self.centroids = x[cells].mean(axis=1)
+        self.centroids = centroids(x, cells)
         self.T = group["temperature"][...] if "temperature" in group else None
         self.u = group["displacement"][...]
         self.stress = group["stress"][...]
@@ -57,7 +71,7 @@ class Series:
                 if values.ndim == 2 and values.shape[1] == 6:
                     values = values[:, TRUCHAS_TO_KILN]
                 self.fields[name] = values
-        self.centroids = self.x[self.cells].mean(axis=1)
+        self.centroids = centroids(self.x, self.cells)
 
 
 def golden_series(path, n):
@@ -198,3 +212,62 @@ def stretch_end_figures(results, axis):
         figure(f"max |u_{axis} - 1| on the moved face [m]", face, "0 (the condition)",
                face == 0.0, exact=0.0),
     ]
+
+
+def trilinear(x, values, points):
+    """The trilinear interpolant at `points` of the nodal `values` of a structured box mesh
+    with nodes `x` (a tensor grid, in any order): exact for a Q1 field, so the hex
+    solution is evaluated where another mesh's nodes are."""
+    axes = [np.unique(np.round(x[:, a], 12)) for a in range(3)]
+    grid = np.zeros(tuple(len(g) for g in axes) + values.shape[1:])
+    grid[tuple(np.searchsorted(g, np.round(x[:, a], 12)) for a, g in enumerate(axes))] = values
+    result = np.zeros((len(points),) + values.shape[1:])
+    index, weight = [], []
+    for a, g in enumerate(axes):
+        i = np.clip(np.searchsorted(g, points[:, a], side="right") - 1, 0, len(g) - 2)
+        index.append(i)
+        weight.append(np.clip((points[:, a] - g[i]) / (g[i + 1] - g[i]), 0.0, 1.0))
+    for corner in range(8):
+        bits = [(corner >> a) & 1 for a in range(3)]
+        w = np.ones(len(points))
+        for a in range(3):
+            w = w * (weight[a] if bits[a] else 1.0 - weight[a])
+        result += w[:, None] * grid[index[0] + bits[0], index[1] + bits[1], index[2] + bits[2]]
+    return result
+
+
+HEX_GOLDEN = "../shared/truchas-tests/sm-stretch/stretch-hex_golden/stretch-hex.h5"
+
+
+def stretch_mesh_figures(results, checkout, test, golden=None, tolerance=1e-10):
+    """stretch-tet/-wed/-mixed (test-stretch-<mesh>.py): the displacement at t = 0 against
+    the golden output where Truchas keeps one (`golden`, matched by coordinates), to the
+    test's 1e-10 m; against the same stretch on Truchas' 40 x 10 x 10 hex mesh (the golden
+    of stretch-hex, interpolated trilinearly: exact for its Q1 field) where it keeps none; and
+    the two conditions, the clamped face (x = -2) at rest and the moved face (x = 2) at
+    u_x = 1e-8 m, exactly."""
+    step = kiln_steps(results)[0]
+    at_zero = step.time == 0.0
+    rows = []
+    text = f"<= {tolerance:g} ({test})"
+    if golden is not None:
+        series = golden_series(checkout / golden, 1)
+        du = float(np.abs(step.u[match(step.x, series.x)] - series.fields["Displacement"]).max())
+        rows.append(figure("max |u - u_golden| [m], t = 0", du, text,
+                           du <= tolerance and at_zero, golden=0.0))
+    hex_series = golden_series(checkout / HEX_GOLDEN, 1)
+    on_hex = trilinear(hex_series.x, hex_series.fields["Displacement"], step.x)
+    dh = float(np.abs(step.u - on_hex).max())
+    rows.append(figure("max |u - u_hex golden| [m] at the nodes, t = 0 (stretch-hex's golden "
+                       "interpolated)", dh, text, dh <= tolerance and at_zero))
+    clamped = np.isclose(step.x[:, 0], -2.0)
+    moved = np.isclose(step.x[:, 0], 2.0)
+    clamp = float(np.abs(step.u[clamped]).max())
+    face = float(np.abs(step.u[moved, 0] - 1e-8).max())
+    rows += [
+        figure("max |u| on the clamped face [m], t = 0", clamp, "0 (the condition)",
+               clamp == 0.0 and at_zero, exact=0.0),
+        figure("max |u_x - 1e-8| on the moved face [m], t = 0", face, "0 (the condition)",
+               face == 0.0 and at_zero, exact=0.0),
+    ]
+    return rows

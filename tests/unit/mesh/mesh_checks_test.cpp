@@ -163,4 +163,48 @@ TEST(MeshChecks, NonFiniteNodeIsRejected)
   EXPECT_THAT(check_error(mesh), HasSubstr("mesh.exo: node 8 is at ("));
   EXPECT_THAT(check_error(mesh), HasSubstr("not a finite point"));
 }
+
+/// The unit cube as a HEX8 (cell 1, block 1) and [1,2] x [0,1]^2 as six tets
+/// on the same nodes; with `tets`, the hex face at x = 1 is met by two tets' faces (not
+/// conforming); without, the right cube is a HEX8 too (conforming).
+Mesh hex_and_tets(const bool tets)
+{
+  Mesh mesh;
+  mesh.coordinates = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
+                      {1, 1, 1}, {0, 1, 1}, {2, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 1, 1}};
+  mesh.add_cell(kiln::CellType::hex8, {0, 1, 2, 3, 4, 5, 6, 7}, 1);
+  if (!tets)
+  {
+    mesh.add_cell(kiln::CellType::hex8, {1, 8, 9, 2, 5, 10, 11, 6}, 2);
+    return mesh;
+  }
+  // Kuhn's six tets of the right cube along its diagonal 1 -> 11 (positive orientation).
+  const int paths[6][4] = {{1, 8, 9, 11}, {1, 8, 10, 11}, {1, 2, 9, 11},
+                           {1, 2, 6, 11}, {1, 5, 10, 11}, {1, 5, 6, 11}};
+  for (const auto &p : paths)
+  {
+    const auto &x = mesh.coordinates;
+    double a[3][3];
+    for (int d = 0; d < 3; ++d)
+      for (int r = 0; r < 3; ++r)
+        a[r][d] = x[p[r + 1]][d] - x[p[0]][d];
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    if (det > 0)
+      mesh.add_cell(kiln::CellType::tet4, {p[0], p[1], p[2], p[3]}, 2);
+    else
+      mesh.add_cell(kiln::CellType::tet4, {p[0], p[2], p[1], p[3]}, 2);
+  }
+  return mesh;
+}
+
+TEST(MeshChecks, NonConformingMeshIsRejected)
+{
+  EXPECT_NO_THROW(kiln::check_mesh(hex_and_tets(false), "mesh.exo"));
+  const std::string message = check_error(hex_and_tets(true));
+  EXPECT_THAT(message, HasSubstr("mesh.exo: the mesh is not conforming: cell "));
+  EXPECT_THAT(message, HasSubstr("(block 2, TETRA4) side "));
+  EXPECT_THAT(message, HasSubstr("cell 1 (block 1, HEX8) side 2 share corner nodes"));
+}
 } // namespace
