@@ -22,6 +22,9 @@ packages=(
   python3-matplotlib
   # scipy's netCDF writer, for the Exodus file the Exodus library misreads (tests/cli):
   python3-scipy
+  # ParaView's own readers (pvpython) open the results of every cell type in a test
+  # (tests/tools/paraview_open_test.py):
+  paraview
   # GNU time, for the peak memory per rank in benchmarks/scaling.py (and its smoke test):
   time
 )

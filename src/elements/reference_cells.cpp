@@ -135,7 +135,9 @@ std::vector<int> hex27_xdmf_order()
 // XDMF topology codes (Xdmf2's XdmfTopology.h): Triangle 0x4, Quadrilateral 0x5, Tetrahedron
 // 0x6, Pyramid 0x7, Wedge 0x8, Hexahedron 0x9, Quad_9 0x23, Tri_6 0x24, Quad_8 0x25, Tet_10
 // 0x26, Hex_20 0x30, Hex_27 0x32. (XDMF orders the quadratic hexahedron's nodes as VTK does,
-// not as Exodus: the writer permutes HEX20/HEX27, see doc/elements.md.)
+// not as Exodus: the writer permutes HEX20/HEX27, see doc/elements.md. So does the wedge: VTK's
+// triangle (0, 1, 2) faces away from (3, 4, 5), Exodus' towards it; ParaView's XDMF reader
+// gave every WEDGE6 a negative volume before the permutation, tests/tools/paraview_open_test.)
 std::array<ReferenceCell, 12> make_table()
 {
   return {{
@@ -149,7 +151,8 @@ std::array<ReferenceCell, 12> make_table()
        {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
        wedge6_faces(),
        {Q4, Q4, Q4, T3, T3},
-       0x8},
+       0x8,
+       {0, 2, 1, 3, 5, 4}},
       {CellType::pyramid5,
        "PYRAMID5",
        3,

@@ -37,12 +37,13 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
   {
     if (face.gap != gap)
       continue;
-    const ReferenceCell &cell = mesh.reference_cell(face.cell_a);
-    const int n_corners = ReferenceCell::of(cell.face_type(face.face_a)).n_vertices();
-    std::vector<std::int64_t> corners(static_cast<std::size_t>(n_corners));
-    for (int i = 0; i < n_corners; ++i)
-      corners[i] = point_of_pair.at({mesh.face_node(face.cell_a, face.face_a, i), face.node_b[i]});
-    faces.push_back(std::move(corners));
+    const CellType type = mesh.reference_cell(face.cell_a).face_type(face.face_a);
+    std::vector<std::int64_t> nodes(face.node_b.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      nodes[i] = point_of_pair.at(
+          {mesh.face_node(face.cell_a, face.face_a, static_cast<int>(i)), face.node_b[i]});
+    faces.push_back(std::move(nodes));
+    face_types.push_back(type);
   }
   if (points.empty())
     return;
@@ -81,24 +82,23 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
     t.push_back(dot(r, e_t));
   }
 }
-int GapSurface::corners_per_face() const
+std::optional<CellType> GapSurface::face_type() const
 {
-  if (faces.empty())
-    return 0;
-  for (const auto &face : faces)
-    if (face.size() != faces.front().size())
-      return 0;
-  return static_cast<int>(faces.front().size());
+  if (face_types.empty())
+    return std::nullopt;
+  for (const CellType type : face_types)
+    if (type != face_types.front())
+      return std::nullopt;
+  return face_types.front();
 }
 
 std::vector<std::int64_t> mixed_gap_connectivity(const GapSurface &gap)
 {
   std::vector<std::int64_t> list;
-  for (const auto &face : gap.faces)
+  for (std::size_t q = 0; q < gap.faces.size(); ++q)
   {
-    list.push_back(
-        ReferenceCell::of(face.size() == 3 ? CellType::tri3 : CellType::quad4).xdmf_code());
-    list.insert(list.end(), face.begin(), face.end());
+    list.push_back(ReferenceCell::of(gap.face_types[q]).xdmf_code());
+    list.insert(list.end(), gap.faces[q].begin(), gap.faces[q].end());
   }
   return list;
 }

@@ -102,8 +102,8 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
         value_row.push_back(it->second);
       }
     const internal::OwnedRows rows(owned_points, surface.n_points());
-    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_faces(),
-                  surface.corners_per_face(), internal::mixed_gap_connectivity(surface).size());
+    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_faces(), surface.face_type(),
+                  internal::mixed_gap_connectivity(surface).size());
     gaps.push_back({mesh.gap_name(g), std::move(surface), std::move(owned_points),
                     std::move(value_row), rows, internal::H5Handle()});
   }
@@ -247,8 +247,9 @@ void Hdf5XdmfWriter::Impl::write_gap_surface(const GapGrid &grid) const
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // Rank 0 writes every row (the gap is small and replicated).
-  // One kind of face: n_faces x corners; both: XDMF's Mixed list (type code, corners).
-  const int corners = gap.corners_per_face();
+  // One type of face: n_faces x its nodes; several: XDMF's Mixed list (type code, nodes).
+  const std::optional<CellType> face_type = gap.face_type();
+  const int corners = face_type ? ReferenceCell::of(*face_type).n_nodes() : 0;
   const std::vector<std::int64_t> mixed =
       corners == 0 ? internal::mixed_gap_connectivity(gap) : std::vector<std::int64_t>();
   const int n_rows = corners == 0 ? static_cast<int>(mixed.size()) : gap.n_faces();

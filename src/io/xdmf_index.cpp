@@ -77,11 +77,21 @@ std::string step_group_name(const int step)
 
 namespace
 {
-/// XDMF's TopologyType name of a volume type.
+/// XDMF's TopologyType name of a volume or face type.
 std::string xdmf_name(const CellType type)
 {
   switch (type)
   {
+  case CellType::tri3:
+    return "Triangle";
+  case CellType::quad4:
+    return "Quadrilateral";
+  case CellType::tri6:
+    return "Triangle_6";
+  case CellType::quad8:
+    return "Quadrilateral_8";
+  case CellType::quad9:
+    return "Quadrilateral_9";
   case CellType::hex8:
     return "Hexahedron";
   case CellType::tet4:
@@ -97,7 +107,7 @@ std::string xdmf_name(const CellType type)
   case CellType::hex27:
     return "Hexahedron_27";
   default:
-    throw InternalError("no XDMF volume topology for " + ReferenceCell::of(type).name());
+    throw InternalError("no XDMF topology for " + ReferenceCell::of(type).name());
   }
 }
 } // namespace
@@ -137,10 +147,10 @@ void XdmfIndex::rename(const std::string &xmf_path, const std::string &h5_path)
 }
 
 void XdmfIndex::add_gap(const std::string &name, const int n_points, const int n_faces,
-                        const int corners_per_face, const long long n_entries)
+                        const std::optional<CellType> face_type, const long long n_entries)
 {
   if (n_points > 0)
-    gaps_.push_back({name, n_points, n_faces, corners_per_face, n_entries});
+    gaps_.push_back({name, n_points, n_faces, face_type, n_entries});
 }
 
 void XdmfIndex::add_step(const double time)
@@ -236,18 +246,17 @@ void XdmfIndex::write_gap_grid(std::ostream &out, const std::string &indent, con
   out << indent << "<Grid Name=\"" << gap.name << "_" << step_group_name(index)
       << "\" GridType=\"Uniform\">\n";
   out << in1 << "<Time Value=\"" << std::setprecision(17) << step.time << "\"/>\n";
-  if (gap.corners_per_face == 0)
+  if (!gap.face_type)
   {
     out << in1 << "<Topology TopologyType=\"Mixed\" NumberOfElements=\"" << faces << "\">\n";
     write_data_item(out, in2, group + "/connectivity", std::to_string(gap.n_entries), "Int", 8);
   }
   else
   {
-    const std::string corners = std::to_string(gap.corners_per_face);
-    out << in1 << "<Topology TopologyType=\""
-        << (gap.corners_per_face == 3 ? "Triangle" : "Quadrilateral") << "\" NumberOfElements=\""
-        << faces << "\" NodesPerElement=\"" << corners << "\">\n";
-    write_data_item(out, in2, group + "/connectivity", faces + " " + corners, "Int", 8);
+    const std::string nodes = std::to_string(ReferenceCell::of(*gap.face_type).n_nodes());
+    out << in1 << "<Topology TopologyType=\"" << xdmf_name(*gap.face_type)
+        << "\" NumberOfElements=\"" << faces << "\" NodesPerElement=\"" << nodes << "\">\n";
+    write_data_item(out, in2, group + "/connectivity", faces + " " + nodes, "Int", 8);
   }
   out << in1 << "</Topology>\n";
   out << in1 << "<Geometry GeometryType=\"XYZ\">\n";

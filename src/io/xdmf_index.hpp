@@ -11,6 +11,7 @@
 
 #include <mpi.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,12 +49,12 @@ public:
   /// From now on the index is `xmf_path` and points at `h5_path` (the final names).
   void rename(const std::string &xmf_path, const std::string &h5_path);
 
-  /// A gap surface, the HDF5 group /NAME, of `n_points` points and `n_faces` faces of
-  /// `corners_per_face` corners each (3: triangles, 4: quadrilaterals; /NAME/connectivity is
-  /// n_faces x corners), or of both kinds (corners_per_face 0: "Mixed", /NAME/connectivity the
-  /// `n_entries` values of each face's XDMF type code and corners). None: not shown.
-  void add_gap(const std::string &name, int n_points, int n_faces, int corners_per_face,
-               long long n_entries);
+  /// A gap surface, the HDF5 group /NAME, of `n_points` points and `n_faces` faces, all of
+  /// type `face_type` (TRI3, QUAD4, TRI6, QUAD8, QUAD9; /NAME/connectivity is n_faces x its
+  /// nodes), or of several types (none: "Mixed", /NAME/connectivity the `n_entries` values of
+  /// each face's XDMF type code and nodes). None: not shown.
+  void add_gap(const std::string &name, int n_points, int n_faces,
+               std::optional<CellType> face_type, long long n_entries);
   /// Adds an output step at `time` [s]; add_field() adds its fields.
   void add_step(double time);
   /// Adds a field to the last step.
@@ -80,8 +81,8 @@ private:
     std::string name;
     int n_points = 0;
     int n_faces = 0;
-    int corners_per_face = 0; ///< 0: mixed
-    long long n_entries = 0;  ///< mixed only
+    std::optional<CellType> face_type; ///< none: mixed
+    long long n_entries = 0;           ///< mixed only
   };
   void write_gap_grid(std::ostream &out, const std::string &indent, const Gap &gap,
                       const Step &step, int index) const;

@@ -113,6 +113,30 @@ void check_not_unmerged(const Mesh &mesh, const SideSet &side_set, const std::st
                                  << side_set.id << " as the gap side set");
   }
 }
+/// A gap face whose nodes all have a positive share of its area (ReferenceCell's quadratic
+/// TRI6 and QUAD8 faces do not: their corners have none or a negative one).
+void check_positive_shares(const Mesh &mesh, const int c, const int face,
+                           const std::vector<double> &shares, const int side_set_id,
+                           const std::string &where)
+{
+  const double total = std::accumulate(shares.begin(), shares.end(), 0.0);
+  const auto smallest = std::min_element(shares.begin(), shares.end());
+  if (*smallest > 1e-12 * total)
+    return;
+  const ReferenceCell &cell = mesh.reference_cell(c);
+  const std::string face_type = ReferenceCell::of(cell.face_type(face)).name();
+  KILN_CHECK_INPUT(
+      false, where,
+      "side set " << side_set_id << " cuts " << face_type << " faces (of the " << cell.name()
+                  << " cells of block " << mesh.block_id[c] << ", e.g. cell " << c + 1
+                  << "): a node pair across a gap carries the integral of its node's shape "
+                     "function over the faces, its share of a uniform traction, and a "
+                  << face_type << " face gives its corners "
+                  << (*smallest < -1e-12 * total ? "a negative share" : "none")
+                  << ", so their pairs could not hold the gap or carry its pressure. Mesh the "
+                     "cells at the gap as HEX27 (QUAD9 faces) or as linear cells (HEX8, "
+                     "TETRA4, WEDGE6, PYRAMID5); doc/contact.md, \"Quadratic faces\"");
+}
 } // namespace internal
 
 void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::string &where)
@@ -219,6 +243,8 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
       std::swap(side_a, side_b);
     const FaceNodalAreas areas = face_nodal_areas(mesh, side_a.first, side_a.second);
     const int n_face_nodes = static_cast<int>(areas.area.size());
+    internal::check_positive_shares(mesh, side_a.first, side_a.second, areas.area, side_set_ids[g],
+                                    where);
     GapFace gap_face{side_a.first,
                      side_a.second,
                      side_b.first,

@@ -46,9 +46,12 @@ void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
         const int node = mesh.face_node(set.cells[s], set.faces[s], i);
         if (dot(normal[node], normal[node]) == 0.0)
           touched.push_back(node);
+        // The node's normal: its faces' normals weighted by |N_i| (N_i itself for linear
+        // faces; a TRI6 corner's N_i integrates to 0 and a QUAD8 corner's to a negative
+        // share of the area, which would give it no normal or the inward one).
         for (int q = 0; q < fv.n_qpoints(); ++q)
           for (int d = 0; d < 3; ++d)
-            normal[node][d] += fv.shape(i, q) * fv.normal(q)[d] * fv.JxW(q);
+            normal[node][d] += std::abs(fv.shape(i, q)) * fv.normal(q)[d] * fv.JxW(q);
       }
     }
     for (const int node : touched)
