@@ -198,7 +198,10 @@ def final_figures(results, first):
     t = 0, and the two codes already differ at t = 0 by their discretizations, rows above),
     and what is counted: the step reached 0.5 s, the plug (elastic) has no plastic strain,
     and the ring's largest equivalent plastic strain is within a factor 2 of the golden's
-    (the same flow law on different discretizations of the stress that drives it)."""
+    (the same flow law on different discretizations of the stress that drives it). That
+    largest value is not converged on this mesh in either code (the MTS flow is steep in the
+    stress, which peaks at the interface: Kiln 1.69e-5 here, 7.4e-5 on the once-split mesh;
+    README), so the factor 2 is a check of this mesh only."""
     golden = tf.golden_series(golden_path(), 2)
     step = tf.kiln_steps(results)[-1]
     index = tf.match(step.centroids, golden.centroids)
