@@ -99,6 +99,14 @@ class TransientProblem : public NonlinearProblem
 public:
   /// t [s], a [1/s], b (on solution_map(), unit of x per s) for the next evaluate() calls.
   virtual void set_time_derivative(double time, double a, const Vector &b) = 0;
+  /// Optional: the past states b is made of, b = Σ_k weights[k] past[k] (the time stepper's
+  /// x_n, and x_{n-1} with BDF2), for a term that differentiates a nonlinear function g of x
+  /// in time as a g(x) + Σ_k weights[k] g(past[k]) (the enthalpy: doc/heat.md). Called after
+  /// set_time_derivative, which forgets the last history. Default: ignored.
+  virtual void set_time_history(const std::vector<double> & /*weights*/,
+                                const std::vector<const Vector *> & /*past*/)
+  {
+  }
   /// Optional: 1 for the unknowns with a time derivative, 0 for the others (quasi-static
   /// displacement); the local error estimate of the time stepper counts the first only.
   /// Default: none (every unknown counts).

@@ -29,7 +29,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   KILN_ASSERT(slots_.T <= 0, "the temperature must be the first unknown of a node");
   const InteriorFaceCheck interior(mesh);
   if (slots_.T >= 0)
-    thermal_.emplace(thermal, material, mesh, dofs.layout(), interior, where + "/Thermal");
+    thermal_.emplace(thermal, material, mesh, dofs.layout(), interior, where + "/Thermal",
+                     materials);
   if (slots_.u >= 0)
     mechanics_.emplace(mechanics, material, mesh, interior, where + "/Mechanics", materials);
 
@@ -85,6 +86,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   }
   fields_ = std::make_unique<NodalFields>(dofs, *assembler_, constraints_,
                                           material.reference_temperature());
+  fields_->keep_history(thermal_ && thermal_->needs_temperature_history());
   hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus);
 
   if (mechanics_ && materials != nullptr)
@@ -173,6 +175,12 @@ void CoupledProblem::set_time_derivative(const double time, const double a, cons
   decided_ = false;
   for (const auto &strategy : interfaces_)
     strategy->start_step();
+}
+
+void CoupledProblem::set_time_history(const std::vector<double> &weights,
+                                      const std::vector<const Vector *> &past)
+{
+  fields_->set_time_history(weights, past);
 }
 
 void CoupledProblem::freeze_temperature(const Vector *x)
@@ -461,7 +469,7 @@ StateSummary CoupledProblem::summary(const Vector &x)
   else
     prepare(x);
   if (thermal_)
-    summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction().heat_capacity(), s);
+    summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction(), s);
   summarize_displacement(dofs_, *fields_, s);
   // The heat across each gap, for the history's columns per gap (several gaps only).
   s.gaps.resize(mesh_.gap_side_sets.size());

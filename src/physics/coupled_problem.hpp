@@ -83,6 +83,9 @@ public:
   /// The contact monitor sees the active set as after an evaluation.
   void jacobian_kept(const Vector &x) override;
   void set_time_derivative(double time, double a, const Vector &b) override;
+  /// Keeps the past temperatures if a heat kernel reads them (NodalFields::keep_history).
+  void set_time_history(const std::vector<double> &weights,
+                        const std::vector<const Vector *> &past) override;
   /// Commits the quadrature-point state (QuadratureState::commit), then the interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
   /// Restores the quadrature-point state (QuadratureState::restore).

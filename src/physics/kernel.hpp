@@ -22,6 +22,18 @@ struct FieldSlots
   int u = -1;
 };
 
+/// The past nodal temperatures of a cell that Tdot is made of, Tdot = a T + Σ_k weights[k]
+/// T_past[k] (TransientProblem::set_time_history: x_n, and x_{n-1} with BDF2), one value per
+/// cell node; n = 0 in a steady solve or where no kernel asked for them
+/// (NodalFields::keep_history). A kernel that differentiates a nonlinear function of T in
+/// time (the enthalpy) takes dH/dt = a H(T) + Σ_k weights[k] H(T_past[k]).
+struct TemperatureHistory
+{
+  int n = 0;
+  std::array<double, 2> weights{};        ///< [1/s]
+  std::array<const double *, 2> T_past{}; ///< [K], n_shape() values each
+};
+
 /// One cell: its shape functions and the nodal fields (constrained unknowns at their
 /// prescribed values), one local node per node of the cell, in its type's order.
 struct CellState
@@ -35,6 +47,7 @@ struct CellState
   FieldSlots slots;
   int cell = -1;       ///< its global index (mesh.block_id[cell]: its material's block)
   int cell_local = -1; ///< its index among the owned cells (QuadratureState's)
+  TemperatureHistory history{};
 };
 
 class CellKernel

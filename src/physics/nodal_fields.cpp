@@ -28,6 +28,29 @@ void NodalFields::set_time_derivative(const double time, const double a, const V
   time_ = time;
   a_ = a;
   assembler_.gather(b, *b_overlap_);
+  weights_.clear();
+}
+
+void NodalFields::set_time_history(const std::vector<double> &weights,
+                                   const std::vector<const Vector *> &past)
+{
+  weights_.clear();
+  if (!keep_history_ || T_slot_ < 0)
+    return;
+  KILN_ASSERT(weights.size() == past.size() && past.size() <= 2,
+              "a time history of " << past.size() << " states");
+  if (past_overlap_.is_null())
+    past_overlap_ = assembler_.make_overlap_vector();
+  T_past_.resize(past.size());
+  for (std::size_t k = 0; k < past.size(); ++k)
+  {
+    assembler_.gather(*past[k], *past_overlap_);
+    const auto x = past_overlap_->getData();
+    T_past_[k].resize(T_.size());
+    for (std::size_t i = 0; i < T_.size(); ++i)
+      T_past_[k][i] = x[F_ * i + T_slot_];
+  }
+  weights_ = weights;
 }
 
 void NodalFields::update(const Vector &x_overlap)

@@ -27,6 +27,18 @@ public:
   /// Replaces a only (CoupledProblem::jacobian_with); the next update() uses it.
   void set_a(const double a) { a_ = a; }
 
+  /// Whether set_time_history() keeps the past temperatures (a kernel reads them: the
+  /// enthalpy's capacity term); default false, which costs nothing.
+  void keep_history(const bool keep) { keep_history_ = keep; }
+  /// b = Σ_k weights[k] past[k] (owned; TransientProblem::set_time_history): the past
+  /// temperatures at every overlap node, if keep_history(); set_time_derivative() forgets them.
+  void set_time_history(const std::vector<double> &weights,
+                        const std::vector<const Vector *> &past);
+  /// The number of past states kept (0: none), their weights [1/s] and temperatures [K].
+  int n_past() const { return static_cast<int>(weights_.size()); }
+  double past_weight(const int k) const { return weights_[k]; }
+  double T_past(const int k, const int node) const { return T_past_[k][overlap_index_[node]]; }
+
   /// The fields at x (overlap values).
   void update(const Vector &x_overlap);
   /// The position of a mesh node among the overlap nodes, or -1.
@@ -49,5 +61,9 @@ private:
   Teuchos::RCP<Vector> b_overlap_;
   std::vector<double> T_, T_dot_; ///< per overlap node
   std::vector<Point> u_;          ///< per overlap node
+  bool keep_history_ = false;
+  std::vector<double> weights_;             ///< of the past states kept
+  std::vector<std::vector<double>> T_past_; ///< per past state, per overlap node
+  Teuchos::RCP<Vector> past_overlap_;       ///< a past state's overlap values (scratch)
 };
 } // namespace kiln

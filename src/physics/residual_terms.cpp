@@ -122,7 +122,15 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
   LocalSystem local(0, dofs_.n_node_fields(), jacobian);
   std::vector<int> nodes;
   std::array<double, max_cell_nodes> T{}, T_dot{};
+  std::array<std::array<double, max_cell_nodes>, 2> T_past{};
   std::array<Point, max_cell_nodes> u{};
+  TemperatureHistory history;
+  history.n = fields.n_past();
+  for (int k = 0; k < history.n; ++k)
+  {
+    history.weights[k] = fields.past_weight(k);
+    history.T_past[k] = T_past[k].data();
+  }
   int cell_local = -1;
   for (const int c : dofs_.owned_cells())
   {
@@ -135,10 +143,19 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
       T[i] = fields.T(nodes[i]);
       T_dot[i] = fields.T_dot(nodes[i]);
       u[i] = fields.u(nodes[i]);
+      for (int k = 0; k < history.n; ++k)
+        T_past[k][i] = fields.T_past(k, nodes[i]);
     }
-    const CellState state{
-        fe, {T.data(), n}, {T_dot.data(), n}, {u.data(), n}, fields.a(), fields.time(), slots_,
-        c,  cell_local};
+    const CellState state{fe,
+                          {T.data(), n},
+                          {T_dot.data(), n},
+                          {u.data(), n},
+                          fields.a(),
+                          fields.time(),
+                          slots_,
+                          c,
+                          cell_local,
+                          history};
     internal::naming(
         [&]
         {

@@ -13,26 +13,40 @@
 namespace kiln
 {
 void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const NodalFields &fields,
-                           const double rho_c, StateSummary &summary)
+                           const BlockHeatConductionKernel &conduction, StateSummary &summary)
 {
   const auto &comm = *dofs.owned_dof_map()->getComm();
   if (!dofs.layout().temperature)
     return;
-  double sums[3] = {0.0, 0.0, 0.0}; // ∫T, ∫1, ∫rho c T
+  // One material of constant rho c: ∫ H = rho c ∫ T.
+  const bool linear =
+      conduction.kernels().size() == 1 && conduction.kernels().front().enthalpy().is_linear();
+  double sums[3] = {0.0, 0.0, 0.0}; // ∫T, ∫1, ∫H(T)
   ElementValues fe;
   for (const int c : dofs.owned_cells())
   {
     fe.reinit(mesh, c);
+    const HeatConductionKernel &kernel = conduction.of_cell(c);
+    // H as the capacity term sees it: at the point (consistent), or at the nodes (lumped).
+    const bool lumped = kernel.capacity() == HeatConductionKernel::Capacity::lumped;
     for (int q = 0; q < fe.n_qpoints(); ++q)
     {
-      double T = 0.0;
+      double T = 0.0, H = 0.0;
       for (int i = 0; i < fe.n_shape(); ++i)
-        T += fe.shape(i, q) * fields.T(mesh.cell_nodes(c)[i]);
+      {
+        const double T_i = fields.T(mesh.cell_nodes(c)[i]);
+        T += fe.shape(i, q) * T_i;
+        if (!linear && lumped)
+          H += fe.shape(i, q) * kernel.enthalpy().value(T_i);
+      }
       sums[0] += T * fe.JxW(q);
       sums[1] += fe.JxW(q);
+      if (!linear)
+        sums[2] += (lumped ? H : kernel.enthalpy().value(T)) * fe.JxW(q);
     }
   }
-  sums[2] = rho_c * sums[0];
+  if (linear)
+    sums[2] = conduction.kernels().front().enthalpy().heat_capacity(0.0) * sums[0];
   double totals[3] = {0.0, 0.0, 0.0};
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, sums, totals);
   double T_min = std::numeric_limits<double>::infinity(), T_max = -T_min;

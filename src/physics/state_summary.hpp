@@ -3,6 +3,7 @@
 /// largest displacement, contact area and force, gap opening.
 #include "contact/interface_strategy.hpp"
 #include "discretization/dof_manager.hpp"
+#include "physics/heat/block_heat_conduction_kernel.hpp"
 #include "physics/nodal_fields.hpp"
 
 #include <limits>
@@ -26,23 +27,25 @@ struct StateSummary
 {
   double T_min = 0.0, T_max = 0.0; ///< over the nodes [K]
   double T_mean = 0.0;             ///< volume average [K]
-  double thermal_energy = 0.0;     ///< ∫ rho c T dΩ [J]
-  double max_displacement = 0.0;   ///< max over the nodes of |u| [m]
-  int n_pairs = 0;                 ///< gap pairs
-  int n_active = 0;                ///< pairs in contact
-  double contact_area = 0.0;       ///< Σ A of the pairs in contact [m^2]
-  double normal_force = 0.0;       ///< Σ A p of the pairs in contact, compression > 0 [N]
-  double max_opening = 0.0;        ///< max over the pairs of g [m] (0 without pairs)
-  double min_opening = 0.0;        ///< min over the pairs of g, negative if penetrated [m]
-  double max_penetration = 0.0;    ///< max over the pairs of -g, at least 0 [m]
+  /// ∫ H(T) dΩ, H = ∫ rho c dT (rho c T if constant; with the lumped capacity H interpolated
+  /// from the nodes, as the capacity term takes it) [J]
+  double thermal_energy = 0.0;
+  double max_displacement = 0.0; ///< max over the nodes of |u| [m]
+  int n_pairs = 0;               ///< gap pairs
+  int n_active = 0;              ///< pairs in contact
+  double contact_area = 0.0;     ///< Σ A of the pairs in contact [m^2]
+  double normal_force = 0.0;     ///< Σ A p of the pairs in contact, compression > 0 [N]
+  double max_opening = 0.0;      ///< max over the pairs of g [m] (0 without pairs)
+  double min_opening = 0.0;      ///< min over the pairs of g, negative if penetrated [m]
+  double max_penetration = 0.0;  ///< max over the pairs of -g, at least 0 [m]
   /// Per gap (Mesh::gap_side_sets order); the totals above are over all of them.
   std::vector<GapFigures> gaps;
 };
 
-/// The temperature figures at `fields` (rho_c: the heat capacity [J/(m^3 K)]; 0 without a
-/// temperature, which leaves them 0). Collective.
+/// The temperature figures at `fields` (`conduction`: each cell's enthalpy H(T); nothing
+/// without a temperature, which leaves them 0). Collective.
 void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const NodalFields &fields,
-                           double rho_c, StateSummary &summary);
+                           const BlockHeatConductionKernel &conduction, StateSummary &summary);
 /// The largest displacement at `fields` (0 without a displacement). Collective.
 void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                             StateSummary &summary);

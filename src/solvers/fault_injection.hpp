@@ -65,6 +65,11 @@ public:
     return problem_->free_motion_names();
   }
   void set_time_derivative(double time, double a, const Vector &b) override;
+  void set_time_history(const std::vector<double> &weights,
+                        const std::vector<const Vector *> &past) override
+  {
+    problem_->set_time_history(weights, past);
+  }
   Teuchos::RCP<const Vector> time_error_mask() const override
   {
     return problem_->time_error_mask();

@@ -331,15 +331,20 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   const bool bdf2 = method_ == Method::bdf2 && n_past >= 1;
   Vector b(map), x(map);
   double a = 1.0 / h;
+  std::vector<double> weights{-1.0 / h};
+  std::vector<const Vector *> past{state.x.get()};
   if (bdf2)
   {
     const double w = h / k;
     a = (1.0 + 2.0 * w) / ((1.0 + w) * h);
-    b.update(-(1.0 + w) / h, *state.x, w * w / ((1.0 + w) * h), *state.x_1, 0.0);
+    weights = {-(1.0 + w) / h, w * w / ((1.0 + w) * h)};
+    past.push_back(state.x_1.get());
+    b.update(weights[0], *state.x, weights[1], *state.x_1, 0.0);
   }
   else
-    b.update(-1.0 / h, *state.x, 0.0);
+    b.update(weights[0], *state.x, 0.0);
   problem.set_time_derivative(t + h, a, b);
+  problem.set_time_history(weights, past);
   Tpetra::deep_copy(x, *state.x);
   // The first Newton step, extrapolated from the accepted states: its Krylov start.
   std::unique_ptr<Vector> first_step;

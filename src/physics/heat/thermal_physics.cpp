@@ -6,7 +6,10 @@
 #include "physics/heat/gap_conductance_kernel.hpp"
 #include "physics/heat/thermal_conditions.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 namespace kiln
 {
@@ -81,15 +84,65 @@ std::shared_ptr<const Expression> read_initial_field(const Teuchos::ParameterLis
 }
 } // namespace
 
+namespace
+{
+/// One conduction kernel per material of `materials`, or `material`'s alone: rho c and k of
+/// each; a constant rho c as a number (the kernel's constant path).
+BlockHeatConductionKernel conduction_kernels(const Teuchos::ParameterList &thermal,
+                                             const Material &material, const Mesh &mesh,
+                                             const MaterialMap *materials)
+{
+  const auto capacity = thermal.get<std::string>("Capacity") == "Consistent"
+                            ? HeatConductionKernel::Capacity::consistent
+                            : HeatConductionKernel::Capacity::lumped;
+  std::vector<HeatConductionKernel> kernels;
+  std::map<int, int> kernel_of_block;
+  const int n = materials != nullptr ? materials->n_materials() : 1;
+  for (int i = 0; i < n; ++i)
+  {
+    const Material &m = materials != nullptr ? materials->material(i) : material;
+    kernels.emplace_back(m.enthalpy(), m.conductivity(), capacity);
+  }
+  if (materials != nullptr)
+    for (const int block : mesh.block_ids())
+      kernel_of_block[block] = materials->index_of_block(block);
+  return BlockHeatConductionKernel(mesh, std::move(kernels), std::move(kernel_of_block));
+}
+
+/// The material of the cells beside the gaps, for the Contact Dependent conductance (one
+/// set of elastic constants): `material` without `materials`; an InputError naming the
+/// materials if the gaps' cells are of several.
+const Material &gap_material(const Material &material, const Mesh &mesh,
+                             const MaterialMap *materials, const std::string &where)
+{
+  if (materials == nullptr || materials->n_materials() == 1)
+    return material;
+  std::set<int> at_gap;
+  for (const GapFace &face : mesh.gap_faces)
+    for (const int cell : {face.cell_a, face.cell_b})
+      if (cell >= 0)
+        at_gap.insert(materials->index_of_block(mesh.block_id[cell]));
+  if (at_gap.size() <= 1)
+    return at_gap.empty() ? material : materials->material(*at_gap.begin());
+  std::string names;
+  for (const int i : at_gap)
+    names += (names.empty() ? "\"" : ", \"") + materials->name(i) + "\"";
+  KILN_CHECK_INPUT(false, where + "/\"Gap Conductance Model\"",
+                   "is \"Contact Dependent\", which takes one material's elastic constants, "
+                   "but the gap's cells are of "
+                       << at_gap.size() << " materials (" << names
+                       << "); use \"Constant\", or the same material on both sides of the gap");
+  return material;
+}
+} // namespace
+
 ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Material &material,
                                const Mesh &mesh, const DofLayout &layout,
-                               const InteriorFaceCheck &interior, const std::string &where)
+                               const InteriorFaceCheck &interior, const std::string &where,
+                               const MaterialMap *materials)
     : initial_temperature_(thermal.get<double>("Initial Temperature")),
       initial_field_(read_initial_field(thermal, mesh, where)),
-      conduction_(material.heat_capacity(), material.conductivity(),
-                  thermal.get<std::string>("Capacity") == "Consistent"
-                      ? HeatConductionKernel::Capacity::consistent
-                      : HeatConductionKernel::Capacity::lumped)
+      conduction_(conduction_kernels(thermal, material, mesh, materials))
 {
   const double h = thermal.get<double>("Gap Conductance");
   if (thermal.get<std::string>("Gap Conductance Model") == "Contact Dependent")
@@ -98,7 +151,8 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
                      "is \"Contact Dependent\", which needs the contact state: set Kiln/"
                      "\"Physics\" to \"Thermo-Elasticity\" with Mechanics/Contact/\"Enabled\" "
                      "true, or use \"Constant\"");
-    KILN_CHECK_INPUT(material.elastically_constant(), where + "/\"Gap Conductance Model\"",
+    const Material &gap = gap_material(material, mesh, materials, where);
+    KILN_CHECK_INPUT(gap.elastically_constant(), where + "/\"Gap Conductance Model\"",
                      "is \"Contact Dependent\", which takes constant elastic constants and "
                      "expansion, but the material's depend on T; give them as numbers, or use "
                      "\"Constant\"");
@@ -106,10 +160,10 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
     k.h0 = h;
     k.length = thermal.get<double>("Gap Width Scale");
     k.pressure_coefficient = thermal.get<double>("Gap Pressure Coefficient");
-    k.lambda = material.lame_lambda();
-    k.shear_modulus = material.shear_modulus();
-    k.beta = (3.0 * k.lambda + 2.0 * k.shear_modulus) * material.thermal_expansion();
-    k.reference_temperature = material.reference_temperature();
+    k.lambda = gap.lame_lambda();
+    k.shear_modulus = gap.shear_modulus();
+    k.beta = (3.0 * k.lambda + 2.0 * k.shear_modulus) * gap.thermal_expansion();
+    k.reference_temperature = gap.reference_temperature();
     gap_ = std::make_unique<ContactConductanceKernel>(k);
   }
   else
@@ -133,6 +187,9 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
 
 double ThermalPhysics::conductivity_scale() const
 {
-  return conduction_.conductivity().value(initial_temperature_);
+  double k = 0.0;
+  for (const HeatConductionKernel &kernel : conduction_.kernels())
+    k = std::max(k, kernel.conductivity().value(initial_temperature_));
+  return k;
 }
 } // namespace kiln

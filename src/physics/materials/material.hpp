@@ -2,6 +2,7 @@
 /// A material: the properties every physics kernel reads, each a function of temperature.
 #include "physics/materials/conductivity_model.hpp"
 #include "physics/materials/constitutive_model.hpp"
+#include "physics/materials/enthalpy.hpp"
 #include "physics/materials/temperature_function.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -44,6 +45,8 @@ public:
   double heat_capacity(double T) const { return density_.value(T) * specific_heat_.value(T); }
   /// d(rho c)/dT [J/(m^3 K^2)]
   double d_heat_capacity_d_T(double T) const;
+  /// H(T) = ∫ rho c dT [J/m^3], the heat equation's conserved quantity (doc/heat.md).
+  Enthalpy enthalpy() const { return Enthalpy(density_, specific_heat_); }
   /// k(T) [W/(m K)] and its derivative.
   const ConductivityModel &conductivity() const { return conductivity_; }
   double lame_lambda(double T) const;         ///< lambda [Pa]

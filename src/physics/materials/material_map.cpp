@@ -104,36 +104,15 @@ bool MaterialMap::all_constant() const
                      [](const Material &m) { return m.is_constant(); });
 }
 
-const Material &MaterialMap::uniform_material(const bool heat) const
+const Material &MaterialMap::uniform_material(const bool gravity) const
 {
-  if (!heat)
-  {
+  if (gravity)
     for (int i = 0; i < n_materials(); ++i)
       for (const std::string &property : materials_[i].temperature_dependent_properties())
         KILN_CHECK_INPUT(property != "Density", paths_[i] + "/\"" + property + "\"",
-                         "depends on temperature, but the body force takes a constant "
-                         "density yet; give a number (the value at the temperatures of "
-                         "interest)");
-    return materials_.front();
-  }
-  if (n_materials() > 1)
-  {
-    std::ostringstream which;
-    for (int i = 0; i < n_materials(); ++i)
-      which << (i == 0 ? "" : ", ") << "\"" << names_[i] << "\" on block"
-            << (blocks_[i].size() == 1 ? " " : "s ") << listed(blocks_[i]);
-    KILN_CHECK_INPUT(false, paths_.front().substr(0, paths_.front().rfind('/')),
-                     "gives " << n_materials() << " materials (" << which.str()
-                              << "); the mechanics takes the material of each cell's block, "
-                                 "but the heat equation does not yet: give one material for "
-                                 "every block, or Physics \"Elasticity\"");
-  }
-  for (const std::string &property : materials_.front().temperature_dependent_properties())
-    KILN_CHECK_INPUT(property != "Density" && property != "Specific Heat",
-                     paths_.front() + "/\"" + property + "\"",
-                     "depends on temperature, but the heat equation takes only the "
-                     "conductivity and the elastic constants and expansion as functions of T "
-                     "yet; give a number (the value at the temperatures of interest)");
+                         "depends on temperature, but the body force rho g (Mechanics/"
+                         "\"Gravity\") takes a constant density yet; give a number (the value "
+                         "at the temperatures of interest), or no Gravity");
   return materials_.front();
 }
 } // namespace kiln

@@ -45,13 +45,14 @@ public:
   /// Whether no property of any material depends on T.
   bool all_constant() const;
 
-  /// The material of the heat kernels and of the problem's scales: the mechanics takes each
-  /// block's material and its T-dependent elastic constants and expansion (MechanicalPhysics),
-  /// the heat equation one material with a constant rho c and k(T). With `heat`, throws
-  /// InputError if there are several materials, or if the density or the specific heat
-  /// depends on T (naming it); without, returns the first material and throws if a density
-  /// depends on T (the body force takes a constant rho).
-  const Material &uniform_material(bool heat = true) const;
+  /// The material of the problem's scales (the reference temperature, the contact's modulus):
+  /// the first. The physics take each block's material (ThermalPhysics: rho(T), c(T), k(T);
+  /// MechanicalPhysics: the elastic constants, expansion and model). With `gravity` (a nonzero
+  /// Mechanics/"Gravity"), throws InputError naming the material if a density depends on T:
+  /// the body force rho g takes a constant rho yet.
+  const Material &uniform_material(bool gravity = false) const;
+  /// Block id -> material index, for every block of the mesh.
+  const std::map<int, int> &material_of_block() const { return material_of_block_; }
 
 private:
   std::vector<Material> materials_;

@@ -69,6 +69,9 @@ public:
   /// Whether p does not depend on T ("Constant", or a formula that does not name T; a "Table"
   /// counts as varying).
   bool is_constant() const { return constant_; }
+  /// Whether p is a formula ("Expression"), smooth between any temperatures, rather than a
+  /// table or a number.
+  bool is_expression() const { return expression_ != nullptr; }
   /// The temperatures [K] where the range was checked: a table's points, a formula's sample
   /// temperatures, none for a constant. Material checks combinations of properties there.
   const std::vector<double> &checked_temperatures() const { return checked_temperatures_; }

@@ -1,8 +1,8 @@
 // Tests src/physics/materials/material_map.cpp: Kiln/Material for every block, Kiln/Materials
 // by name with their "Blocks", the messages for a block without material, a block in two
-// materials, an unknown block, both lists given, and the bridge to today's kernels
-// (uniform_material: one material for the heat equation, whose density and specific heat
-// are numbers; the mechanics takes E(T), nu(T), alpha(T) and several materials).
+// materials, an unknown block, both lists given, and uniform_material (the first material,
+// for the scales; a density of T refused only with gravity: the heat equation takes several
+// materials and rho(T), c(T), k(T), the mechanics E(T), nu(T), alpha(T)).
 // KILN_TEST_NP: 1
 #include "physics/materials/material_map.hpp"
 
@@ -10,6 +10,7 @@
 #include "base/parameters.hpp"
 #include "support/parameter_lists.hpp"
 
+#include <Teuchos_Tuple.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -81,13 +82,10 @@ TEST(MaterialMap, MaterialsByNameOnBlocks)
   EXPECT_EQ(map.index_of_block(2), 1);
   EXPECT_EQ(map.of_block(1).density(), 2700.0);
   EXPECT_EQ(map.of_block(2).density(), 7900.0);
-  EXPECT_EQ(error_of(user),
-            "in.xml: Kiln/Materials: gives 2 materials (\"aluminium\" on block 1, \"steel\" on "
-            "block 2); the mechanics takes the material of each cell's block, but the heat "
-            "equation does not yet: give one material for every block, or Physics "
-            "\"Elasticity\"");
-  // Without the heat equation (Physics "Elasticity") the mechanics takes them by block.
-  EXPECT_EQ(map.uniform_material(false).density(), 2700.0);
+  // Both physics take them by block; the scales take the first.
+  EXPECT_EQ(map.uniform_material().density(), 2700.0);
+  EXPECT_EQ(map.uniform_material(true).density(), 2700.0);
+  EXPECT_EQ(map.material_of_block().at(2), 1);
   // One named material for every block is what Kiln/Material is.
   Teuchos::ParameterList one;
   add_material(one, "steel", 7900.0, {2, 1});
@@ -143,7 +141,7 @@ TEST(MaterialMap, PropertyErrorsNameTheMaterial)
   EXPECT_EQ(error_of(user), "in.xml: Kiln/Materials/steel/\"Density\" = -7900: must be > 0");
 }
 
-TEST(MaterialMap, TheHeatEquationTakesOnlyTheConductivityAsAFunctionOfTYet)
+TEST(MaterialMap, PropertiesOfTemperatureAndTheDensityUnderGravity)
 {
   Teuchos::ParameterList k_of_T;
   Teuchos::ParameterList &k = k_of_T.sublist("Material").sublist("Conductivity");
@@ -167,10 +165,17 @@ TEST(MaterialMap, TheHeatEquationTakesOnlyTheConductivityAsAFunctionOfTYet)
   Teuchos::ParameterList &rho = rho_of_T.sublist("Material").sublist("Density");
   rho.set("Type", "Expression");
   rho.set("Expression", "7900 - 0.3*(T - 300)");
-  EXPECT_EQ(error_of(rho_of_T),
-            "in.xml: Kiln/Material/\"Density\": depends on temperature, but the heat equation "
-            "takes only the conductivity and the elastic constants and expansion as functions of "
-            "T yet; give a number (the value at the temperatures of interest)");
+  Teuchos::ParameterList &c = rho_of_T.sublist("Material").sublist("Specific Heat");
+  c.set("Type", "Table");
+  c.set("Temperatures", Teuchos::Array<double>(Teuchos::tuple(300.0, 500.0)));
+  c.set("Values", Teuchos::Array<double>(Teuchos::tuple(450.0, 520.0)));
+  // The heat equation takes rho(T) and c(T) (its enthalpy); so does the mechanics without
+  // gravity.
+  EXPECT_FALSE(make(rho_of_T).uniform_material().enthalpy().is_linear());
+  EXPECT_EQ(kiln_test::input_error_message([&] { make(rho_of_T).uniform_material(true); }),
+            "in.xml: Kiln/Material/\"Density\": depends on temperature, but the body force "
+            "rho g (Mechanics/\"Gravity\") takes a constant density yet; give a number (the "
+            "value at the temperatures of interest), or no Gravity");
 }
 
 TEST(MaterialMap, ModelSublistChoosesTheMechanicalModel)

@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Runs the two-material slabs of tests/regression/materials/ (doc/heat.md, "Conservative
+capacity"; doc/materials.md, "Materials and blocks"):
+- two-material-slab.xml, steady: T at every node against the piecewise-linear exact
+  temperature (T(0) = 300 + 100/3 K at the shared nodes), to 1e-9 K;
+- two-material-slab-energy.xml, transient with rho(T), c(T) and k(T) on two blocks, as given
+  (BDF2, lumped capacity) and with backward Euler and the consistent capacity: at every step
+  the change of the time history's thermal_energy (the integral of H(T) = ∫ rho c dT) against
+  the heat in, q A t = 10 W * t, to 1e-9 of the 200 J that come in; and the rise is at least
+  20 K, so that rho c(T) varies.
+usage: two_material_slab.py KILN STEADY_DECK ENERGY_DECK WORKDIR NP MPIEXEC"""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+kiln, steady_deck, energy_deck, work, np_, mpiexec = sys.argv[1:7]
+work = Path(work)
+work.mkdir(parents=True, exist_ok=True)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+failures = []
+
+
+def run(deck):
+    subprocess.run([mpiexec, "-np", np_, kiln, str(deck)], cwd=work, env=env, check=True)
+
+
+# Steady: piecewise linear, k = 100 on x < 0, 50 on x > 0.
+run(steady_deck)
+with h5py.File(work / "results" / "two-material-slab.h5", "r") as h5:
+    x = h5["mesh/coordinates"][...]
+    step = h5["steps"][sorted(h5["steps"].keys())[-1]]
+    T = step["temperature"][...].reshape(-1)
+T_interface = 300.0 + 100.0 / 3.0
+exact = np.where(x[:, 0] <= 0.0, T_interface + (T_interface - 300.0) * x[:, 0],
+                 T_interface + (400.0 - T_interface) * x[:, 0])
+error = float(np.abs(T - exact).max())
+at_interface = np.isclose(x[:, 0], 0.0)
+print(f"steady slab: max |T - T_exact| = {error:.3g} K; T at x = 0: "
+      f"{T[at_interface].min():.12f} .. {T[at_interface].max():.12f} K")
+if error > 1e-9 or at_interface.sum() != 9:
+    failures.append("steady slab")
+
+# Transient: the energy balance, in three variants.
+text = Path(energy_deck).read_text()
+variants = {
+    "bdf2-lumped": text,
+    "euler-consistent": text.replace('value="BDF2"', 'value="Backward Euler"').replace(
+        'value="Lumped"', 'value="Consistent"'),
+    "bdf2-consistent": text.replace('value="Lumped"', 'value="Consistent"'),
+}
+heat_rate = 1e5 * 1e-4  # q A [W]
+for name, deck_text in variants.items():
+    deck = work / f"slab-energy-{name}.xml"
+    deck.write_text(deck_text)
+    run(deck)
+    history = np.genfromtxt(work / "results" / f"slab-energy-{name}.history.csv", delimiter=",",
+                            names=True)
+    t = history["time_s"]
+    E = history["thermal_energy_J"]
+    imbalance = float(np.abs((E - E[0]) - heat_rate * t).max()) / (heat_rate * t[-1])
+    rise = float(history["T_mean_K"][-1] - history["T_mean_K"][0])
+    print(f"{name}: {len(t) - 1} steps to t = {t[-1]} s; max |ΔE - q A t| / (q A t_end) = "
+          f"{imbalance:.3g}; mean T rose by {rise:.2f} K")
+    if abs(t[-1] - 20.0) > 1e-9 or imbalance > 1e-9 or rise < 20.0:
+        failures.append(name)
+print("failed: " + ", ".join(failures) if failures else "passed")
+sys.exit(1 if failures else 0)
