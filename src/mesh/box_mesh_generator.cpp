@@ -177,6 +177,24 @@ std::vector<Lattice> cell_lattice_nodes(const CellType type, const std::vector<L
   return nodes;
 }
 
+/// The number of cells of the box (in long double: exact below 2^64, no overflow above).
+long double count_cells(const CellType type, const bool mixed, const std::array<int, 3> &cells)
+{
+  const long double nx = cells[0], column = static_cast<long double>(cells[1]) * cells[2];
+  if (mixed) // hexahedra, the layer of 1 pyramid and 10 tets each, Kuhn's tets
+    return column * (nx / 2 + 11 + 6 * (nx / 2 - 1));
+  switch (type)
+  {
+  case CellType::tet4:
+  case CellType::tet10:
+  case CellType::pyramid5:
+    return nx * column * 6;
+  case CellType::wedge6:
+    return nx * column * 2;
+  default:
+    return nx * column;
+  }
+}
 } // namespace
 
 Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
@@ -239,9 +257,7 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   const long double m = ReferenceCell::of(type_).degree();
   const long double n_nodes =
       (m * cells_[0] + 1.0L) * (m * cells_[1] + 1.0L) * (m * cells_[2] + 1.0L);
-  // At most 11 cells per hexahedron (MIXED's pyramid layer).
-  const long double n_cells =
-      static_cast<long double>(cells_[0]) * static_cast<long double>(cells_[1]) * cells_[2] * 11;
+  const long double n_cells = count_cells(type_, mixed_, cells_);
   KILN_CHECK_INPUT(n_nodes <= std::numeric_limits<int>::max(), where + "/\"Cells\"",
                    "{" << cells_[0] << ", " << cells_[1] << ", " << cells_[2] << "} gives "
                        << static_cast<double>(n_cells) << " cells and "
@@ -253,20 +269,7 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
 
 long long BoxMeshGenerator::n_cells() const
 {
-  const long long nx = cells_[0], column = static_cast<long long>(cells_[1]) * cells_[2];
-  if (mixed_) // hexahedra, the layer of 1 pyramid and 10 tets each, Kuhn's tets
-    return column * (nx / 2 + 11 + 6 * (nx / 2 - 1));
-  switch (type_)
-  {
-  case CellType::tet4:
-  case CellType::tet10:
-  case CellType::pyramid5:
-    return nx * column * 6;
-  case CellType::wedge6:
-    return nx * column * 2;
-  default:
-    return nx * column;
-  }
+  return static_cast<long long>(count_cells(type_, mixed_, cells_));
 }
 
 long long BoxMeshGenerator::n_nodes() const
