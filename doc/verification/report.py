@@ -514,8 +514,9 @@ def elastic_section(elastic):
           "fields are one-dimensional and Q1 is then exact at the nodes, so the L2 error of "
           "u_z is the interpolation error of a quadratic (order 2) and the cell-averaged "
           "stress, constant per cell against a linear stress, has an L2 error of order 1 (it "
-          "equals the exact stress at the cell centres). A three-dimensional manufactured "
-          "solution needs a body force varying in space, which Kiln does not take. The test "
+          "equals the exact stress at the cell centres). Three-dimensional manufactured "
+          "solutions without a source (harmonic fields) on every element type, and with "
+          "E(T): [manufactured-solutions.md](manufactured-solutions.md). The test "
           "asserts the last orders (2 +- 0.1, 1 +- 0.1).", "",
           "| case | cells along the bar | L2 error u_z [m^2.5] | order u | "
           "L2 error stress [Pa m^1.5] | order stress |", "|---|---:|---:|---:|---:|---:|"]

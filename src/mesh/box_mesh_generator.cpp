@@ -7,7 +7,9 @@
 #include <Teuchos_Array.hpp>
 #include <Teuchos_Tuple.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -17,55 +19,102 @@ namespace kiln
 {
 namespace
 {
-/// How many cells of `type` one hexahedron of the grid becomes.
-int cells_per_hexahedron(const CellType type)
-{
-  switch (type)
-  {
-  case CellType::tet4:
-  case CellType::tet10:
-    return 6;
-  case CellType::wedge6:
-    return 2;
-  default:
-    return 1;
-  }
-}
-
 using Lattice = std::array<int, 3>;
 
-/// The corners of the linear cells one hexahedron with lowest corner `o` becomes, on the grid
-/// at half the spacing (a corner (i, j, k) is (2i, 2j, 2k)), each cell in its linear type's
-/// Exodus order and positively oriented.
-std::vector<std::vector<Lattice>> split_hexahedron(const CellType type, const Lattice &o)
+/// A cell of the grid before its nodes are numbered: its type, element block and corners on
+/// the grid at half the spacing (a corner (i, j, k) is (2i, 2j, 2k)).
+struct GridCell
+{
+  CellType type;
+  int block;
+  std::vector<Lattice> corners;
+};
+
+/// det(b - a, c - a, d - a): six times the signed volume of the tetrahedron a, b, c, d.
+int lattice_det(const Lattice &a, const Lattice &b, const Lattice &c, const Lattice &d)
+{
+  const auto e = [&](const Lattice &p, const int k) { return p[k] - a[k]; };
+  return e(b, 0) * (e(c, 1) * e(d, 2) - e(c, 2) * e(d, 1)) -
+         e(b, 1) * (e(c, 0) * e(d, 2) - e(c, 2) * e(d, 0)) +
+         e(b, 2) * (e(c, 0) * e(d, 1) - e(c, 1) * e(d, 0));
+}
+
+/// The tetrahedron a, b, c, d positively oriented (b and c swapped if it is not).
+std::vector<Lattice> oriented_tet(const Lattice &a, const Lattice &b, const Lattice &c,
+                                  const Lattice &d)
+{
+  if (lattice_det(a, b, c, d) < 0)
+    return {a, c, b, d};
+  return {a, b, c, d};
+}
+
+/// The 6 tetrahedra of Kuhn's split of the hexahedron with lowest corner `o`: a path from
+/// corner 000 to 111 along the axes in each of the 6 orders.
+std::vector<std::vector<Lattice>> kuhn_tets(const Lattice &o)
+{
+  const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::vector<std::vector<Lattice>> tets;
+  for (const auto &order : orders)
+  {
+    std::vector<Lattice> path{o};
+    Lattice at = o;
+    for (const int axis : order)
+    {
+      at[axis] += 2;
+      path.push_back(at);
+    }
+    tets.push_back(oriented_tet(path[0], path[1], path[2], path[3]));
+  }
+  return tets;
+}
+
+/// The hexahedron with lowest corner `o` split on its centre node into one cell per face:
+/// a PYRAMID5 on the face (block `pyramid_block`), or, where `tets_on(face)`, two TETRA4 on the
+/// face's halves cut by its diagonal from its lowest corner (as Kuhn's split cuts it, so that
+/// the face matches a Kuhn neighbour; block `tet_block`). Faces: x-, x+, y-, y+, z-, z+.
+std::vector<GridCell> pyramids_on_centre(const Lattice &o, const std::function<bool(int)> &tets_on,
+                                         const int pyramid_block, const int tet_block)
+{
+  // Each face's corners in cyclic order from its lowest corner (offsets in cells).
+  static const int faces[6][4][3] = {
+      {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}},
+      {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}},
+      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+  const Lattice centre{o[0] + 1, o[1] + 1, o[2] + 1};
+  std::vector<GridCell> cells;
+  for (int f = 0; f < 6; ++f)
+  {
+    std::array<Lattice, 4> c;
+    for (int v = 0; v < 4; ++v)
+      for (int d = 0; d < 3; ++d)
+        c[v][d] = o[d] + 2 * faces[f][v][d];
+    if (tets_on(f))
+    {
+      cells.push_back({CellType::tet4, tet_block, oriented_tet(c[0], c[1], c[2], centre)});
+      cells.push_back({CellType::tet4, tet_block, oriented_tet(c[0], c[2], c[3], centre)});
+    }
+    else if (lattice_det(c[0], c[1], c[3], centre) > 0) // the base counterclockwise from the apex
+      cells.push_back({CellType::pyramid5, pyramid_block, {c[0], c[1], c[2], c[3], centre}});
+    else
+      cells.push_back({CellType::pyramid5, pyramid_block, {c[0], c[3], c[2], c[1], centre}});
+  }
+  return cells;
+}
+
+/// The linear cells the hexahedron with lowest corner `o` becomes in a box of one `type` (block
+/// `block`), each in its linear type's Exodus order and positively oriented.
+std::vector<GridCell> split_hexahedron(const CellType type, const Lattice &o, const int block)
 {
   const auto corner = [&](const int a, const int b, const int c) {
     return Lattice{o[0] + 2 * a, o[1] + 2 * b, o[2] + 2 * c};
   };
-  std::vector<std::vector<Lattice>> cells;
+  std::vector<GridCell> cells;
   if (type == CellType::tet4 || type == CellType::tet10)
-  {
-    // Kuhn: a path from corner 000 to 111 along the axes in each of the 6 orders.
-    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    for (const auto &order : orders)
-    {
-      std::vector<Lattice> tet{corner(0, 0, 0)};
-      std::array<int, 3> at{0, 0, 0};
-      for (const int axis : order)
-      {
-        at[axis] = 1;
-        tet.push_back(corner(at[0], at[1], at[2]));
-      }
-      // An odd order gives a negative volume: swap two corners.
-      const auto edge = [&](const int v, const int d) { return tet[v][d] - tet[0][d]; };
-      const int det = edge(1, 0) * (edge(2, 1) * edge(3, 2) - edge(2, 2) * edge(3, 1)) -
-                      edge(1, 1) * (edge(2, 0) * edge(3, 2) - edge(2, 2) * edge(3, 0)) +
-                      edge(1, 2) * (edge(2, 0) * edge(3, 1) - edge(2, 1) * edge(3, 0));
-      if (det < 0)
-        std::swap(tet[1], tet[2]);
-      cells.push_back(tet);
-    }
-  }
+    for (const auto &tet : kuhn_tets(o))
+      cells.push_back({type, block, tet});
+  else if (type == CellType::pyramid5)
+    return pyramids_on_centre(
+        o, [](int) { return false; }, block, block);
   else if (type == CellType::wedge6)
   {
     // The triangles 00-10-11 and 00-11-01, counterclockwise seen from +z, swept along z.
@@ -76,13 +125,29 @@ std::vector<std::vector<Lattice>> split_hexahedron(const CellType type, const La
       for (int c = 0; c < 2; ++c)
         for (const auto &v : tri)
           wedge.push_back(corner(v[0], v[1], c));
-      cells.push_back(wedge);
+      cells.push_back({type, block, wedge});
     }
   }
   else
-    cells.push_back({corner(0, 0, 0), corner(1, 0, 0), corner(1, 1, 0), corner(0, 1, 0),
-                     corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1)});
+    cells.push_back({type,
+                     block,
+                     {corner(0, 0, 0), corner(1, 0, 0), corner(1, 1, 0), corner(0, 1, 0),
+                      corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1)}});
   return cells;
+}
+
+/// The cells of the hexahedron (i, j, k) of the MIXED box of nx cells along x: HEX8 (block 1)
+/// for x < 0; the first layer beyond, split on its centre into a PYRAMID5 on its face x = 0
+/// (block 2) and two TETRA4 on each other face (block 3); Kuhn's TETRA4 beyond (block 3).
+std::vector<GridCell> mixed_hexahedron(const int nx, const Lattice &o)
+{
+  const int i = o[0] / 2;
+  if (i < nx / 2)
+    return split_hexahedron(CellType::hex8, o, 1);
+  if (i > nx / 2)
+    return split_hexahedron(CellType::tet4, o, 3);
+  return pyramids_on_centre(
+      o, [](const int face) { return face != 0; }, 2, 3);
 }
 
 /// The grid points of all nodes of a cell of `type` whose corners are `corners`: the corners,
@@ -112,6 +177,24 @@ std::vector<Lattice> cell_lattice_nodes(const CellType type, const std::vector<L
   return nodes;
 }
 
+/// The number of cells of the box (in long double: exact below 2^64, no overflow above).
+long double count_cells(const CellType type, const bool mixed, const std::array<int, 3> &cells)
+{
+  const long double nx = cells[0], column = static_cast<long double>(cells[1]) * cells[2];
+  if (mixed) // hexahedra, the layer of 1 pyramid and 10 tets each, Kuhn's tets
+    return column * (nx / 2 + 11 + 6 * (nx / 2 - 1));
+  switch (type)
+  {
+  case CellType::tet4:
+  case CellType::tet10:
+  case CellType::pyramid5:
+    return nx * column * 6;
+  case CellType::wedge6:
+    return nx * column * 2;
+  default:
+    return nx * column;
+  }
+}
 } // namespace
 
 Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
@@ -132,8 +215,12 @@ Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
   p.set("Cell Type", "HEX8",
         "the cells: HEX8 the grid's hexahedra; TETRA4 each split in 6 tetrahedra (Kuhn); "
         "WEDGE6 in 2 wedges (prisms along z); HEX20, HEX27 quadratic hexahedra; TETRA10 the "
-        "tetrahedra made quadratic (see doc/mesh.md) [-]",
-        choice_validator({"HEX8", "TETRA4", "WEDGE6", "HEX20", "HEX27", "TETRA10"}));
+        "tetrahedra made quadratic; PYRAMID5 each split in 6 pyramids on its centre (one per "
+        "face); MIXED: HEX8 for x < 0 (block 1), TETRA4 (Kuhn) for x > 0 (block 3) but the "
+        "first layer of hexahedra there, each split on its centre into a PYRAMID5 on its face "
+        "x = 0 (block 2) and 2 TETRA4 on each other face (block 3) (see doc/mesh.md) [-]",
+        choice_validator(
+            {"HEX8", "TETRA4", "WEDGE6", "PYRAMID5", "HEX20", "HEX27", "TETRA10", "MIXED"}));
   return p;
 }
 
@@ -151,6 +238,7 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   }
   phi_ = p.get<double>("Phi");
   theta_ = p.get<double>("Theta");
+  mixed_ = p.get<std::string>("Cell Type") == "MIXED";      // linear cells: type_ stays HEX8
   for (const CellType type : ReferenceCell::volume_types()) // the validator allows only these
     if (ReferenceCell::of(type).name() == p.get<std::string>("Cell Type"))
       type_ = type;
@@ -169,9 +257,7 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   const long double m = ReferenceCell::of(type_).degree();
   const long double n_nodes =
       (m * cells_[0] + 1.0L) * (m * cells_[1] + 1.0L) * (m * cells_[2] + 1.0L);
-  const long double n_cells = static_cast<long double>(cells_[0]) *
-                              static_cast<long double>(cells_[1]) * cells_[2] *
-                              cells_per_hexahedron(type_);
+  const long double n_cells = count_cells(type_, mixed_, cells_);
   KILN_CHECK_INPUT(n_nodes <= std::numeric_limits<int>::max(), where + "/\"Cells\"",
                    "{" << cells_[0] << ", " << cells_[1] << ", " << cells_[2] << "} gives "
                        << static_cast<double>(n_cells) << " cells and "
@@ -183,7 +269,7 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
 
 long long BoxMeshGenerator::n_cells() const
 {
-  return static_cast<long long>(cells_[0]) * cells_[1] * cells_[2] * cells_per_hexahedron(type_);
+  return static_cast<long long>(count_cells(type_, mixed_, cells_));
 }
 
 long long BoxMeshGenerator::n_nodes() const
@@ -193,8 +279,12 @@ long long BoxMeshGenerator::n_nodes() const
   const long long edges =
       nx * (ny + 1) * (nz + 1) + (nx + 1) * ny * (nz + 1) + (nx + 1) * (ny + 1) * nz;
   const long long faces = nx * ny * (nz + 1) + nx * (ny + 1) * nz + (nx + 1) * ny * nz;
+  if (mixed_) // the centres of the pyramid layer
+    return corners + ny * nz;
   switch (type_)
   {
+  case CellType::pyramid5: // and the centres
+    return corners + nx * ny * nz;
   case CellType::hex20:
     return corners + edges;
   case CellType::hex27:
@@ -238,20 +328,30 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
       for (int i = 0; i <= nx; ++i)
         lattice[i + (nx + 1) * (j + (ny + 1) * k)] = {2 * i, 2 * j, 2 * k};
 
-  // The cells, block 1 first, each hexahedron of the grid in x-fastest order.
-  const ReferenceCell &ref = ReferenceCell::of(type_);
-  std::vector<int> nodes(static_cast<std::size_t>(ref.n_nodes()));
-  for (int block = 1; block <= 2; ++block)
+  // The cells, block 1 (x < 0) first, each hexahedron of the grid in x-fastest order; MIXED's
+  // blocks 2 and 3 (both x > 0) in block order, each in the order of the hexahedra.
+  std::vector<GridCell> cells;
+  for (int half = 1; half <= 2; ++half)
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
-        for (int i = (block == 1 ? 0 : nx / 2); i < (block == 1 ? nx / 2 : nx); ++i)
-          for (const auto &corners : split_hexahedron(type_, {2 * i, 2 * j, 2 * k}))
-          {
-            const std::vector<Lattice> points = cell_lattice_nodes(type_, corners);
-            for (int n = 0; n < ref.n_nodes(); ++n)
-              nodes[n] = node_at(points[n]);
-            mesh.add_cell(type_, nodes.data(), block);
-          }
+        for (int i = (half == 1 ? 0 : nx / 2); i < (half == 1 ? nx / 2 : nx); ++i)
+        {
+          const Lattice o{2 * i, 2 * j, 2 * k};
+          const std::vector<GridCell> split =
+              mixed_ ? mixed_hexahedron(nx, o) : split_hexahedron(type_, o, half);
+          cells.insert(cells.end(), split.begin(), split.end());
+        }
+  std::stable_sort(cells.begin(), cells.end(),
+                   [](const GridCell &a, const GridCell &b) { return a.block < b.block; });
+  std::vector<int> nodes;
+  for (const GridCell &cell : cells)
+  {
+    const std::vector<Lattice> points = cell_lattice_nodes(cell.type, cell.corners);
+    nodes.resize(points.size());
+    for (std::size_t n = 0; n < points.size(); ++n)
+      nodes[n] = node_at(points[n]);
+    mesh.add_cell(cell.type, nodes.data(), cell.block);
+  }
 
   mesh.coordinates.resize(lattice.size());
   for (std::size_t n = 0; n < lattice.size(); ++n)
@@ -303,6 +403,7 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
     for (int c = 0; c < mesh.n_cells(); ++c)
     {
       const Span<const int> cell = mesh.cell_nodes(c);
+      const ReferenceCell &ref = mesh.reference_cell(c);
       int lowest = std::numeric_limits<int>::max();
       for (int n = 0; n < ref.n_vertices(); ++n)
         lowest = std::min(lowest, lattice[cell[n]][plane.axis]);

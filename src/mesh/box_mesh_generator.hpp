@@ -14,6 +14,11 @@
 /// cells of one hexahedron are numbered consecutively. The grid's corner nodes keep their
 /// x-fastest numbers; mid-edge, face and centre nodes follow, numbered as first met, each
 /// shared by the cells around it. Side sets list every face on their planes.
+/// PYRAMID5: each hexahedron split on a centre node into 6 pyramids, one on each face.
+/// MIXED: HEX8 for x < 0 (block 1); for x > 0, the first layer of hexahedra split on their
+/// centres into a PYRAMID5 on the face x = 0 (block 2) and two TETRA4 on each other face, cut
+/// as Kuhn's split cuts it (block 3), and Kuhn's TETRA4 beyond (block 3): a conforming mesh of
+/// three types (doc/mesh.md).
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -41,6 +46,7 @@ private:
   double theta_;
   std::array<double, 3> translation_;
   CellType type_ = CellType::hex8;
+  bool mixed_ = false; ///< "Cell Type" MIXED (type_ is then HEX8)
   std::string where_;
 };
 } // namespace kiln

@@ -26,8 +26,8 @@ using kiln::Point;
 struct Case
 {
   std::string type;
-  int cells_per_hex;
-  int nodes; // for a 2 x 2 x 2 grid
+  int cells_per_hex; // 0: MIXED (11 in its pyramid layer, 1 or 6 elsewhere)
+  int nodes;         // for a 2 x 2 x 2 grid
 };
 
 Mesh generate(const std::string &type, const std::array<int, 3> &cells,
@@ -81,8 +81,11 @@ void expect_box(const Case &t, const std::array<int, 3> &cells, const std::array
   SCOPED_TRACE(t.type);
   const Mesh mesh = generate(t.type, cells, L, phi, theta, true);
   const int n_hex = cells[0] * cells[1] * cells[2];
-  ASSERT_EQ(mesh.n_cells(), n_hex * t.cells_per_hex);
-  EXPECT_EQ(kiln::ReferenceCell::of(mesh.cell_type(0)).name(), t.type);
+  if (t.cells_per_hex > 0)
+  {
+    ASSERT_EQ(mesh.n_cells(), n_hex * t.cells_per_hex);
+    EXPECT_EQ(kiln::ReferenceCell::of(mesh.cell_type(0)).name(), t.type);
+  }
   // The predicted counts are what generate() makes.
   Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
   p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(cells[0], cells[1], cells[2])));
@@ -176,8 +179,10 @@ void expect_box(const Case &t, const std::array<int, 3> &cells, const std::array
     EXPECT_EQ(mesh.block_id[gap.cells[s]], 2 * s < gap.n_sides() ? 1 : 2) << "gap entry " << s;
 }
 
-const Case cases[] = {{"HEX8", 1, 27},  {"TETRA4", 6, 27}, {"WEDGE6", 2, 27},
-                      {"HEX20", 1, 81}, {"HEX27", 1, 125}, {"TETRA10", 6, 125}};
+// PYRAMID5: the corners and one centre per hexahedron; MIXED (2 x 2 x 2: one layer of hexahedra,
+// one of pyramids and tets): the corners and the layer's 4 centres.
+const Case cases[] = {{"HEX8", 1, 27},  {"TETRA4", 6, 27}, {"WEDGE6", 2, 27},   {"PYRAMID5", 6, 35},
+                      {"HEX20", 1, 81}, {"HEX27", 1, 125}, {"TETRA10", 6, 125}, {"MIXED", 0, 31}};
 
 TEST(BoxMeshCellTypes, RotatedBoxOfEachType)
 {
@@ -197,6 +202,31 @@ TEST(BoxMeshCellTypes, NodeCountsOfA2x2x2Grid)
     EXPECT_EQ(generate(t.type, {2, 2, 2}, {1, 1, 1}, 0, 0).n_nodes(), t.nodes) << t.type;
 }
 
+TEST(BoxMeshCellTypes, MixedHasHexahedraPyramidsAndTetrahedraByBlock)
+{
+  // 6 x 1 x 2: 3 hexahedra per row for x < 0, then a layer of 1 pyramid and 10 tets each, then
+  // 2 hexahedra of 6 Kuhn tets each.
+  const Mesh mesh = generate("MIXED", {6, 1, 2}, {3.0, 0.5, 1.0}, 0, 0);
+  std::map<int, std::map<std::string, int>> by_block;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    ++by_block[mesh.block_id[c]][kiln::ReferenceCell::of(mesh.cell_type(c)).name()];
+  const std::map<int, std::map<std::string, int>> expected = {
+      {1, {{"HEX8", 6}}}, {2, {{"PYRAMID5", 2}}}, {3, {{"TETRA4", 2 * 10 + 4 * 6}}}};
+  EXPECT_EQ(by_block, expected);
+  // Blocks in order, as the Exodus writer wants them.
+  for (int c = 1; c < mesh.n_cells(); ++c)
+    EXPECT_LE(mesh.block_id[c - 1], mesh.block_id[c]);
+  // The pyramids stand on the plane x = 0 (the gap's second half), apex towards +x.
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.cell_type(c) == kiln::CellType::pyramid5)
+    {
+      const kiln::Span<const int> nodes = mesh.cell_nodes(c);
+      for (int n = 0; n < 4; ++n)
+        EXPECT_NEAR(mesh.coordinates[nodes[n]][0], 0.1, 1e-15);
+      EXPECT_NEAR(mesh.coordinates[nodes[4]][0], 0.35, 1e-15);
+    }
+}
+
 TEST(BoxMeshCellTypes, Hex8IsTheDefault)
 {
   const Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
@@ -209,7 +239,7 @@ TEST(BoxMeshCellTypes, OtherTypesAreRejectedByTheValidator)
 {
   Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
   EXPECT_ANY_THROW({
-    p.set("Cell Type", "PYRAMID5");
+    p.set("Cell Type", "PYRAMID13");
     p.validateParameters(kiln::BoxMeshGenerator::valid_parameters());
   });
 }

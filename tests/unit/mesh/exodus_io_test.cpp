@@ -5,8 +5,11 @@
 #include "mesh/exodus_io.hpp"
 
 #include "base/errors.hpp"
+#include "mesh/box_mesh_generator.hpp"
 #include "support/parameter_lists.hpp"
 
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
 #include <exodusII.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -154,12 +157,10 @@ TEST(ExodusIo, ReadsAlignedCubeWithSideSetsOnTheCubeFaces)
   }
 }
 
-TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
+/// Writes `mesh`, reads it back and expects the same nodes, cells, blocks and side sets.
+void expect_round_trip(const Mesh &mesh, const std::string &tag)
 {
-  Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm);
-  mesh.side_sets.front().name = "left";
-  mesh.side_sets.back().name = "gap, a name longer than thirty-two characters";
-  const TempFile file("round-trip");
+  const TempFile file(tag);
   kiln::write_exodus_mesh(mesh, file.path());
   const Mesh back = kiln::read_exodus_mesh(file.path(), 1.0);
 
@@ -183,6 +184,27 @@ TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
     EXPECT_EQ(back.side_sets[s].name, name);
     EXPECT_EQ(back.side_sets[s].cells, mesh.side_sets[s].cells);
     EXPECT_EQ(back.side_sets[s].faces, mesh.side_sets[s].faces);
+  }
+}
+
+TEST(ExodusIo, WriteThenReadGivesTheSameMesh)
+{
+  Mesh mesh = kiln::read_exodus_mesh(mesh_dir + "rotated-cube.exo", cm);
+  mesh.side_sets.front().name = "left";
+  mesh.side_sets.back().name = "gap, a name longer than thirty-two characters";
+  expect_round_trip(mesh, "round-trip");
+}
+
+// The generated pyramids and the mixed mesh (HEX8, PYRAMID5, TETRA4 in blocks 1, 2, 3).
+TEST(ExodusIo, GeneratedPyramidAndMixedMeshesRoundTrip)
+{
+  for (const std::string type : {"PYRAMID5", "MIXED"})
+  {
+    SCOPED_TRACE(type);
+    Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
+    p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(4, 2, 3)));
+    p.set("Cell Type", type);
+    expect_round_trip(kiln::BoxMeshGenerator(p, "test/Box").generate(), "round-trip-" + type);
   }
 }
 
