@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes a 2 x 1 x 1 HEX8 Exodus II mesh of two 1 m cells (side sets 1 and 2 on x = 0 and
-x = 2) with tests/support/exodus_mesh.py (scipy.io.netcdf), which stores "coordx" as netCDF variable 0 (the case the Exodus
-library misreads as all zeros).
+x = 2) with tests/support/exodus_mesh.py (scipy.io.netcdf), storing "coordx" as netCDF
+variable 0 (the case the Exodus library misreads as all zeros).
 
 usage: scipy_exodus.py OUT.exo [--duplicate-face | --flat | --unmerged]
 --duplicate-face: side set 1 lists its face twice.

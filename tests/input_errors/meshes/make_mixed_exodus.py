@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the mixed-type Exodus II meshes of the input-error tests (tests/support/exodus_mesh.py; run once,
-the files are committed beside this script):
+"""Writes the mixed-type Exodus II meshes of the input-error tests (with
+tests/support/exodus_mesh.py; run once, the files are committed beside this script):
 
   shell-block.exo    a HEX8 block (the unit cube, block 1) and a SHELL4 block (block 2: one
                      shell on the cube's x = 1 face): Kiln supports volume elements only.
