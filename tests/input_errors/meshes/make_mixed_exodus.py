@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the mixed-type Exodus II meshes of the input-error tests (scipy.io.netcdf; run once,
-the files are committed beside this script):
+"""Writes the mixed-type Exodus II meshes of the input-error tests (with
+tests/support/exodus_mesh.py; run once, the files are committed beside this script):
 
   shell-block.exo    a HEX8 block (the unit cube, block 1) and a SHELL4 block (block 2: one
                      shell on the cube's x = 1 face): Kiln supports volume elements only.
@@ -21,7 +21,9 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from scipy.io import netcdf_file
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import exodus_mesh  # noqa: E402  (tests/support/exodus_mesh.py)
 
 
 def cube(x0):
@@ -32,44 +34,7 @@ def cube(x0):
 
 def write(path, nodes, blocks, side_sets):
     """blocks: (id, Exodus type, connectivity 1-based); side_sets: (id, elems, sides)."""
-    f = netcdf_file(path, "w", version=2)
-    f.api_version = np.float32(5.22)
-    f.version = np.float32(5.22)
-    f.floating_point_word_size = np.int32(8)
-    f.file_size = np.int32(1)
-    f.title = b"kiln input-error mesh"
-    f.createDimension("time_step", None)
-    f.createDimension("len_string", 33)
-    f.createDimension("len_line", 81)
-    f.createDimension("four", 4)
-    f.createDimension("num_dim", 3)
-    f.createDimension("num_nodes", len(nodes))
-    f.createDimension("num_elem", sum(len(b[2]) for b in blocks))
-    f.createDimension("num_el_blk", len(blocks))
-    f.createDimension("num_side_sets", len(side_sets))
-    # Not coordx first: the Exodus library misreads netCDF variable 0 (tests/cli/scipy_exodus.py).
-    f.createVariable("time_whole", "d", ("time_step",))
-    for d, name in enumerate(("coordx", "coordy", "coordz")):
-        f.createVariable(name, "d", ("num_nodes",))[:] = [p[d] for p in nodes]
-    f.createVariable("eb_status", "i", ("num_el_blk",))[:] = [1] * len(blocks)
-    v = f.createVariable("eb_prop1", "i", ("num_el_blk",))
-    v[:] = [b[0] for b in blocks]
-    v.name = b"ID"
-    for k, (_, kind, connect) in enumerate(blocks, start=1):
-        f.createDimension(f"num_el_in_blk{k}", len(connect))
-        f.createDimension(f"num_nod_per_el{k}", len(connect[0]))
-        v = f.createVariable(f"connect{k}", "i", (f"num_el_in_blk{k}", f"num_nod_per_el{k}"))
-        v[:] = connect
-        v.elem_type = kind.encode()
-    f.createVariable("ss_status", "i", ("num_side_sets",))[:] = [1] * len(side_sets)
-    v = f.createVariable("ss_prop1", "i", ("num_side_sets",))
-    v[:] = [s[0] for s in side_sets]
-    v.name = b"ID"
-    for k, (_, elems, sides) in enumerate(side_sets, start=1):
-        f.createDimension(f"num_side_ss{k}", len(elems))
-        f.createVariable(f"elem_ss{k}", "i", (f"num_side_ss{k}",))[:] = elems
-        f.createVariable(f"side_ss{k}", "i", (f"num_side_ss{k}",))[:] = sides
-    f.close()
+    exodus_mesh.write(path, nodes, blocks, side_sets, title="kiln input-error mesh")
 
 
 def main():
