@@ -249,11 +249,30 @@ void split_gaps(Mesh &mesh, const std::vector<int> &side_set_ids, const std::str
     }
     mesh.gap_faces.push_back(gap_face);
   }
+  double largest_area = 0.0;
+  for (const GapPair &pair : mesh.gap_pairs)
+    largest_area = std::max(largest_area, pair.area);
   for (std::size_t k = 0; k < mesh.gap_pairs.size(); ++k)
   {
     const Point &a = area_vector[k];
     const double length = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    KILN_ASSERT(length > 0.0, "gap pair " << k << " has no area");
+    // A pair's area is the integral of its node's shape function over the cut faces: the
+    // corners of QUAD8 (HEX20) and TRI6 (TETRA10) faces integrate to a negative or zero area
+    // (doc/contact.md, "Quadratic faces"), which would turn contact and the gap conductance
+    // around at those pairs without a word. (A TRI6 corner's 0 comes out as round-off.)
+    const GapPair &pair = mesh.gap_pairs[k];
+    const Point &x = mesh.coordinates[pair.node_a];
+    KILN_CHECK_INPUT(pair.area > 1e-12 * largest_area && length > 1e-12 * largest_area, where,
+                     "gap side set " << side_set_ids[pair.gap] << ": the node pair at node "
+                                     << mesh.parent_node[pair.node_a] + 1 << " (" << x[0] << ", "
+                                     << x[1] << ", " << x[2] << ") has an area of " << pair.area
+                                     << " m^2 (the integral of its shape function over the "
+                                        "gap's faces), but must have a positive one: the "
+                                        "corners of QUAD8 (HEX20) and TRI6 (TETRA10) faces "
+                                        "integrate to a negative or zero area, so contact "
+                                        "and gap conductance cannot use them. Use HEX27, "
+                                        "HEX8, TETRA4, WEDGE6 or PYRAMID5 cells on the two "
+                                        "sides of the gap");
     for (int d = 0; d < 3; ++d)
       mesh.gap_pairs[k].normal[d] = a[d] / length;
   }
