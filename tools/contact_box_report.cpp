@@ -9,6 +9,9 @@
 //   the deck, validated as kiln does (defaults included). For an Exodus mesh the angles are
 //   --phi/--theta (default 45/-30 for rotated-cube.exo, 0/0 for any other file) and the half
 //   width comes from the mesh coordinates; --phi/--theta also override a Box deck's angles.
+//   Elastic constants and an expansion coefficient that depend on T (Table, Expression) are
+//   evaluated at the mean temperature of the last step: the uniform state at T is the
+//   constant-property state with the material's values at T (alpha the secant coefficient).
 #include "app/simulation.hpp"
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
@@ -91,12 +94,16 @@ struct ExactState
   double contact_pressure = 0.0, gap_opening = 0.0; ///< [Pa] > 0 in compression, [m]
 };
 
-/// The uniform state at dT = T - T_ref, closed or open gap, in the mesh frame.
-ExactState exact_state(const bool closed, const kiln::Material &m, const double dT,
+/// The uniform state at temperature T (dT = T - T_ref), closed or open gap, in the mesh frame.
+/// The material is evaluated at T (E(T), nu(T), alpha(T): a uniform state at T is the
+/// constant-property state of the material's values at T; alpha is the secant coefficient from
+/// T_ref, doc/materials.md).
+ExactState exact_state(const bool closed, const kiln::Material &m, const double T,
                        const double half_width, const Matrix &A)
 {
-  const double E = m.youngs_modulus(), nu = m.poissons_ratio(), alpha = m.thermal_expansion();
-  const double lambda = m.lame_lambda(), G = m.shear_modulus();
+  const double dT = T - m.reference_temperature();
+  const double E = m.youngs_modulus(T), nu = m.poissons_ratio(T), alpha = m.thermal_expansion(T);
+  const double lambda = m.lame_lambda(T), G = m.shear_modulus(T);
   ExactState s;
   if (closed)
   {
@@ -431,12 +438,16 @@ int report(const Options &o)
     throw ReportError(o.results + ": " + step +
                       "/gap_opening is NaN at every node: the mesh has no gap");
 
+  // A material whose elastic constants or expansion depend on T is evaluated at the mean
+  // temperature of the last step (the uniform state's).
+  const bool constant = material.elastically_constant();
   std::cout << "kiln_contact_box_report: " << o.results << " vs the uniform states of "
             << "the contact-box spec\n"
-            << "  deck " << o.deck << ": E = " << sci(material.youngs_modulus(), 4)
-            << " Pa, nu = " << material.poissons_ratio()
-            << ", alpha = " << sci(material.thermal_expansion(), 4)
-            << " 1/K, T_ref = " << material.reference_temperature() << " K\n"
+            << "  deck " << o.deck << ": E = " << sci(material.youngs_modulus(T_mean), 4)
+            << " Pa, nu = " << material.poissons_ratio(T_mean)
+            << ", alpha = " << sci(material.thermal_expansion(T_mean), 4) << " 1/K"
+            << (constant ? "" : " (at the mean T, " + sci(T_mean, 6) + " K: they depend on T)")
+            << ", T_ref = " << material.reference_temperature() << " K\n"
             << "  mesh " << geometry.mesh << ": phi = " << geometry.phi
             << ", theta = " << geometry.theta << " degrees (" << geometry.angles_from
             << "), half width " << geometry.half_width << " m, " << n_cells << " cells, " << n_nodes
@@ -463,7 +474,7 @@ int report(const Options &o)
               << (closed ? "closed" : "open") << " state has dT " << (closed ? "> 0" : "< 0")
               << "\n";
 
-  const ExactState exact = exact_state(closed, material, dT, geometry.half_width, A);
+  const ExactState exact = exact_state(closed, material, T_mean, geometry.half_width, A);
   double stress_scale = 0.0, strain_scale = 0.0;
   for (int k = 0; k < 6; ++k)
   {
@@ -497,7 +508,8 @@ int report(const Options &o)
             << "   max |Kiln - exact| / largest exact component of the tensor (the stress's for "
             << "the\n"
             << "   contact pressure, > 0 in compression), absolute for the gap opening; exact\n"
-            << "   state at dT = mean T - T_ref = " << dT_text << ")\n";
+            << "   state at dT = mean T - T_ref = " << dT_text
+            << (constant ? "" : ", the material's E, nu and alpha at the mean T") << ")\n";
   return 0;
 }
 } // namespace

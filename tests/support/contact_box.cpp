@@ -104,8 +104,9 @@ std::vector<kiln::Point> exact_displacements(const kiln::Mesh &mesh, const Unifo
   for (int c = 0; c < mesh.n_cells(); ++c)
   {
     double x_centroid = 0.0;
-    for (const int n : mesh.cell_nodes(c))
-      x_centroid += box_frame(n)[0] / kiln::n_hex_nodes;
+    const auto nodes = mesh.cell_nodes(c);
+    for (const int n : nodes)
+      x_centroid += box_frame(n)[0] / static_cast<double>(nodes.size());
     for (const int n : mesh.cell_nodes(c))
       side[n] = x_centroid < 0 ? -1.0 : 1.0;
   }

@@ -55,6 +55,18 @@ inline constexpr double spec_alpha = 2.2e-5, spec_T_ref = 298; // [1/K], [K]
 inline constexpr double spec_E = spec_G * (3 * spec_lambda + 2 * spec_G) / (spec_lambda + spec_G);
 inline constexpr double spec_nu = spec_lambda / (2 * (spec_lambda + spec_G));
 
+/// The closed-gap state of the spec's material at temperature T, phi 45, theta -30.
+inline UniformState spec_closed_gap_state(const double T)
+{
+  return closed_gap_state(spec_E, spec_nu, spec_alpha, T - spec_T_ref, 45.0, -30.0);
+}
+
+/// The open-gap state of the spec's material at temperature T (half width 2 cm).
+inline UniformState spec_open_gap_state(const double T)
+{
+  return open_gap_state(spec_E, spec_nu, spec_alpha, T - spec_T_ref, 0.02, 45.0, -30.0);
+}
+
 /// A reference state and the relative tolerance to hold the results to; where the reference
 /// value is 0, absolute tolerances of 1e-3 Pa (stress) and 1e-13 (strains) apply.
 struct Reference

@@ -48,16 +48,42 @@ def box_mesh():
     return np.array(coordinates, dtype=float), np.array(connectivity, dtype=np.int64)
 
 
+# A hexahedron (Exodus order) as two wedges (WEDGE6: the triangle 0 1 3 over 4 5 7, and
+# 1 2 3 over 5 6 7).
+WEDGES_OF_HEX = [[0, 1, 3, 4, 5, 7], [1, 2, 3, 5, 6, 7]]
+
+
+def mixed_connectivity(connectivity, split):
+    """The cells of `connectivity` with those in `split` cut into two wedges each, as
+    Kiln writes mixed meshes: n columns for the largest cell, smaller rows ending in -1s
+    (doc/output-format.md); 6 columns when every cell is split."""
+    rows = []
+    for c, cell in enumerate(connectivity):
+        if c in split:
+            rows.extend([cell[w] for w in WEDGES_OF_HEX])
+        else:
+            rows.append(cell)
+    width = max(len(r) for r in rows)
+    return np.array([list(r) + [-1] * (width - len(r)) for r in rows], dtype=np.int64)
+
+
+def cell_centroids(coordinates, connectivity):
+    used = connectivity >= 0
+    x = coordinates[np.where(used, connectivity, 0)] * used[:, :, None]
+    return x.sum(axis=1) / used.sum(axis=1)[:, None]
+
+
 def fields_at(time, coordinates, connectivity):
     n = len(coordinates)
     x = coordinates
     side = np.zeros(n)  # +1 on the nodes of the cells right of the gap
-    side[np.unique(connectivity[1::2])] = 1.0
+    right = connectivity[cell_centroids(coordinates, connectivity)[:, 0] > 0.5]
+    side[np.unique(right[right >= 0])] = 1.0  # the nodes of the cells right of the gap
     on_gap = np.isclose(x[:, 0], 0.5)
     temperature = 300.0 + time * (x[:, 0] + 2 * x[:, 1] + 3 * x[:, 2]) + 0.25 * side
     displacement = 1e-6 * np.column_stack([x[:, 0] + side, x[:, 1] - side, time * x[:, 2]])
     gap_opening = np.where(on_gap, 1e-7 * time * (1 + x[:, 1]) * (1 + side), np.nan)
-    centroids = x[connectivity].mean(axis=1)
+    centroids = cell_centroids(x, connectivity)
     stress = np.column_stack([1e7 * (1 + time + centroids[:, 0]), 2e7 + centroids[:, 1],
                               -3e7 * np.ones(len(centroids)),
                               1e-4 * centroids[:, 2], np.zeros(len(centroids)),
@@ -77,10 +103,20 @@ class KilnFile:
         self.steps = [fields_at(t, self.coordinates, self.connectivity) for t in self.times]
         self.step_names = [f"{i:06d}" for i in range(len(self.times))]
 
+    def make_mixed(self, split):
+        """The cells in `split` cut into two wedges each (block 3), the fields remade."""
+        self.connectivity = mixed_connectivity(self.connectivity, split)
+        n_cells = len(self.connectivity)
+        self.block_id = np.where(np.any(self.connectivity == -1, axis=1)
+                                 | (self.connectivity.shape[1] == 6), 3, 1).astype(np.int32)
+        self.cell_rank = np.zeros(n_cells, dtype=np.int32)
+        self.steps = [fields_at(t, self.coordinates, self.connectivity) for t in self.times]
+
     def renumber(self, node_order, cell_order):
         """New node i is old node node_order[i]; the same for cells."""
-        new_index = np.empty(len(node_order), dtype=np.int64)
+        new_index = np.empty(len(node_order) + 1, dtype=np.int64)
         new_index[node_order] = np.arange(len(node_order))
+        new_index[-1] = -1  # the padding of smaller cells stays
         self.coordinates = self.coordinates[node_order]
         self.connectivity = new_index[self.connectivity[cell_order]]
         self.block_id = self.block_id[cell_order]
@@ -314,6 +350,64 @@ class Matching(Case):
     def test_cells_with_rotated_node_order(self):
         self.b.connectivity = np.roll(self.b.connectivity, 3, axis=1)
         self.assert_status(0, self.diff())
+
+
+class MixedCells(Case):
+    """Meshes of wedges, and of wedges and hexahedra in one connectivity padded with -1."""
+
+    def setUp(self):
+        super().setUp()
+        for f in (self.a, self.b):
+            f.make_mixed({0, 2, 5})
+
+    def test_identical_mixed_files_agree(self):
+        self.assertEqual(self.a.connectivity.shape, (11, 8))
+        self.assert_status(0, self.diff())
+
+    def test_renumbered_mixed_files_agree(self):
+        rng = np.random.default_rng(5)
+        self.b.renumber(rng.permutation(36), rng.permutation(11))
+        self.assert_status(0, self.diff())
+
+    def test_difference_in_a_wedge_is_reported(self):
+        rng = np.random.default_rng(13)
+        cell_order = rng.permutation(11)
+        self.b.renumber(np.arange(36)[::-1], cell_order)
+        wedge = int(np.nonzero(self.a.connectivity[:, -1] == -1)[0][1])
+        self.b.steps[1]["stress"][int(np.nonzero(cell_order == wedge)[0][0]), 0] *= 1.001
+        self.assert_status(1, self.diff(), f"stress[xx] at t = 2.5 s, cell {wedge} ")
+
+    def test_twins_of_wedges_are_told_apart(self):
+        order = np.arange(36)
+        for node, twin in twin_pairs():
+            order[node], order[twin] = twin, node
+        self.b.renumber(order, np.arange(11)[::-1])
+        self.assert_status(0, self.diff())
+
+    def test_wedges_only(self):
+        for f in (self.a, self.b):
+            f.__init__()
+            f.make_mixed(set(range(8)))
+        self.assertEqual(self.a.connectivity.shape, (16, 6))
+        self.b.renumber(np.arange(36)[::-1], np.arange(16)[::-1])
+        self.assert_status(0, self.diff())
+
+    def test_padding_inside_a_row(self):
+        self.b.connectivity[0, 2] = -1
+        self.assert_status(2, self.diff(), "/mesh/connectivity row 0",
+                           "is not its cell's nodes followed by -1s")
+
+    def test_other_cell_type_at_the_same_place(self):
+        self.b.__init__()  # hexahedra where A has wedges: other cells
+        self.assert_status(2, self.diff(), "the meshes do not match")
+
+    def test_extract_keeps_the_padding(self):
+        run = self.a.write(self.path("run.h5"))
+        gold = self.path("gold.h5")
+        self.assert_status(0, self.diff("--extract", "--fields", "stress", a=run, b=gold))
+        with h5py.File(gold, "r") as f:
+            self.assertTrue(np.array_equal(f["/mesh/connectivity"][...], self.a.connectivity))
+        self.assert_status(0, self.diff("--fields", "stress", a=run, b=gold))
 
 
 class CannotCompare(Case):
