@@ -42,6 +42,7 @@ CASES = {
     "tet10": (CUBE, {"Cell Type": "TETRA10", "Cells": "{4, 2, 2}"}, {"TETRA10"}, None, 1.0,
               None),
     "wedge": (BOX, {"Cell Type": "WEDGE6"}, {"WEDGE6"}, None, 0.04**3, 0.04**2),
+    "pyramid": (BOX, {"Cell Type": "PYRAMID5"}, {"PYRAMID5"}, "QUAD4", 0.04**3, 0.04**2),
     "mixed": ("inputs/truchas/stretch-mixed.xml", {}, {"HEX8", "TETRA4", "WEDGE6", "PYRAMID5"},
               None, 4.0, None),
 }

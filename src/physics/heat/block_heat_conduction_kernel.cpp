@@ -9,18 +9,14 @@ namespace kiln
 BlockHeatConductionKernel::BlockHeatConductionKernel(const Mesh &mesh,
                                                      std::vector<HeatConductionKernel> kernels,
                                                      std::map<int, int> kernel_of_block)
-    : mesh_(mesh), kernels_(std::move(kernels)), kernel_of_block_(std::move(kernel_of_block))
+    : kernels_(std::move(kernels)),
+      kernel_of_block_(mesh, std::move(kernel_of_block), static_cast<int>(kernels_.size()))
 {
-  KILN_ASSERT(!kernels_.empty(), "a block heat conduction kernel without kernels");
 }
 
 const HeatConductionKernel &BlockHeatConductionKernel::of_cell(const int cell) const
 {
-  if (kernels_.size() == 1)
-    return kernels_.front();
-  const auto it = kernel_of_block_.find(mesh_.block_id[cell]);
-  KILN_ASSERT(it != kernel_of_block_.end(), "block " << mesh_.block_id[cell] << " has no kernel");
-  return kernels_[it->second];
+  return kernels_[kernel_of_block_.of_cell(cell)];
 }
 
 bool BlockHeatConductionKernel::constant_jacobian() const

@@ -3,6 +3,7 @@
 #include "mesh/mesh.hpp"
 #include "physics/heat/heat_conduction_kernel.hpp"
 #include "physics/kernel.hpp"
+#include "physics/kernel_of_block.hpp"
 
 #include <map>
 #include <vector>
@@ -31,8 +32,7 @@ public:
   const std::vector<HeatConductionKernel> &kernels() const { return kernels_; }
 
 private:
-  const Mesh &mesh_;
   std::vector<HeatConductionKernel> kernels_;
-  std::map<int, int> kernel_of_block_;
+  KernelOfBlock kernel_of_block_;
 };
 } // namespace kiln

@@ -12,14 +12,14 @@ namespace kiln
 /// constant rho c gives H = rho c T (the thermal energy of the time history).
 ///
 /// The integral is kept at anchor temperatures T_k and completed from the anchor below T by
-/// 5-point Gauss-Legendre quadrature:
+/// Gauss-Legendre quadrature:
 /// - both constant: no anchors, H = rho c T exactly (is_linear());
 /// - tables: the anchors are the union of both tables' temperatures; between two of them
-///   rho c is a product of linear functions, a quadratic, which the rule integrates exactly
-///   (to rounding), and beyond the ends rho c is constant;
+///   rho c is a product of linear functions, a quadratic, which the 2-point rule integrates
+///   exactly (to rounding), and beyond the ends rho c is constant;
 /// - a formula: anchors every at most `panel` K over its sample temperatures ("Temperatures",
-///   which the user sets to the run's range) and panels of at most `panel` K beyond them; a
-///   smooth rho c is integrated to about 1e-12 relative.
+///   which the user sets to the run's range) and panels of at most `panel` K beyond them, the
+///   5-point rule on each; a smooth rho c is integrated to about 1e-12 relative.
 class Enthalpy
 {
 public:
@@ -38,9 +38,9 @@ public:
   bool is_linear() const { return density_.is_constant() && specific_heat_.is_constant(); }
 
 private:
-  /// ∫_{from}^{to} rho c dT, 5-point Gauss-Legendre on one panel (tables: between two
-  /// anchors, or beyond the ends, rho c is a quadratic or a constant) or, with a formula, on
-  /// panels of at most `panel` K.
+  /// ∫_{from}^{to} rho c dT: 2-point Gauss-Legendre on one panel (tables: between two
+  /// anchors, or beyond the ends, rho c is a quadratic or a constant) or, with a formula,
+  /// 5-point on panels of at most `panel` K.
   double integral(double from, double to) const;
 
   TemperatureFunction density_;

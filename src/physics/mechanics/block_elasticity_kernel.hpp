@@ -3,6 +3,7 @@
 #include "discretization/quadrature_state.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/kernel.hpp"
+#include "physics/kernel_of_block.hpp"
 #include "physics/mechanics/elasticity_kernel.hpp"
 
 #include <map>
@@ -41,9 +42,8 @@ public:
   ElasticityKernel::PointHistory output_history(int cell_local) const;
 
 private:
-  const Mesh &mesh_;
   std::vector<ElasticityKernel> kernels_;
-  std::map<int, int> kernel_of_block_;
+  KernelOfBlock kernel_of_block_;
   QuadratureState *state_ = nullptr;
   double time_step_ = 0.0;
 };
