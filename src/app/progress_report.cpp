@@ -186,7 +186,8 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   out << "steps: " << stats.steps << "\n";
   if (run_.start_steps > 0)
     out << "steps in this run: " << stats.steps - run_.start_steps << "\n";
-  out << "steps repeated for the error estimate: " << stats.error_rejections << "\n";
+  out << "steps repeated for the error estimate or the plastic strain increment: "
+      << stats.error_rejections << "\n";
   out << "steps repeated after Newton failed: " << stats.newton_failures << "\n";
   out << "Newton iterations: " << stats.newton_iterations << "\n";
   out << "linear iterations: " << stats.linear_iterations << "\n";

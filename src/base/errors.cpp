@@ -88,6 +88,22 @@ void check_run_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
     throw RunError(first);
 }
 
+void check_run_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
+                            const std::string &message, const bool step_failure)
+{
+  // 1 where every failure is a step failure (or none): one reduction more than a RunError.
+  const int step_here = local_ok || step_failure ? 1 : 0;
+  int all_steps = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, step_here, Teuchos::outArg(all_steps));
+  // With a failure that is not a step failure, the message of the lowest such rank.
+  std::string first;
+  if (!first_failure(comm, all_steps == 1 ? local_ok : local_ok || step_failure, message, first))
+    return;
+  if (all_steps == 1)
+    throw StepFailure(first);
+  throw RunError(first);
+}
+
 void check_write_collectively(const Teuchos::Comm<int> &comm, const bool local_ok,
                               const std::string &where, const std::string &message)
 {

@@ -35,6 +35,19 @@ public:
   explicit RunError(const std::string &message) : std::runtime_error(message) {}
 };
 
+/// A failure of one attempted time step that a smaller step may avoid (issue 31): a
+/// constitutive model's local Newton solve that did not converge, a value at a quadrature
+/// point that is not a finite number. A kernel throws it on the ranks where it happens; the
+/// collective evaluation turns it into the same StepFailure on every rank (a RunError on
+/// every rank if another rank failed otherwise), the Newton solve ends unconverged and the
+/// time stepper repeats the step smaller, as for a Newton solve that does not converge.
+/// Where no step can be cut (a steady solve) it ends the run as a RunError.
+class StepFailure : public RunError
+{
+public:
+  explicit StepFailure(const std::string &message) : RunError(message) {}
+};
+
 /// A file of the run that cannot be written (a full disk, a file-size limit, an I/O error):
 /// a RunError (exit 2) after which the run writes nothing more; the files complete before it
 /// (the previous checkpoint) stay as they were. Raised alike on every rank.
@@ -74,6 +87,10 @@ void check_collectively(const Teuchos::Comm<int> &comm, bool local_ok, const std
 /// from the lowest rank where the check failed. Collective.
 void check_run_collectively(const Teuchos::Comm<int> &comm, bool local_ok,
                             const std::string &message);
+/// As check_run_collectively(), but what is thrown is a StepFailure if every rank that failed
+/// had a step failure (`step_failure` true there), else a RunError. Collective.
+void check_run_collectively(const Teuchos::Comm<int> &comm, bool local_ok,
+                            const std::string &message, bool step_failure);
 
 /// Throws the same WriteError, "where: message" with the message of the lowest rank that
 /// failed, on every rank if `local_ok` is false on any rank. Collective.

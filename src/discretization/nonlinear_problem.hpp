@@ -119,5 +119,9 @@ public:
   /// computed for it is forgotten, and the next attempt starts from the last accepted state
   /// (collective). Default: nothing.
   virtual void step_rejected() {}
+  /// Optional: after a converged solve of a step, the largest increment over the step of the
+  /// equivalent inelastic (plastic) strain at any point, on every rank alike (collective);
+  /// the time stepper cuts a step where it exceeds its tolerance. Default: 0 (none).
+  virtual double inelastic_strain_increment() const { return 0.0; }
 };
 } // namespace kiln

@@ -390,6 +390,27 @@ void CoupledProblem::step_rejected()
     quadrature_state_->restore();
 }
 
+double CoupledProblem::inelastic_strain_increment() const
+{
+  // Null, or without the component, on every rank alike (one state layout per run).
+  if (!quadrature_state_)
+    return 0.0;
+  const QuadratureState &qs = *quadrature_state_;
+  const auto &names = qs.names();
+  const auto it = std::find(names.begin(), names.end(), "equivalent_plastic_strain");
+  if (it == names.end())
+    return 0.0;
+  const auto k = static_cast<std::size_t>(it - names.begin());
+  double local = 0.0;
+  for (int c = 0; c < qs.n_cells(); ++c)
+    for (int q = 0; q < qs.n_points(c); ++q)
+      local = std::max(local, qs.current(c, q)[k] - qs.old(c, q)[k]);
+  double global = 0.0;
+  Teuchos::reduceAll(*solution_map()->getComm(), Teuchos::REDUCE_MAX, local,
+                     Teuchos::outArg(global));
+  return global;
+}
+
 void CoupledProblem::check_open_gap(const double time)
 {
   std::vector<FreeMotions::HeldDirection> held;
@@ -413,6 +434,9 @@ void CoupledProblem::check_open_gap(const double time)
 
 int CoupledProblem::resume(const double time, const Vector &x)
 {
+  // The checkpoint's time is that of its last accepted step: the models' next time step
+  // starts there (without it the first step after a restart would have dt = 0, no flow).
+  accepted_time_ = time;
   constraints_.set_time(time);
   if (interfaces_.empty())
     return 0;

@@ -90,6 +90,9 @@ public:
   void step_accepted(double time, const Vector &x) override;
   /// Restores the quadrature-point state (QuadratureState::restore).
   void step_rejected() override;
+  /// The largest current - old of the state component "equivalent_plastic_strain" over the
+  /// owned points, reduced over the ranks (0 without it). Collective.
+  double inelastic_strain_increment() const override;
 
   /// The state at the quadrature points of the owned cells (make_quadrature_state), or null
   /// if no model has state (then nothing is kept, committed or written). The models that
@@ -112,7 +115,8 @@ public:
   /// equilibrium solve of the displacement at fixed temperature; with nullptr, releases it.
   void freeze_temperature(const Vector *x);
   /// A run goes on from the saved state x (a checkpoint) at `time`: the contact monitor
-  /// starts from its active set. Returns the pairs in contact. Collective.
+  /// starts from its active set, and `time` is the last accepted step's (the constitutive
+  /// models' next time step starts there). Returns the pairs in contact. Collective.
   int resume(double time, const Vector &x);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.

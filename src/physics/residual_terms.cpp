@@ -16,11 +16,16 @@ namespace kiln
 {
 namespace internal
 {
-/// The exception of a term, with the cell or face it was evaluated on.
+/// The exception of a term, with the cell or face it was evaluated on; `step_failure`: it was
+/// a StepFailure (a smaller step may avoid it).
 class TermFailure : public std::runtime_error
 {
 public:
-  using std::runtime_error::runtime_error;
+  TermFailure(const std::string &message, const bool is_step_failure)
+      : std::runtime_error(message), step_failure(is_step_failure)
+  {
+  }
+  bool step_failure;
 };
 
 /// Runs `evaluate`; an exception (but running out of memory) becomes a TermFailure naming
@@ -37,7 +42,8 @@ template <typename Evaluate, typename Item> void naming(const Evaluate &evaluate
   }
   catch (const std::exception &e)
   {
-    throw TermFailure(item() + ": " + one_line_library_message(e.what()));
+    throw TermFailure(item() + ": " + one_line_library_message(e.what()),
+                      dynamic_cast<const StepFailure *>(&e) != nullptr);
   }
 }
 } // namespace internal
@@ -98,7 +104,9 @@ void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, con
 {
   // An exception of a term on some ranks must not leave the others waiting in the export that
   // follows: every rank ends its terms, then one reduction decides.
+  // A StepFailure stays one (the time stepper cuts the step) if every rank's failure is one.
   std::string failure;
+  bool step_failure = false;
   try
   {
     evaluate_cells(fields, jacobian, sink);
@@ -108,11 +116,13 @@ void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, con
   catch (const internal::TermFailure &e)
   {
     const Teuchos::Comm<int> &comm = *dofs_.owned_dof_map()->getComm();
+    step_failure = e.step_failure;
     failure = "the assembly of the " + std::string(jacobian ? "Jacobian" : "residual") +
               " failed on rank " + std::to_string(comm.getRank()) + " of " +
-              std::to_string(comm.getSize()) + " at " + e.what() + "; every rank stopped";
+              std::to_string(comm.getSize()) + " at " + e.what() +
+              (step_failure ? "" : "; every rank stopped");
   }
-  check_run_collectively(*dofs_.owned_dof_map()->getComm(), failure.empty(), failure);
+  check_run_collectively(*dofs_.owned_dof_map()->getComm(), failure.empty(), failure, step_failure);
 }
 
 void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobian,

@@ -14,6 +14,7 @@ void evaluate_collectively(NonlinearProblem &problem, const NonlinearProblem::Ve
 {
   const Teuchos::Comm<int> &comm = *problem.solution_map()->getComm();
   std::string failure;
+  bool step_failure = false;
   try
   {
     problem.evaluate(x, f, J);
@@ -21,6 +22,11 @@ void evaluate_collectively(NonlinearProblem &problem, const NonlinearProblem::Ve
   catch (const std::bad_alloc &)
   {
     throw;
+  }
+  catch (const StepFailure &e)
+  {
+    failure = e.what();
+    step_failure = true;
   }
   catch (const RunError &e)
   {
@@ -34,7 +40,7 @@ void evaluate_collectively(NonlinearProblem &problem, const NonlinearProblem::Ve
               "; every rank stopped. This is a bug in Kiln or a library it uses: please report "
               "it with the input";
   }
-  check_run_collectively(comm, failure.empty(), failure);
+  check_run_collectively(comm, failure.empty(), failure, step_failure);
 }
 } // namespace internal
 } // namespace kiln

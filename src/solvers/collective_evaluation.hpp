@@ -9,7 +9,8 @@ namespace internal
 {
 /// problem.evaluate(x, f, J), then one reduction: if it threw on any rank, every rank throws
 /// the same RunError, with the message of the lowest rank that threw (a RunError's as it is;
-/// another exception's named with its rank, as the bug it is). std::bad_alloc passes as it is
+/// another exception's named with its rank, as the bug it is); a StepFailure if every rank
+/// that threw threw one (a smaller step may avoid it). std::bad_alloc passes as it is
 /// (main ends the run). A problem that throws on some ranks must have taken part in all of
 /// its collective steps before (ResidualTerms does so for the kernels). Collective.
 void evaluate_collectively(NonlinearProblem &problem, const NonlinearProblem::Vector &x,

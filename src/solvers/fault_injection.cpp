@@ -17,8 +17,12 @@ Teuchos::ParameterList FaultInjection::valid_parameters()
         "the residual evaluation of one rank (the run must stop on every rank with one "
         "message, exit status 2, its last good state written); \"NaN In Residual\" makes one "
         "entry of that rank's residual NaN (the step must be repeated with a smaller step, "
-        "and the run stop at \"Minimum Step\" if the NaN stays); \"None\": no fault",
-        choice_validator({"None", "Exception In Assembly", "NaN In Residual"}));
+        "and the run stop at \"Minimum Step\" if the NaN stays); \"Step Failure In Assembly\" "
+        "throws on that rank the exception of a constitutive model whose local solve does "
+        "not converge (a StepFailure: the step must be repeated smaller on every rank, and "
+        "the run stop at \"Minimum Step\" if it stays); \"None\": no fault",
+        choice_validator(
+            {"None", "Exception In Assembly", "NaN In Residual", "Step Failure In Assembly"}));
   p.set("Rank", 0, "the MPI rank the fault happens on, < the number of ranks [-]",
         nonnegative_int_validator());
   p.set("Time", 0.0,
@@ -84,8 +88,10 @@ void FaultInjection::evaluate(const Vector &x, Vector *f, Matrix *J)
   std::ostringstream message;
   message << where_ << "/\"Fault\" = \"" << fault_ << "\": the exception injected on rank " << rank_
           << " of " << solution_map()->getComm()->getSize()
-          << " in the residual evaluation at t = " << now_
-          << " s; every rank stopped (a testing aid: remove Kiln/Debug for real runs)";
+          << " in the residual evaluation at t = " << now_ << " s";
+  if (fault_ == "Step Failure In Assembly")
+    throw StepFailure(message.str() + " (a testing aid: remove Kiln/Debug for real runs)");
+  message << "; every rank stopped (a testing aid: remove Kiln/Debug for real runs)";
   throw RunError(message.str());
 }
 } // namespace kiln

@@ -18,7 +18,9 @@ namespace kiln
 /// - "Exception In Assembly": throws a RunError on that rank only, as a kernel's exception
 ///   would leave evaluate() on one rank (the solvers turn it into the same RunError on every
 ///   rank: evaluate_collectively);
-/// - "NaN In Residual": sets the first residual entry of that rank to NaN.
+/// - "NaN In Residual": sets the first residual entry of that rank to NaN;
+/// - "Step Failure In Assembly": throws a StepFailure on that rank only, as a constitutive
+///   model whose local solve does not converge (the time stepper cuts the step).
 /// The evaluations counted are those with a residual (f not null) at a time (of the last
 /// set_time_derivative, 0 before the first) at or after "Time".
 class FaultInjection final : public TransientProblem
@@ -76,6 +78,10 @@ public:
   }
   void step_accepted(double time, const Vector &x) override { problem_->step_accepted(time, x); }
   void step_rejected() override { problem_->step_rejected(); }
+  double inelastic_strain_increment() const override
+  {
+    return problem_->inelastic_strain_increment();
+  }
 
   /// Residual evaluations corrupted so far (on every rank alike).
   int n_faults() const { return faults_; }

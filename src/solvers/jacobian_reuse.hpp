@@ -40,6 +40,15 @@ public:
   /// J now holds the Jacobian of the state of the last can_keep(), whose first `smooth`
   /// dependencies are smooth coefficients. Collective.
   void evaluated(const NonlinearProblem::Matrix &J, std::size_t smooth = 0);
+  /// J's values are no longer known (an evaluation into it threw): the next can_keep() is
+  /// false and the next evaluated() begins a new version. Collective (called alike on every
+  /// rank).
+  void forget()
+  {
+    matrix_ = nullptr;
+    dependencies_.clear();
+    pending_.clear();
+  }
   /// Changes with every evaluated() whose Jacobian the last preconditioner does not serve:
   /// a preconditioner built at one version is used while it lasts.
   std::uint64_t version() const { return version_; }

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -383,8 +384,33 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   if (!s.pins.is_null()) // the start without a part in the free motions
     s.pins->project(*Extraction::getTpetraVector(x0));
   s.group->setX(NOX::Thyra::Vector(x0));
-  s.group->computeF();
   Result result;
+  // A StepFailure (a model's local solve, on every rank alike): the solve ends unconverged, x
+  // as it was; a Jacobian it interrupted is not kept.
+  const auto failed = [&](const StepFailure &e)
+  {
+    s.starting_guess->clear();
+    s.reuse->forget();
+    s.group->setX(NOX::Thyra::Vector(x0));
+    result.converged = false;
+    result.step_failure = e.what();
+    const internal::JacobianReuse::Counts &after = s.reuse->counts();
+    result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
+    result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
+    result.preconditioners_built = after.preconditioners_built - before.preconditioners_built;
+    result.preconditioners_kept = after.preconditioners_kept - before.preconditioners_kept;
+    return result;
+  };
+  try
+  {
+    s.group->computeF();
+  }
+  catch (const StepFailure &e)
+  {
+    result.initial_residual_norm = result.final_residual_norm =
+        std::numeric_limits<double>::quiet_NaN();
+    return failed(e);
+  }
   result.initial_residual_norm = s.group->getNormF();
   result.tolerance =
       std::max(s.absolute_tolerance, s.relative_tolerance * result.initial_residual_norm);
@@ -427,7 +453,17 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
     s.starting_guess->set(s.to_solver(*first_step, -1.0, space));
   const RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(s.group, tests, nox);
-  const ST::StatusType status = solver->solve();
+  ST::StatusType status = ST::Unevaluated;
+  try
+  {
+    status = solver->solve();
+  }
+  catch (const StepFailure &e)
+  {
+    result.newton_iterations = solver->getNumIterations();
+    result.final_residual_norm = std::numeric_limits<double>::quiet_NaN();
+    return failed(e);
+  }
   s.starting_guess->clear();
 
   const auto &solution = dynamic_cast<const NOX::Thyra::Group &>(solver->getSolutionGroup());

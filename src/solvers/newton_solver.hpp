@@ -50,12 +50,17 @@ public:
     /// The ||F|| that counts as converged: max("Absolute Tolerance", "Relative Tolerance"
     /// * initial_residual_norm).
     double tolerance = 0.0;
+    /// Not empty: the solve ended unconverged because an evaluation threw a StepFailure
+    /// (base/errors.hpp; on every rank alike), its message; x is then the initial guess.
+    std::string step_failure;
   };
 
   /// Solves F(x) = 0 from the initial guess in x; x holds the last iterate on
   /// return (converged or not). With `first_step`, a guess of the first Newton step, the
   /// first Krylov solve starts from it instead of zero if that leaves the smaller residual
-  /// (the same answer to the Krylov tolerance). Collective.
+  /// (the same answer to the Krylov tolerance). A StepFailure in an evaluation ends the solve
+  /// unconverged (Result::step_failure), with the kept Jacobian and preconditioner forgotten.
+  /// Collective.
   Result solve(NonlinearProblem::Vector &x, const NonlinearProblem::Vector *first_step = nullptr);
   /// "Maximum Iterations" of the input.
   int max_iterations() const;

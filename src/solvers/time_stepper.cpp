@@ -100,7 +100,10 @@ std::string newton_failure(const NewtonSolver::Result &r, const int max_iteratio
   std::ostringstream s;
   const std::string norms = "|F| " + norm(r.initial_residual_norm) + " -> " +
                             norm(r.final_residual_norm) + ", tolerance " + norm(r.tolerance);
-  if (!std::isfinite(r.initial_residual_norm))
+  if (!r.step_failure.empty())
+    s << "an evaluation failed after " << r.newton_iterations
+      << " Newton iterations: " << r.step_failure;
+  else if (!std::isfinite(r.initial_residual_norm))
     s << "the residual at the start of the step is not a finite number (NaN or Inf)";
   else if (!std::isfinite(r.final_residual_norm))
     s << "the residual became NaN or Inf after " << r.newton_iterations
@@ -118,6 +121,10 @@ std::string newton_failure(const NewtonSolver::Result &r, const int max_iteratio
 
 std::string newton_advice(const NewtonSolver::Result &r, const int max_iterations)
 {
+  if (!r.step_failure.empty())
+    return "A constitutive model's local solve fails at too large a strain increment: take "
+           "smaller steps (\"Maximum Step\", \"Initial Step\"), or loosen the model's \"Local "
+           "Tolerance\" or raise its \"Local Iterations\"";
   if (!internal::finite(r))
     return "A NaN or Inf comes from a value out of its range at the state reached (material "
            "data, a condition's value) or from a diverging solve; smaller steps help with the "
@@ -162,6 +169,14 @@ Teuchos::ParameterList TimeStepper::valid_parameters()
         "atol of the error estimate, must be > 0 [unit of the unknowns: K; the estimate counts "
         "the temperature only, the displacement being quasi-static]",
         positive_double_validator());
+  p.set("Maximum Plastic Strain Increment", 1.0e-4,
+        "a step in which the equivalent plastic strain grows by more than this at some "
+        "quadrature point (a viscoplastic model: Power Law, MTS) is repeated with dt * "
+        "max(0.2, 0.9 tolerance / increment), and an accepted step lets the next grow by at "
+        "most that factor (MOOSE's max_inelastic_increment, whose default this is); the "
+        "accuracy of backward Euler on the flow. Not for \"Steady\" (its steps are the output "
+        "times); must be > 0 [-]",
+        positive_double_validator());
   p.set("Maximum Steps", 100000, "steps (accepted and repeated) before the run stops [count]",
         positive_int_validator());
   p.set("Extrapolated Krylov Start", true,
@@ -180,6 +195,7 @@ TimeStepper::TimeStepper(const Teuchos::ParameterList &p, const std::string &whe
       error_control_(p.get<bool>("Error Control")),
       relative_tolerance_(p.get<double>("Relative Error Tolerance")),
       absolute_tolerance_(p.get<double>("Absolute Error Tolerance")),
+      maximum_plastic_increment_(p.get<double>("Maximum Plastic Strain Increment")),
       maximum_steps_(p.get<int>("Maximum Steps")),
       extrapolated_start_(p.get<bool>("Extrapolated Krylov Start")), where_(where),
       out_(std::move(out))
@@ -376,6 +392,28 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
     return false;
   }
 
+  // The plastic strain increment of the step (0 without a viscoplastic model).
+  const double plastic = problem.inelastic_strain_increment();
+  const double plastic_factor =
+      plastic > 0.0 ? std::max(0.2, 0.9 * maximum_plastic_increment_ / plastic) : growth_factor_;
+  if (plastic > maximum_plastic_increment_)
+  {
+    problem.step_rejected();
+    ++state.statistics.error_rejections;
+    state.next_step = h * plastic_factor;
+    *out_ << "  step from t = " << seconds(t) << " with dt = " << seconds(h)
+          << ": plastic strain increment " << std::setprecision(3) << plastic
+          << " > \"Maximum Plastic Strain Increment\" = " << maximum_plastic_increment_
+          << "; retrying with dt = " << seconds(state.next_step) << "\n";
+    if (state.next_step < minimum_step_)
+      throw RunError(where_ +
+                     "/\"Maximum Plastic Strain Increment\": the plastic strain "
+                     "increment needs a step below \"Minimum Step\" = " +
+                     seconds(minimum_step_) + " at t = " + seconds(t) +
+                     "; lower it or raise the tolerance");
+    return false;
+  }
+
   // The local error estimate.
   const int order = bdf2 ? 2 : 1;
   error = -1.0;
@@ -419,6 +457,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   if (error >= 0.0)
     factor = std::min(growth_factor_,
                       std::max(0.2, 0.9 * std::pow(std::max(error, 1e-10), -1.0 / (order + 1))));
+  factor = std::min(factor, plastic_factor);
   // After a hard solve, or one that failed at a larger step, the next step does not grow.
   if (2 * r.newton_iterations > newton.max_iterations() || state.newton_failed)
     factor = std::min(factor, 1.0);

@@ -35,9 +35,13 @@ std::string newton_advice(const NewtonSolver::Result &r, int max_iterations);
 /// The error e is the weighted RMS norm of LTE_i / (atol + rtol max(|x_i|, |x_n,i|)). A step
 /// with e > 1 is repeated with h * max(0.2, 0.9 e^(-1/(p+1))); an accepted one lets the
 /// next grow by min(Growth Factor, 0.9 e^(-1/(p+1))), p the order. A step whose Newton
-/// solve fails is repeated with h * "Step Reduction"; a Newton solve that needed more
+/// solve fails (or ends at a StepFailure: a model's local solve) is repeated with h *
+/// "Step Reduction"; a Newton solve that needed more
 /// than half of its allowed iterations, or that follows a failed attempt, keeps the next
-/// step from growing. Steps never
+/// step from growing. A step whose equivalent plastic strain grows by more than "Maximum
+/// Plastic Strain Increment" at some point (TransientProblem::inelastic_strain_increment) is
+/// repeated with h * max(0.2, 0.9 tolerance / increment), and that factor also caps the
+/// growth of the next step. Steps never
 /// exceed Maximum Step nor Growth Factor times the last step; they land exactly on every
 /// stop time (output and checkpoint times), and the last two steps before one are split
 /// evenly rather than leaving a sliver. Below Minimum Step the run stops with a RunError.
@@ -60,7 +64,7 @@ public:
   struct Statistics
   {
     int steps = 0;             ///< accepted
-    int error_rejections = 0;  ///< repeated because of the error estimate
+    int error_rejections = 0;  ///< repeated for the error estimate or the plastic increment
     int newton_failures = 0;   ///< repeated because Newton did not converge
     int newton_iterations = 0; ///< summed over accepted steps and the initial equilibrium
     int linear_iterations = 0; ///< summed over accepted steps and the initial equilibrium
@@ -154,6 +158,7 @@ private:
   bool error_control_;
   double relative_tolerance_;
   double absolute_tolerance_;
+  double maximum_plastic_increment_; ///< "Maximum Plastic Strain Increment"
   int maximum_steps_;
   bool extrapolated_start_; ///< "Extrapolated Krylov Start"
   std::string where_;

@@ -53,8 +53,9 @@ public:
   virtual std::vector<std::string> state_names() const { return {}; }
 
   /// Stress, tangent and ∂σ/∂T at `in`, from `old_state`; writes `new_state` (both n_state()
-  /// entries; either may be null when n_state() == 0). Throws RunError if the point cannot be
-  /// integrated (a local Newton solve that does not converge): the step is then cut.
+  /// entries; either may be null when n_state() == 0). Throws StepFailure (base/errors.hpp) if the
+  /// point cannot be integrated (a local Newton solve that does not converge, a strain that is not
+  /// a number): the time stepper then cuts the step.
   virtual void evaluate(const PointInput &in, const double *old_state, double *new_state,
                         PointResponse &out) const = 0;
 

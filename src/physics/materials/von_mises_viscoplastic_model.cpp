@@ -73,6 +73,10 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   for (int i = 0; i < 8; ++i)
     new_state[i] = old_state[i];
   new_state[7] = 0.0;
+  // A strain or temperature that is not a number (a diverging Newton iterate) fails the step
+  // here rather than passing NaN on.
+  if (!std::isfinite(q_trial) || !std::isfinite(in.temperature))
+    fail(in, q_trial, "the strain or the temperature is not a finite number");
   if (!(in.time_step > 0.0 && q_trial > 0.0))
     return;
 
@@ -192,6 +196,6 @@ void VonMisesViscoplasticModel::fail(const PointInput &in, const double q_trial,
   for (int i = 0; i < 6; ++i)
     s << (i == 0 ? "" : ", ") << in.strain[i];
   s << "] and trial von Mises stress " << q_trial << " Pa: " << why << "; the step is cut";
-  throw RunError(s.str());
+  throw StepFailure(s.str());
 }
 } // namespace kiln

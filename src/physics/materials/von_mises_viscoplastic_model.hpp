@@ -69,7 +69,7 @@ protected:
                             const std::string &name);
 
 private:
-  /// Δε_eq = x by the safeguarded Newton iteration; throws RunError when it does not converge.
+  /// Δε_eq = x by the safeguarded Newton iteration; throws StepFailure when it does not converge.
   double solve_increment(const PointInput &in, const TemperatureFactors &factors, double q_trial,
                          double x_max) const;
   [[noreturn]] void fail(const PointInput &in, double q_trial, const std::string &why) const;

@@ -12,6 +12,11 @@
 #               one message saying what happened (exit 2), its last good state kept.
 #   transient   a NaN in one residual evaluation only: the step is repeated once with a
 #               smaller one and the run completes.
+#   step_failure
+#               a StepFailure (what a constitutive model whose local solve does not converge
+#               throws) on the last rank only, in one evaluation: every rank repeats the step
+#               once with a smaller one and the run completes; in every evaluation: the step
+#               is cut down to "Minimum Step", then the run stops with one message (exit 2).
 set -uo pipefail
 case=$1 np=$2 kiln=$3 mpiexec=$4
 here=$(dirname "$(realpath "$0")")
@@ -77,6 +82,24 @@ transient)
   grep -q "output: t = 2 s" run.log && grep -q "^status: complete" run.log || fail "the run did not complete"
   [ "$(status_of "results/$case.h5")" = complete ] || fail "results/$case.h5 not complete"
   echo "faults.sh: one NaN cost one repeated step; the run completed"
+  ;;
+step_failure)
+  deck "Step Failure In Assembly" 1
+  timeout 120 "$mpiexec" -np "$np" "$kiln" "$case.xml" > run.log 2>&1 || { cat run.log; fail "the run failed"; }
+  [ "$(grep -c "an evaluation failed after 0 Newton iterations: $case.xml: Kiln/Debug/\"Fault\" = \"Step Failure In Assembly\": the exception injected on rank $((np - 1)) of $np .*; retrying with dt = 0.25 s" run.log)" = 1 ] ||
+    { cat run.log; fail "not one retry after the step failure"; }
+  grep -q "output: t = 2 s" run.log && grep -q "^status: complete" run.log || fail "the run did not complete"
+  [ "$(status_of "results/$case.h5")" = complete ] || fail "results/$case.h5 not complete"
+  # In every evaluation: cut to the minimum step, then one error on every rank.
+  case=step_failure_stays
+  deck "Step Failure In Assembly" -1
+  timeout 120 "$expect_failure" 2 \
+    "kiln: error: $case.xml: Kiln/Time Stepping: Newton did not converge in the step from t = 1 s with dt = 0.015625 s: an evaluation failed after 0 Newton iterations: .*Step Failure In Assembly.*would be below \"Minimum Step\" = 0.01 s" \
+    "$mpiexec" -np "$np" "$kiln" "$case.xml" > run.log 2>&1 || { cat run.log; fail "see above"; }
+  [ "$(grep -c "Step Failure In Assembly.*retrying with dt" run.log)" = 3 ] ||
+    { cat run.log; fail "not 3 retries with smaller steps"; }
+  stopped_by_error "$case.xml: Kiln/Time Stepping: Newton did not converge"
+  echo "faults.sh: a step failure on rank $((np - 1)) of $np cost one repeated step; one that stays stopped the run at the minimum step"
   ;;
 *)
   fail "unknown case"

@@ -1,5 +1,6 @@
 // Tests base/errors: a Trilinos exception's text on one line (no source path, no "Throw
-// number", no "Throw test that evaluated to true"), and check_collectively.
+// number", no "Throw test that evaluated to true"), check_collectively, and
+// check_run_collectively with step failures (StepFailure only if every failure is one).
 // KILN_TEST_NP: 1 2
 #include "base/errors.hpp"
 
@@ -54,5 +55,47 @@ TEST(Errors, CheckCollectivelyThrowsTheSameTextOnEveryRank)
   catch (const kiln::InputError &e)
   {
     EXPECT_EQ(std::string(e.what()), "in.xml: rank " + std::to_string(comm->getSize() - 1));
+  }
+}
+
+TEST(Errors, AStepFailureOnSomeRanksIsTheSameStepFailureOnEveryRank)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int last = comm->getSize() - 1;
+  const bool ok = comm->getRank() != last;
+  EXPECT_NO_THROW(kiln::check_run_collectively(*comm, true, "", true));
+  try
+  {
+    kiln::check_run_collectively(*comm, ok, ok ? "" : "local solve on rank " + std::to_string(last),
+                                 !ok);
+    FAIL() << "no StepFailure";
+  }
+  catch (const kiln::StepFailure &e)
+  {
+    EXPECT_EQ(std::string(e.what()), "local solve on rank " + std::to_string(last));
+  }
+}
+
+TEST(Errors, AnotherFailureAmongStepFailuresIsARunErrorWithItsMessage)
+{
+  // Every rank fails: rank 0 with a step failure, the others (and rank 0 alone on one rank:
+  // then its failure is not a step failure) otherwise.
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int rank = comm->getRank();
+  const bool step = comm->getSize() > 1 && rank == 0;
+  try
+  {
+    kiln::check_run_collectively(*comm, false, (step ? "step " : "fatal ") + std::to_string(rank),
+                                 step);
+    FAIL() << "no RunError";
+  }
+  catch (const kiln::StepFailure &)
+  {
+    FAIL() << "a StepFailure where a rank failed otherwise";
+  }
+  catch (const kiln::RunError &e)
+  {
+    // The message of the lowest rank whose failure was not a step failure.
+    EXPECT_EQ(std::string(e.what()), comm->getSize() > 1 ? "fatal 1" : "fatal 0");
   }
 }

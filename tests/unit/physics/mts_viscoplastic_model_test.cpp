@@ -161,7 +161,7 @@ TEST(MtsViscoplasticModel, NoFlowWithoutDeviatoricStress)
   EXPECT_EQ(e.response.tangent[3][3], 2.0 * 2.6e10);
 }
 
-TEST(MtsViscoplasticModel, NonpositiveShearModulusIsARunError)
+TEST(MtsViscoplasticModel, NonpositiveShearModulusIsAStepFailure)
 {
   Teuchos::ParameterList p = mts();
   p.set("MTS D", 1e12);
@@ -169,9 +169,9 @@ TEST(MtsViscoplasticModel, NonpositiveShearModulusIsARunError)
   try
   {
     kiln_test::evaluate(*model, point({2e-3, 0, 0, 0, 0, 0}, 600.0, 1.0), std::vector<double>(8));
-    FAIL() << "no RunError";
+    FAIL() << "no StepFailure";
   }
-  catch (const kiln::RunError &e)
+  catch (const kiln::StepFailure &e)
   {
     EXPECT_THAT(e.what(), HasSubstr("\"MTS\" viscoplastic model at a quadrature point"));
     EXPECT_THAT(e.what(), HasSubstr("must be > 0 (\"MTS D\" too large"));

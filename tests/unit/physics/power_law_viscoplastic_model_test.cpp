@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 using testing::HasSubstr;
@@ -222,7 +223,7 @@ TEST(PowerLawViscoplasticModel, ZeroExponentRelaxesTheDeviator)
   EXPECT_LT(errors.temperature, 1e-6);
 }
 
-TEST(PowerLawViscoplasticModel, LocalSolveThatDoesNotConvergeIsARunError)
+TEST(PowerLawViscoplasticModel, LocalSolveThatDoesNotConvergeIsAStepFailure)
 {
   Teuchos::ParameterList p = power_law(1e-10, 3.0);
   p.set("Local Iterations", 1);
@@ -230,9 +231,9 @@ TEST(PowerLawViscoplasticModel, LocalSolveThatDoesNotConvergeIsARunError)
   try
   {
     kiln_test::evaluate(*model, point(general, 300.0, 1.0), std::vector<double>(8, 0.0));
-    FAIL() << "no RunError";
+    FAIL() << "no StepFailure";
   }
-  catch (const kiln::RunError &e)
+  catch (const kiln::StepFailure &e)
   {
     EXPECT_THAT(e.what(), HasSubstr("\"Power Law\" viscoplastic model at a quadrature point "
                                     "with T = 300 K"));
@@ -242,21 +243,25 @@ TEST(PowerLawViscoplasticModel, LocalSolveThatDoesNotConvergeIsARunError)
   }
 }
 
-TEST(PowerLawViscoplasticModel, TemperatureAtOrBelowTrefIsARunError)
+TEST(PowerLawViscoplasticModel, TemperatureAtOrBelowTrefIsAStepFailure)
 {
   const auto model = make(power_law(1e-20, 3.0, 1e5, 8.314, 250.0));
   try
   {
     kiln_test::evaluate(*model, point(general, 250.0, 1.0), std::vector<double>(8));
-    FAIL() << "no RunError";
+    FAIL() << "no StepFailure";
   }
-  catch (const kiln::RunError &e)
+  catch (const kiln::StepFailure &e)
   {
     EXPECT_THAT(e.what(), HasSubstr("with T = 250 K"));
     EXPECT_THAT(e.what(), HasSubstr("needs T > \"Power Law Tref\" = 250 K; the step is cut"));
   }
   // No flow to compute (dt = 0): no error.
   EXPECT_NO_THROW(kiln_test::evaluate(*model, point(general, 250.0, 0.0), std::vector<double>(8)));
+  // A strain that is not a number (a diverging Newton iterate) fails the step too.
+  auto nan_point = point(general, 300.0, 1.0);
+  nan_point.strain[0] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(kiln_test::evaluate(*model, nan_point, std::vector<double>(8)), kiln::StepFailure);
 }
 
 TEST(PowerLawViscoplasticModel, BadParametersAreInputErrors)

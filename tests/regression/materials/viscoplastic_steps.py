@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""Viscoplastic flow in the time stepping (issue 31), on tests/regression/materials/
+viscoplastic-step-control.xml (a bar under a constant traction, power-law flow at a plastic
+strain rate of about sqrt(2) 1e-4 1/s; see the deck).
+
+usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
+  step_control  the first step (1 s, increment 1.3e-4) is cut by "Maximum Plastic Strain
+                Increment" = 1e-4 (the log says so, once), every accepted step's increment of
+                the equivalent plastic strain (outputs every step) is at most 1e-4, and the
+                plastic strain at 3 s is just below 3 s times the initial rate.
+  newton        the Jacobian with flow is not reused (a viscoplastic model makes the mechanics
+                block change with every iterate): no Jacobian kept in the run, and Newton
+                converges quadratically in 1 to 3 iterations per step (the NOX log's |F|:
+                |F_k+1|/|F_0| <= max(10 (|F_k|/|F_0|)^2, 1e-11)); with MTS (Truchas' ring aluminium, the
+                bar at a von Mises stress of 85 MPa) likewise.
+  elastic       the same bar, linear elastic (no Model), under a traction growing in time:
+                the Jacobian is constant and kept in every step after the first.
+"""
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+case, kiln, deck, work, n_ranks, mpiexec = sys.argv[1:7]
+work = Path(work) / case
+work.mkdir(parents=True, exist_ok=True)
+text = Path(deck).read_text()
+RATE = 1e-7 * np.sqrt(2e6)  # A sigma_vM^n [1/s]
+TOLERANCE = 1e-4
+
+
+def fail(message, log=""):
+    print(log)
+    print(f"viscoplastic_steps.py {case}: {message}")
+    sys.exit(1)
+
+
+def run(body, name):
+    (work / f"{name}.xml").write_text(body)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    done = subprocess.run([mpiexec, "-np", n_ranks, kiln, f"{name}.xml"], cwd=work, env=env,
+                          capture_output=True, text=True)
+    log = done.stdout + done.stderr
+    (work / f"{name}.log").write_text(log)
+    if done.returncode != 0:
+        fail(f"kiln {name}.xml failed ({done.returncode})", log)
+    return log
+
+
+def replace(body, old, new):
+    if old not in body:
+        fail(f"the deck lacks {old}")
+    return body.replace(old, new)
+
+
+def summary(log, what):
+    m = re.search(rf"^{what}: (\d+)$", log, re.M)
+    if not m:
+        fail(f"the summary has no '{what}'", log)
+    return int(m.group(1))
+
+
+def quadratic(log):
+    """The NOX log's |F| of every Newton solve; fails unless each |F_k+1| / |F_0| is at most
+    max(10 (|F_k| / |F_0|)^2, 1e-11) from the first iteration on (quadratic convergence, down to
+    round-off). Returns the norms of each solve."""
+    solves = []
+    for m in re.finditer(r"^\|\|F\|\| = ([0-9.e+-]+)\s+step = ([0-9.e+-]+)", log, re.M):
+        if float(m.group(2)) == 0.0:
+            solves.append([])
+        solves[-1].append(float(m.group(1)))
+    for norms in solves:
+        r = [f / norms[0] for f in norms] if norms[0] > 0 else []
+        for k in range(1, len(r) - 1):
+            if r[k + 1] > max(10 * r[k] ** 2, 1e-11):
+                fail(f"Newton does not converge quadratically: |F| {norms}", log)
+    return solves
+
+
+def newton_per_step(log):
+    return [int(n) for n in re.findall(r"^step \d+:.*Newton (\d+) \(", log, re.M)]
+
+
+if case == "step_control":
+    log = run(text, "steps")
+    cuts = re.findall(r"plastic strain increment ([0-9.e+-]+) > \"Maximum Plastic Strain "
+                      r"Increment\" = 0.0001; retrying with dt = ([0-9.e+-]+) s", log)
+    if len(cuts) != 1 or not TOLERANCE < float(cuts[0][0]) <= RATE:
+        fail(f"not one cut of the 1 s step by the plastic strain increment: {cuts}", log)
+    with h5py.File(work / "results" / "steps.h5", "r") as h5:
+        names = sorted(h5["steps"].keys())
+        times = [float(h5["steps"][n].attrs["time"]) for n in names]
+        plastic = [float(np.max(h5["steps"][n]["plastic_strain"][...])) for n in names]
+    increments = np.diff(plastic)
+    if times[-1] != 3.0 or len(increments) < 4:
+        fail(f"outputs at {times}")
+    if increments.max() > TOLERANCE * (1 + 1e-12):
+        fail(f"a step's plastic strain increment {increments.max():.6g} > {TOLERANCE}")
+    # At most 3 s times the initial rate; the flow relaxes the von Mises stress slowly (the
+    # rollers hold the lateral faces), by a few per cent over the 3 s.
+    if not 0.8 * 3.0 * RATE < plastic[-1] <= 3.0 * RATE:
+        fail(f"plastic strain at 3 s {plastic[-1]:.9g}, expected just below {3 * RATE:.9g}")
+    print(f"{len(names) - 1} steps, one cut (1 s -> {cuts[0][1]} s), largest increment "
+          f"{increments.max():.4g} <= {TOLERANCE}, plastic strain at 3 s {plastic[-1]:.4g}")
+elif case == "newton":
+    verbose = replace(text, '<ParameterList name="Time Stepping">',
+                      '<ParameterList name="Solver"><ParameterList name="Nonlinear Solver">'
+                      '<ParameterList name="Printing"><Parameter name="Output Information" '
+                      'type="int" value="3"/></ParameterList></ParameterList></ParameterList>'
+                      '<ParameterList name="Time Stepping">')
+    mts = replace(verbose, '''      <Parameter name="Type" type="string" value="Power Law"/>
+      <Parameter name="Power Law A" type="double" value="1e-7"/>
+      <Parameter name="Power Law n" type="double" value="0.5"/>
+      <Parameter name="Power Law Q" type="double" value="0"/>
+      <Parameter name="Power Law R" type="double" value="1"/>''',
+                  '''      <Parameter name="Type" type="string" value="MTS"/>''')
+    # MTS at 400 K with the defaults (Truchas' ring aluminium): the traction 150e6 Pa gives a
+    # von Mises stress of 75 MPa, between sigma_a = 10 MPa and sigma_a + sigma_hat = 99 MPa,
+    # where the law flows (3 Newton iterations per step).
+    mts = replace(mts, '<Parameter name="Reference Temperature" type="double" value="100"/>',
+                  '<Parameter name="Reference Temperature" type="double" value="400"/>')
+    mts = replace(mts, '{4e6, 0, 0}', '{150e6, 0, 0}')
+    # The load is there from t = 0 (the equilibrium at t = 0 is elastic): this is about Newton,
+    # not the step size.
+    mts = replace(mts, '<Parameter name="Maximum Plastic Strain Increment" type="double" '
+                  'value="1e-4"/>', '<Parameter name="Maximum Plastic Strain Increment" '
+                  'type="double" value="1"/>')
+    for name, body in (("power-law", verbose), ("mts", mts)):
+        log = run(body, name)
+        kept = summary(log, "Jacobians kept in this run")
+        iterations = newton_per_step(log)
+        if kept != 0:
+            fail(f"{name}: {kept} Jacobians kept with plastic flow", log)
+        if not iterations or max(iterations) > 3 or min(iterations) < 1:
+            fail(f"{name}: Newton iterations per step {iterations}", log)
+        solves = quadratic(log)
+        print(f"{name}: Newton iterations per step {iterations}, no Jacobian kept; |F| of each "
+              "solve: " + "; ".join(" ".join(f"{f:.3g}" for f in n) for n in solves))
+else:  # elastic
+    body = text[:text.index('    <ParameterList name="Model">')] + \
+        text[text.index('    </ParameterList>\n  </ParameterList>\n  <ParameterList name="Mechanics">')
+             + len('    </ParameterList>\n'):]
+    body = replace(body, '<Parameter name="Traction" type="Array(double)" value="{4e6, 0, 0}"/>',
+                   '<Parameter name="Traction Expressions" type="Array(string)" '
+                   'value="{4e6*t, 0, 0}"/>')
+    body = replace(body, '<Parameter name="Initial Step" type="double" value="1"/>',
+                   '<Parameter name="Initial Step" type="double" value="0.5"/>')
+    body = replace(body, '<Parameter name="Maximum Step" type="double" value="1"/>',
+                   '<Parameter name="Maximum Step" type="double" value="0.5"/>'
+                   '<Parameter name="Growth Factor" type="double" value="1"/>')
+    if "Power Law" in body:
+        fail("the elastic deck still has the model")
+    log = run(body, "elastic")
+    kept = summary(log, "Jacobians kept in this run")
+    assembled = summary(log, "Jacobians assembled in this run")
+    steps = len(newton_per_step(log))
+    if kept < steps - 1 or assembled > 2:
+        fail(f"a constant elastic Jacobian: {assembled} assembled, {kept} kept in {steps} steps",
+             log)
+    print(f"elastic: {assembled} Jacobians assembled, {kept} kept in {steps} steps")
