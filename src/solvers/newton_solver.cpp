@@ -449,6 +449,8 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       Tpetra::deep_copy(x, x_hat);
     else
       x.elementWiseMultiply(1.0, *scale, x_hat, 0.0);
+    if (status == NOX::StatusTest::Converged) // e.g. contact: motions open pairs leave free
+      s.problem->to_minimum_norm(x);
   }
 
   result.converged = status == ST::Converged;
