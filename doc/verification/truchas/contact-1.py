@@ -8,9 +8,13 @@ Truchas whatever its iterative solver reached. The figures (truchas_contact.py):
 - the displacement against the golden (test1.py's check);
 - against the golden's own minimum-norm element (the golden with the free motions that the
   contact conditions allow taken out by the same quadratic programme): the golden's free
-  quarters carry a translation along the cube's z of 7.3e-10 m, which is not the
-  minimum-norm solution; in y and about x the golden is already at the minimum (the quarters
-  touch across gap 11, as in Kiln);
+  quarters carry translations along the cube's z of 7.3e-10 and 7.2e-10 m, so it is not the
+  minimum-norm solution; in y and about x it is at the minimum (the quarters touch across
+  gap 11, as in Kiln; its shift there is 2e-13 m). Kiln is 3.0e-10 m from that element: the
+  golden's quarters touch at x > 0 and carry up to 2.1e3 Pa of compression across gap 11,
+  which nothing balances on a quarter held only by frictionless contact (its only force
+  along y is that pressure, so the exact pressure is 0, as in Kiln, whose quarters touch
+  along the line where the gaps cross);
 - Kiln's distance from its own minimum-norm element (0 to round-off: Kiln's answer is it);
 - the contact conditions: no tension (pairs held shut by Minimum Norm carry round-off only),
   no penetration, p g = 0.

@@ -139,11 +139,13 @@ def figures(results, deck, test, tolerance, golden_path):
          "tolerance": f"<= {tolerance:g} ({test})", "passed": difference <= tolerance,
          "golden": 0.0, "exact": None,
          "explained": "the golden carries free rigid motions of the free quarters (a "
-                      f"translation of up to {np.abs(gold_shift).max():.2g} m, next row): "
+                      f"translation of up to {np.linalg.norm(gold_shift, axis=1).max():.2g} m, "
+                      "next row): "
                       "Truchas' iterative solver stops on one of the many solutions"},
         {"quantity": "max |u - u_golden,min| [m] (the golden's minimum-norm element)",
          "kiln": to_gold_min, "tolerance": f"<= {tolerance:g} ({test})",
-         "passed": to_gold_min <= tolerance, "golden": float(np.abs(gold_shift).max()),
+         "passed": to_gold_min <= tolerance,
+         "golden": float(np.linalg.norm(gold_shift, axis=1).max()),
          "exact": None},
         {"quantity": "max |u - u_min| [m] (Kiln's distance from its own minimum-norm element)",
          "kiln": not_minimum, "tolerance": "<= 1e-12 max |u|",
