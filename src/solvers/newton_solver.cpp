@@ -449,9 +449,11 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       Tpetra::deep_copy(x, x_hat);
     else
       x.elementWiseMultiply(1.0, *scale, x_hat, 0.0);
-    if (status == NOX::StatusTest::Converged) // e.g. contact: motions open pairs leave free
-      s.problem->to_minimum_norm(x);
   }
+  // The problem's own minimum-norm step (contact: the motions open pairs leave free), also
+  // when the set-up leaves no motion free.
+  if (status == ST::Converged)
+    s.problem->to_minimum_norm(x);
 
   result.converged = status == ST::Converged;
   result.newton_iterations = solver->getNumIterations();
