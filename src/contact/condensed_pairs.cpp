@@ -131,6 +131,7 @@ void CondensedPairs::finish_claims()
   value_.assign(axes_.size(), {});
   active_.assign(interface_.owned_pairs().size(), 0);
   pressure_.assign(interface_.owned_pairs().size(), 0.0);
+  opening_.assign(interface_.owned_pairs().size(), 0.0);
 }
 
 Point CondensedPairs::direction(const std::size_t axis) const
@@ -158,6 +159,7 @@ void CondensedPairs::decide(const Assembler &assembler, const Vector &r_overlap,
     if (overlap_map->getLocalElement(dofs_.node_dof(pair.a, u_slot_)) == invalid)
       continue;
     const bool owned = owned_map->getLocalElement(dofs_.node_dof(pair.b, u_slot_)) != invalid;
+    const bool shut = !shut_.empty() && shut_[k] != 0;
     double P_normal = 0.0, cg_normal = 0.0;
     for (std::size_t i = first_axis_[k]; i < first_axis_[k + 1]; ++i)
     {
@@ -167,7 +169,9 @@ void CondensedPairs::decide(const Assembler &assembler, const Vector &r_overlap,
       const LO a = assembler.lid(gid_a), b = assembler.lid(gid_b);
       const double P = (r[b] - r[a]) / (2.0 * pair.area);
       const double cg = pair.c * gap_opening(direction(i), u(pair.a), u(pair.b));
-      value_[i] = law(axis.normal, P, cg);
+      // Held shut (Minimum Norm): the normal is tied, g = 0, whatever P.
+      value_[i] = shut && axis.normal ? ComplementarityFunction::Value{true, cg, 0.0, 1.0}
+                                      : law(axis.normal, P, cg);
       const LO owned_a = owned_map->getLocalElement(gid_a);
       if (value_[i].combined && owned_a != invalid)
         values[owned_a] = r[a] + r[b] - pair.area * value_[i].C;
@@ -184,7 +188,8 @@ void CondensedPairs::decide(const Assembler &assembler, const Vector &r_overlap,
       KILN_ASSERT(interface_.owned_pairs()[owned_index] == static_cast<int>(k),
                   "owned pairs out of order");
       pressure_[owned_index] = P_normal;
-      active_[owned_index] = holds(P_normal, cg_normal);
+      opening_[owned_index] = pair.c > 0.0 ? cg_normal / pair.c : 0.0;
+      active_[owned_index] = shut || holds(P_normal, cg_normal);
       ++owned_index;
     }
   }
@@ -272,6 +277,22 @@ std::vector<double> CondensedPairs::jacobian_dependencies() const
   for (const ComplementarityFunction::Value &v : value_)
     d.insert(d.end(), {v.combined ? 1.0 : 0.0, v.dC_dP, v.dC_dcg});
   return d;
+}
+
+std::vector<InterfaceStrategy::OpenPair> CondensedPairs::open_pairs(const double zero) const
+{
+  std::vector<OpenPair> open;
+  const auto &owned = interface_.owned_pairs();
+  for (std::size_t i = 0; i < owned.size(); ++i)
+  {
+    const int k = owned[i];
+    const bool shut = !shut_.empty() && shut_[k] != 0;
+    if ((active_[i] && !shut && pressure_[i] > zero) || first_axis_[k] == first_axis_[k + 1])
+      continue;
+    const ContactInterface::Pair &pair = interface_.pairs()[k];
+    open.push_back({k, opening_[i], {pair.a, pair.b, direction(first_axis_[k])}, active_[i] != 0});
+  }
+  return open;
 }
 
 std::vector<InterfaceStrategy::HeldDirection> CondensedPairs::held_directions(const bool all) const

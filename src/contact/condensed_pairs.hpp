@@ -28,6 +28,8 @@ public:
   /// Per axis of this rank's overlap: whether its rows are combined, dC/dP and dC/d(cg).
   std::vector<double> jacobian_dependencies() const override;
   std::vector<HeldDirection> held_directions(bool all) const override;
+  std::vector<OpenPair> open_pairs(double zero) const override;
+  void hold_shut(std::vector<char> shut) override { shut_ = std::move(shut); }
   const std::vector<char> &active() const override { return active_; }
   const std::vector<double> &pressure() const override { return pressure_; }
 
@@ -79,5 +81,7 @@ private:
   std::vector<ComplementarityFunction::Value> value_; ///< per axis (those in the overlap)
   std::vector<char> active_;                          ///< per owned pair
   std::vector<double> pressure_;                      ///< per owned pair [Pa]
+  std::vector<double> opening_;                       ///< per owned pair, g [m]
+  std::vector<char> shut_; ///< per pair: held shut (hold_shut()), or empty
 };
 } // namespace kiln

@@ -77,6 +77,29 @@ public:
   /// This rank's share (the pairs whose node b it owns): with `all`, every direction its pairs
   /// can hold (the set-up's count of free motions); else those they hold at the last decision.
   virtual std::vector<HeldDirection> held_directions(bool all) const = 0;
+  /// A pair of this rank's share (node b owned) that may open (kind "Contact") and carries no
+  /// pressure at the last decision: its index in ContactInterface::pairs(), its opening g [m],
+  /// the direction it holds or would hold, and whether it holds (held shut, or by its law at
+  /// a pressure of round-off).
+  struct OpenPair
+  {
+    int pair = -1;
+    double opening = 0.0;
+    HeldDirection held;
+    bool holds = false;
+  };
+  /// This rank's pairs that do not hold at the last decision, those held shut, and those that
+  /// hold by their law with P <= `zero` [Pa] (none for a kind whose pairs always hold).
+  virtual std::vector<OpenPair> open_pairs(double zero) const
+  {
+    (void)zero;
+    return {};
+  }
+  /// With "Free Motions" = "Minimum Norm" (doc/contact.md, "Free motions while pairs open"):
+  /// the pairs (ContactInterface::pairs() order, the same on every rank) that the next
+  /// decisions hold shut, g = 0 on their normal, whatever their multiplier; empty: none. A
+  /// kind whose pairs always hold ignores it.
+  virtual void hold_shut(std::vector<char> shut) { (void)shut; }
   /// At the last decision, per owned pair (ContactInterface::owned_pairs()): whether it holds
   /// (in contact) and the normal pressure P [Pa], positive in compression.
   virtual const std::vector<char> &active() const = 0;

@@ -80,6 +80,11 @@ public:
   {
     return Teuchos::null;
   }
+  /// Optional: after a converged solve with free motions (their part projected out of x), the
+  /// problem's own step to its minimum-norm solution where more motions than those leave the
+  /// solution undetermined (contact: the motions open pairs leave free, within g >= 0;
+  /// doc/contact.md). Default: none. Collective.
+  virtual void to_minimum_norm(Vector &x) { (void)x; }
   /// Optional: each free motion in words ("translation along z"), for messages.
   virtual std::vector<std::string> free_motion_names() const { return {}; }
   /// Optional: the scale c of every unknown. The solver then works on x̂ = x / c with the

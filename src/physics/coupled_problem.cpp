@@ -5,6 +5,7 @@
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/mechanics/free_motions.hpp"
+#include "physics/mechanics/pairs_held_shut.hpp"
 #include "physics/quadrature_state_setup.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
@@ -140,6 +141,8 @@ void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
     held.insert(held.end(), h.begin(), h.end());
   }
   free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held);
+  minimum_norm_ =
+      !interfaces_.empty() && mechanics.get<std::string>("Free Motions") == "Minimum Norm";
   const FreeMotions &free = *free_;
   if (free.empty())
     return;
@@ -240,7 +243,17 @@ void CoupledProblem::decide(const Vector &x)
   assembler_->gather(*residual_work_, *r_overlap_);
   const auto u = [this](const int node) { return fields_->u(node); };
   for (const auto &strategy : interfaces_)
+  {
+    if (minimum_norm_)
+      strategy->hold_shut({});
     strategy->decide(*assembler_, *r_overlap_, *residual_work_, u);
+  }
+  if (minimum_norm_) // the bodies held as at set-up while pairs open (doc/contact.md)
+    hold_pairs_shut(
+        *free_, interfaces_,
+        [&](InterfaceStrategy &strategy)
+        { strategy.decide(*assembler_, *r_overlap_, *residual_work_, u); },
+        *dofs_.owned_dof_map()->getComm());
   Tpetra::deep_copy(*x_decided_, x);
   Tpetra::deep_copy(*F_decided_, *residual_work_);
   decided_ = true;
@@ -409,6 +422,14 @@ double CoupledProblem::inelastic_strain_increment() const
   Teuchos::reduceAll(*solution_map()->getComm(), Teuchos::REDUCE_MAX, local,
                      Teuchos::outArg(global));
   return global;
+}
+
+void CoupledProblem::to_minimum_norm(Vector &x)
+{
+  if (!minimum_norm_)
+    return;
+  decide(x);
+  shift_to_minimum_norm(*free_, interfaces_, x);
 }
 
 void CoupledProblem::check_open_gap(const double time)

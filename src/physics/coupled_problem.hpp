@@ -69,6 +69,8 @@ public:
     return free_motions_;
   }
   std::vector<std::string> free_motion_names() const override { return free_motion_names_; }
+  /// With "Free Motions" = "Minimum Norm" and interfaces: shift_to_minimum_norm().
+  void to_minimum_norm(Vector &x) override;
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
@@ -198,7 +200,10 @@ private:
   std::unique_ptr<ResidualTerms> terms_;
   Teuchos::RCP<Vector> x_overlap_;
   Teuchos::RCP<Vector> residual_work_;
-  std::unique_ptr<FreeMotions> free_;                            ///< with mechanics
+  std::unique_ptr<FreeMotions> free_; ///< with mechanics
+  /// "Free Motions" = "Minimum Norm" with interfaces: open pairs are held shut where the
+  /// bodies would be freer than at set-up (hold_pairs_shut()).
+  bool minimum_norm_ = false;
   Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
   std::unique_ptr<QuadratureState> quadrature_state_; ///< null: no model with state

@@ -486,6 +486,10 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     else
       x.elementWiseMultiply(1.0, *scale, x_hat, 0.0);
   }
+  // The problem's own minimum-norm step (contact: the motions open pairs leave free), also
+  // when the set-up leaves no motion free.
+  if (status == ST::Converged)
+    s.problem->to_minimum_norm(x);
 
   result.converged = status == ST::Converged;
   result.newton_iterations = solver->getNumIterations();

@@ -24,17 +24,19 @@ GOLDEN = "../shared/truchas-tests/sm-contact/contact-0_golden/contact-0.h5"
 TOLERANCE = 1e-10  # test0.py: compare_max(displacement, golden, 1e-10)
 
 
-def matched_golden(results, deck, series="Series 1"):
-    """(Kiln's h5 step at t = 0 fields, golden fields reordered to Kiln's nodes)."""
+def matched_golden(results, deck, series="Series 1", golden=GOLDEN):
+    """(Kiln's h5 step at t = 0 fields, golden fields (with its mesh: x, cells) reordered to
+    Kiln's nodes: node[i] is Kiln's node of golden node i). `golden`: the golden file,
+    relative to the checkout's parent."""
     from pathlib import Path
-    golden_path = Path(__file__).resolve().parents[3] / GOLDEN
+    golden_path = Path(__file__).resolve().parents[3] / golden
     with h5py.File(golden_path, "r") as g:
         X = g["Meshes/DEFAULT/Nodal Coordinates"][...]
         C = g["Meshes/DEFAULT/Element Connectivity"][...] - 1
         s = g["Simulations/MAIN/Series Data"][series]
         gold = {"displacement": s["Displacement"][...],
                 "traction": s["Gap Normal Traction"][...],
-                "opening": s["Gap Displacement"][...]}
+                "opening": s["Gap Displacement"][...], "x": X, "cells": C}
     with h5py.File(results, "r") as h5:
         x = h5["mesh/coordinates"][...]
         c = [row[row >= 0] for row in h5["mesh/connectivity"][...]]  # -1 pads mixed rows

@@ -151,6 +151,44 @@ std::string FreeMotions::more_free_with(const std::vector<HeldDirection> &held) 
   return motions.size() > motions_.size() ? description(motions) : "";
 }
 
+std::vector<RigidMotion> FreeMotions::motions_with(const std::vector<HeldDirection> &held) const
+{
+  FreeMotionFinder finder = conditions_;
+  for (const HeldDirection &h : held)
+    finder.add_gap(body_[h.a], body_[h.b], mesh_.coordinates[h.a], h.direction);
+  return finder.find(*dofs_.owned_dof_map()->getComm());
+}
+
+double FreeMotions::opening_rate(const RigidMotion &motion, const HeldDirection &h) const
+{
+  double size = 0.0;
+  for (int b = 0; b < finder_.n_bodies(); ++b)
+    size = std::max(size, std::sqrt(dot(motion.translation[b], motion.translation[b])) +
+                              std::sqrt(dot(motion.rotation[b], motion.rotation[b])) *
+                                  finder_.body(b).size);
+  return size == 0.0 ? 0.0 : std::abs(opening_along(motion, h)) / size;
+}
+
+double FreeMotions::opening_along(const RigidMotion &motion, const HeldDirection &h) const
+{
+  const auto displacement = [&](const int b, const Point &x)
+  {
+    const Point &a = motion.translation[b];
+    const Point &w = motion.rotation[b];
+    const Point &c = finder_.body(b).centre;
+    const Point r{x[0] - c[0], x[1] - c[1], x[2] - c[2]};
+    return Point{a[0] + w[1] * r[2] - w[2] * r[1], a[1] + w[2] * r[0] - w[0] * r[2],
+                 a[2] + w[0] * r[1] - w[1] * r[0]};
+  };
+  const int ba = body_[h.a], bb = body_[h.b];
+  if (ba < 0 || bb < 0 || ba == bb)
+    return 0.0;
+  const Point &x = mesh_.coordinates[h.a];
+  const Point ra = displacement(ba, x), rb = displacement(bb, x);
+  const Point d{rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]};
+  return dot(h.direction, d);
+}
+
 std::string FreeMotions::description(const std::vector<RigidMotion> &motions) const
 {
   std::string text;
@@ -181,15 +219,17 @@ std::string FreeMotions::description(const std::vector<RigidMotion> &motions) co
   return text;
 }
 
-Teuchos::RCP<Tpetra::MultiVector<double>> FreeMotions::basis() const
+Teuchos::RCP<Tpetra::MultiVector<double>>
+FreeMotions::basis(const std::vector<RigidMotion> &motions) const
 {
   const int F = dofs_.n_node_fields();
   const int u_slot = dofs_.layout().slot(Field::ux);
-  auto basis = Teuchos::rcp(new Tpetra::MultiVector<double>(dofs_.owned_dof_map(), size()));
+  const int n_motions = static_cast<int>(motions.size());
+  auto basis = Teuchos::rcp(new Tpetra::MultiVector<double>(dofs_.owned_dof_map(), n_motions));
   const auto &owned = dofs_.owned_nodes();
-  for (int j = 0; j < size(); ++j)
+  for (int j = 0; j < n_motions; ++j)
   {
-    const RigidMotion &motion = motions_[j];
+    const RigidMotion &motion = motions[j];
     for (std::size_t i = 0; i < owned.size(); ++i)
     {
       const int n = owned[i];

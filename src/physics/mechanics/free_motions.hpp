@@ -44,11 +44,22 @@ public:
   /// no more free than all the pairs do (the set-up's motions). An open gap can leave a body
   /// that only contact holds free. Collective.
   std::string more_free_with(const std::vector<HeldDirection> &held) const;
+  /// The free motions (a basis) when only `held` holds (this rank's share). Collective.
+  std::vector<RigidMotion> motions_with(const std::vector<HeldDirection> &held) const;
+  /// How much a motion opens or closes the pair of `h` along its direction d,
+  /// |d.(r_b(x) - r_a(x))|, relative to the motion's largest displacement of a body,
+  /// max_b (|a_b| + |w_b| L_b) [-]: 0 if the pair cannot hold it.
+  double opening_rate(const RigidMotion &motion, const HeldDirection &h) const;
   /// The motions in the unknowns of the DofManager's layout, one column each: T = 0 and
   /// û = Q^T r(x) at each owned node (the nodal frames of `constraints`), with r of unit
   /// translation or unit rotation: so that v.F is the net force [N] along a free translation
   /// and the net moment [N m] about a free axis.
-  Teuchos::RCP<Tpetra::MultiVector<double>> basis() const;
+  Teuchos::RCP<Tpetra::MultiVector<double>> basis() const { return basis(motions_); }
+  /// The same for any motions of the bodies.
+  Teuchos::RCP<Tpetra::MultiVector<double>> basis(const std::vector<RigidMotion> &motions) const;
+  /// d.(r_b(x) - r_a(x)) for the pair of `h` (d its direction, x its nodes' position): how
+  /// much a motion opens the pair [m per unit of the motion].
+  double opening_along(const RigidMotion &motion, const HeldDirection &h) const;
 
 private:
   std::string description(const std::vector<RigidMotion> &motions) const;

@@ -1,0 +1,20 @@
+#pragma once
+/// The small quadratic programme of the minimum-norm solution with contact (doc/contact.md,
+/// "Free motions while pairs open").
+
+#include <vector>
+
+namespace kiln
+{
+/// min over c of c^T M c + 2 b^T c subject to A c >= h, for k unknowns and m constraints: M
+/// (k x k, symmetric positive definite, column-major), b (k), A (m x k, row-major: row i is
+/// constraint i), h (m) with h <= 0, so that c = 0 is feasible. A primal active-set method
+/// (Nocedal and Wright, Algorithm 16.3) from c = 0 with an empty working set; a blocking
+/// constraint joins it (it is independent of those in it), one with a negative multiplier
+/// leaves it. The result is exact to round-off: the problem is solved, not regularized.
+/// "Zero" is relative to max |b| and max |c|: scale the unknowns so that M's diagonal is 1.
+/// Throws std::runtime_error after 10 (k + m) + 100 iterations (a degenerate cycle).
+std::vector<double> least_norm_shift(int k, const std::vector<double> &M,
+                                     const std::vector<double> &b, int m,
+                                     const std::vector<double> &A, const std::vector<double> &h);
+} // namespace kiln
