@@ -117,8 +117,7 @@ TEST(LeastNormShift, RandomProblemsAgainstEveryActiveSet)
       }
       std::vector<int> pivots(n);
       int info = 0;
-      Teuchos::LAPACK<int, double>().GESV(n, 1, K.data(), n, pivots.data(), rhs.data(), n,
-                                          &info);
+      Teuchos::LAPACK<int, double>().GESV(n, 1, K.data(), n, pivots.data(), rhs.data(), n, &info);
       if (info != 0)
         continue;
       const std::vector<double> x(rhs.begin(), rhs.begin() + k);
