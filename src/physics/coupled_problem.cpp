@@ -636,13 +636,13 @@ std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const 
                           result.push_back(kernel.cell_averages(fe, u, T));
                           return;
                         }
-                        // The general path: σ and ε from the model's points; the thermal strain is
-                        // not the model's to tell (left 0).
+                        // The general path: σ, ε and ε_th from the model's points.
                         const ElasticityKernel::PointAverages points =
                             kernel.point_averages(fe, u, T, history);
                         ElasticityKernel::CellAverages averages{};
                         averages.stress = points.stress;
                         averages.strain = points.strain;
+                        averages.thermal_strain = points.thermal_strain;
                         result.push_back(averages);
                       });
   return result;

@@ -26,6 +26,7 @@ public:
   int n_state() const override { return 3; }
   void initial_state(double *state) const override;
   std::vector<std::string> state_names() const override;
+  double thermal_strain(double /*temperature*/) const override { return 0.0; }
   void evaluate(const kiln::PointInput &in, const double *old_state, double *new_state,
                 kiln::PointResponse &out) const override;
 };

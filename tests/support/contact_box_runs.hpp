@@ -65,10 +65,6 @@ struct StateTolerance
   double zero_stress; ///< [Pa] stress components whose exact value is 0
   double zero_strain; ///< strain and thermal strain components whose exact value is 0
   double temperature; ///< [K] every node's |T - T_exact|
-  /// Whether to check the thermal strain: the general path of the elasticity kernel (a material
-  /// whose E or alpha depends on T, a viscoplastic model) writes thermal_strain as 0 today
-  /// (CoupledProblem::cell_averages: "not the model's to tell").
-  bool thermal_strain = true;
 };
 
 /// Output step `step` (at `time`) is the uniform state `exact` at temperature T: every node's

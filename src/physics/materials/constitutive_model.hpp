@@ -64,6 +64,10 @@ public:
   /// and kernels may take their fast path through lame_constants().
   virtual bool constant_linear() const { return false; }
 
+  /// The thermal strain ε_th(T) each normal component carries at temperature T (isotropic:
+  /// ε_th I; with a coefficient of T the secant one, doc/materials.md) [-], for the output.
+  virtual double thermal_strain(double temperature) const = 0;
+
   /// Output fields per point beyond the stress: equivalent plastic strain [-], its rate
   /// [1/s] (both 0 for an elastic model).
   virtual double equivalent_plastic_strain(const double * /*state*/) const { return 0.0; }

@@ -30,6 +30,10 @@ public:
   double bulk_modulus() const { return lambda_ + 2.0 * G_ / 3.0; }
   double thermal_expansion() const { return alpha_; }
   double reference_temperature() const { return T_ref_; }
+  double thermal_strain(double temperature) const override
+  {
+    return alpha_ * (temperature - T_ref_);
+  }
 
   /// ε − ε_th at temperature T.
   Voigt mechanical_strain(const Voigt &strain, double T) const;

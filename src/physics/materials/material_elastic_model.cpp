@@ -24,4 +24,9 @@ void MaterialElasticModel::evaluate(const PointInput &in, const double * /*old_s
       out.tangent[I][J] = (normal && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0);
   }
 }
+
+double MaterialElasticModel::thermal_strain(const double temperature) const
+{
+  return material_.thermal_strain(temperature);
+}
 } // namespace kiln

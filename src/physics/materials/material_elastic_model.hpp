@@ -15,6 +15,7 @@ class MaterialElasticModel final : public ConstitutiveModel
 {
 public:
   explicit MaterialElasticModel(const Material &material) : material_(material) {}
+  double thermal_strain(double temperature) const override;
   void evaluate(const PointInput &in, const double *old_state, double *new_state,
                 PointResponse &out) const override;
 

@@ -48,6 +48,10 @@ public:
   using TemperatureFactors = std::array<double, 6>;
 
   const LinearElasticModel &elasticity() const { return elasticity_; }
+  double thermal_strain(const double temperature) const override
+  {
+    return elasticity_.thermal_strain(temperature);
+  }
   /// The flow law: the equivalent plastic strain rate at von Mises stress q >= 0 and T.
   FlowRate flow_rate(const double q, const double T) const
   {

@@ -239,6 +239,7 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
     const CellAverages cell = cell_averages(fe, u, T);
     averages.stress = cell.stress;
     averages.strain = cell.strain;
+    averages.thermal_strain = cell.thermal_strain;
     averages.von_mises = von_mises_of(cell.stress);
     return averages;
   }
@@ -262,6 +263,12 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
       averages.strain[I] += JxW * strains[q][I];
     }
     averages.von_mises += JxW * von_mises_of(responses[q].stress);
+    double T_q = 0.0;
+    for (int i = 0; i < fe.n_shape(); ++i)
+      T_q += fe.shape(i, q) * T[i];
+    const double thermal = model_->thermal_strain(T_q);
+    for (int d = 0; d < 3; ++d)
+      averages.thermal_strain[d] += JxW * thermal;
     if (n_state > 0 && history.old_state != nullptr)
     {
       const double *state = history.old_state + q * n_state;
@@ -273,6 +280,8 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
   for (double &v : averages.stress)
     v /= volume;
   for (double &v : averages.strain)
+    v /= volume;
+  for (double &v : averages.thermal_strain)
     v /= volume;
   averages.von_mises /= volume;
   averages.plastic_strain /= volume;

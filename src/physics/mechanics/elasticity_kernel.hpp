@@ -77,6 +77,7 @@ public:
   {
     Voigt stress{};
     Voigt strain{};
+    Voigt thermal_strain{}; ///< ε_th(T) I averaged (the model's thermal_strain)
     double von_mises = 0.0;
     double plastic_strain = 0.0;
     double plastic_strain_rate = 0.0;

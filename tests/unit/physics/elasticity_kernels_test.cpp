@@ -586,6 +586,11 @@ namespace
 class TemperatureDependentElasticity final : public kiln::ConstitutiveModel
 {
 public:
+  double thermal_strain(const double temperature) const override
+  {
+    const double dT = temperature - T_ref;
+    return alpha * (1.0 + 1e-3 * dT) * dT;
+  }
   void evaluate(const kiln::PointInput &in, const double *, double *,
                 kiln::PointResponse &out) const override
   {

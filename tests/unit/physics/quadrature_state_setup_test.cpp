@@ -19,6 +19,7 @@ class Stateless final : public kiln::ConstitutiveModel
 {
 public:
   void initial_state(double * /*state*/) const override {}
+  double thermal_strain(double /*temperature*/) const override { return 0.0; }
   void evaluate(const kiln::PointInput & /*in*/, const double * /*old_state*/,
                 double * /*new_state*/, kiln::PointResponse &out) const override
   {
@@ -33,6 +34,7 @@ public:
   int n_state() const override { return 1; }
   void initial_state(double *state) const override { state[0] = 0.0; }
   std::vector<std::string> state_names() const override { return {"eqps"}; }
+  double thermal_strain(double /*temperature*/) const override { return 0.0; }
   void evaluate(const kiln::PointInput & /*in*/, const double * /*old_state*/,
                 double * /*new_state*/, kiln::PointResponse &out) const override
   {
