@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""Two materials (aluminium, steel) heated by 100 K between walls, in series and in parallel
+(issue 31): the closed-form bimaterial states, to 1e-9.
+
+usage: bimaterial_heated.py KILN MPIEXEC NP series|parallel
+
+The box [-0.1, 0.1] x [-0.5, 0.5] x [-0.05, 0.05] m (the generator's blocks: 1 for x < 0,
+aluminium; 2 for x > 0, steel), Thermo-Elasticity, steady, T = 398 K everywhere (T_ref 298 K,
+dT = 100 K). With M = lambda + 2G and beta = (3 lambda + 2G) alpha of each material:
+- series: walls at x = -0.1 and x = 0.1 (u_x = 0), rollers on the y and z faces. Both blocks
+  are in uniaxial strain along x with one sigma_xx: eps_i = (sigma_xx + beta_i dT) / M_i and
+  eps_1 + eps_2 = 0 (equal lengths) give sigma_xx = -dT (beta_1/M_1 + beta_2/M_2) /
+  (1/M_1 + 1/M_2); sigma_yy = sigma_zz = lambda_i eps_i - beta_i dT; u_x piecewise linear,
+  0 at the walls.
+- parallel: walls at y = -0.5 and y = 0.5 (u_y = 0), rollers on the z faces and on x = -0.1,
+  x = 0.1 free: each block expands along x alone, eps_i = beta_i dT / M_i, sigma_xx = 0,
+  sigma_yy = sigma_zz = lambda_i eps_i - beta_i dT (each bar carries its own wall force);
+  u_x = eps_1 (x + 0.1) in block 1, eps_1 0.1 + eps_2 x in block 2.
+The fields are piecewise linear, so every cell type is exact: errors to 1e-9 of the largest.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+MATERIALS = {  # E [Pa], nu, alpha [1/K]
+    "aluminium": (70e9, 0.33, 23e-6),
+    "steel": (200e9, 0.30, 12e-6),
+}
+DT = 100.0
+
+
+def lame(E, nu):
+    return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+
+
+def deck(base, walls, rollers):
+    materials = ""
+    for block, (name, (E, nu, alpha)) in enumerate(MATERIALS.items(), start=1):
+        materials += f"""
+    <ParameterList name="{name}">
+      <Parameter name="Blocks" type="Array(int)" value="{{{block}}}"/>
+      <Parameter name="Young's Modulus" type="double" value="{E}"/>
+      <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
+      <Parameter name="Thermal Expansion" type="double" value="{alpha}"/>
+      <Parameter name="Reference Temperature" type="double" value="298"/>
+      <Parameter name="Density" type="double" value="3000"/>
+      <Parameter name="Specific Heat" type="double" value="700"/>
+      <Parameter name="Conductivity" type="double" value="100"/>
+    </ParameterList>"""
+    conditions = ""
+    for name, (sets, component) in {**walls, **rollers}.items():
+        conditions += f"""
+      <ParameterList name="{name}">
+        <Parameter name="Type" type="string" value="Displacement"/>
+        <Parameter name="Side Sets" type="Array(int)" value="{{{', '.join(map(str, sets))}}}"/>
+        <Parameter name="Components" type="Array(string)" value="{{{component}}}"/>
+      </ParameterList>"""
+    return f"""<ParameterList name="Kiln">
+  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="Box"/>
+    <Parameter name="Gap Side Set" type="int" value="0"/>
+    <ParameterList name="Box">
+      <Parameter name="Size" type="Array(double)" value="{{0.2, 1, 0.1}}"/>
+      <Parameter name="Cells" type="Array(int)" value="{{4, 5, 2}}"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">{materials}
+  </ParameterList>
+  <ParameterList name="Thermal">
+    <Parameter name="Initial Temperature" type="double" value="{298 + DT}"/>
+    <ParameterList name="Boundary Conditions">
+      <ParameterList name="held">
+        <Parameter name="Type" type="string" value="Temperature"/>
+        <Parameter name="Side Sets" type="Array(int)" value="{{1, 2, 3, 4, 5, 6}}"/>
+        <ParameterList name="Temperature">
+          <Parameter name="Value" type="double" value="{298 + DT}"/>
+        </ParameterList>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Mechanics">
+    <ParameterList name="Boundary Conditions">{conditions}
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Time Stepping">
+    <Parameter name="Method" type="string" value="Steady"/>
+  </ParameterList>
+  <ParameterList name="Solver">
+    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="File Base" type="string" value="{base}"/>
+  </ParameterList>
+</ParameterList>
+"""
+
+
+def exact(case, x):
+    """(displacement at the points x, stress per block) of the closed-form state."""
+    M, lam, beta = [], [], []
+    for E, nu, alpha in MATERIALS.values():
+        l, g = lame(E, nu)
+        lam.append(l)
+        M.append(l + 2 * g)
+        beta.append((3 * l + 2 * g) * alpha)
+    if case == "series":
+        sxx = -DT * (beta[0] / M[0] + beta[1] / M[1]) / (1 / M[0] + 1 / M[1])
+        eps = [(sxx + beta[i] * DT) / M[i] for i in range(2)]
+        ux = np.where(x[:, 0] < 0, eps[0] * (x[:, 0] + 0.1), eps[1] * (x[:, 0] - 0.1))
+    else:
+        sxx = 0.0
+        eps = [beta[i] * DT / M[i] for i in range(2)]
+        ux = np.where(x[:, 0] < 0, eps[0] * (x[:, 0] + 0.1), eps[0] * 0.1 + eps[1] * x[:, 0])
+    u = np.column_stack([ux, np.zeros(len(x)), np.zeros(len(x))])
+    stress = [np.array([sxx, lam[i] * eps[i] - beta[i] * DT, lam[i] * eps[i] - beta[i] * DT,
+                        0, 0, 0]) for i in range(2)]
+    return u, stress
+
+
+def main():
+    kiln, mpiexec, n_ranks, case = sys.argv[1:5]
+    # Side sets of the box: 1, 2 at x = -0.1, 0.1; 3, 4 at y = -0.5, 0.5; 5, 6 at z.
+    if case == "series":
+        walls = {"walls": ((1, 2), "x")}
+        rollers = {"rollers y": ((3, 4), "y"), "rollers z": ((5, 6), "z")}
+    else:
+        walls = {"walls": ((3, 4), "y")}
+        rollers = {"rollers z": ((5, 6), "z"), "roller x": ((1,), "x")}
+    with tempfile.TemporaryDirectory() as folder:
+        base = os.path.join(folder, case)
+        with open(base + ".xml", "w") as f:
+            f.write(deck(base, walls, rollers))
+        run = subprocess.run([mpiexec, "-np", n_ranks, kiln, base + ".xml"], capture_output=True,
+                             text=True)
+        if run.returncode != 0:
+            print(f"bimaterial_heated: kiln failed:\n{run.stdout[-3000:]}{run.stderr[-3000:]}")
+            return 1
+        with h5py.File(base + ".h5", "r") as h5:
+            x = np.array(h5["mesh/coordinates"])
+            block = np.array(h5["mesh/block_id"])
+            step = h5["steps"][sorted(h5["steps"].keys())[-1]]
+            u = np.array(step["displacement"])
+            stress = np.array(step["stress"])
+    u_exact, stress_exact = exact(case, x)
+    u_error = np.abs(u - u_exact).max() / np.abs(u_exact).max()
+    # The results' tensor order is xx yy zz xy yz xz (doc/output-format.md).
+    wanted = np.array([stress_exact[b - 1] for b in block])
+    s_error = np.abs(stress - wanted).max() / np.abs(wanted).max()
+    print(f"{case}, np {n_ranks}: displacement error {u_error:.3g}, stress error {s_error:.3g} "
+          f"(sigma_yy {wanted[0, 1]:.6g} / {wanted[-1, 1]:.6g} Pa, sigma_xx {wanted[0, 0]:.6g} Pa)")
+    return 0 if u_error <= 1e-9 and s_error <= 1e-9 else 1
+
+
+sys.exit(main())
