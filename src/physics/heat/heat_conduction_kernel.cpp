@@ -12,34 +12,38 @@ HeatConductionKernel::HeatConductionKernel(const double rho_c, ConductivityModel
 {
 }
 
-/// With `fixed` > 0 the cell has that many shape functions (compile-time loop bounds).
+/// With `fixed` > 0 the cell is a HEX8 of `fixed` shape functions and as many points
+/// (compile-time loop bounds).
 template <int fixed>
 void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &T_nodes,
                                     const NodalValues &T_dot_nodes, const double dTdot_dT,
                                     LocalSystem &local) const
 {
   const int n = fixed > 0 ? fixed : fe.n_shape();
+  const int n_q = fixed > 0 ? fixed : fe.n_qpoints();
   constexpr int T_field = static_cast<int>(Field::T);
   const bool lumped = capacity_ == Capacity::lumped;
-  for (int q = 0; q < fe.n_qpoints(); ++q)
+  for (int q = 0; q < n_q; ++q)
   {
+    const double *phi = fe.shapes(q);
+    const Point *grad_phi = fe.grads(q);
     double T = 0.0;
     double T_dot = 0.0;
     Point grad_T{0.0, 0.0, 0.0};
     for (int j = 0; j < n; ++j)
     {
-      T += fe.shape(j, q) * T_nodes[j];
-      T_dot += fe.shape(j, q) * T_dot_nodes[j];
+      T += phi[j] * T_nodes[j];
+      T_dot += phi[j] * T_dot_nodes[j];
       for (int d = 0; d < 3; ++d)
-        grad_T[d] += fe.grad(j, q)[d] * T_nodes[j];
+        grad_T[d] += grad_phi[j][d] * T_nodes[j];
     }
     const double k = conductivity_.value(T);
     const double dk_dT = conductivity_.derivative(T);
     const double JxW = fe.JxW(q);
     for (int i = 0; i < n; ++i)
     {
-      const double phi_i = fe.shape(i, q);
-      const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
+      const double phi_i = phi[i];
+      const double grad_T_dot_grad_phi_i = dot(grad_T, grad_phi[i]);
       // The capacity term: at the point (consistent) or at the node (lumped by rows' sums).
       const double T_dot_capacity = lumped ? T_dot_nodes[i] : T_dot;
       local.residual(T_field, i) +=
@@ -50,8 +54,8 @@ void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &
       const double capacity_i = rho_c_ * dTdot_dT * (lumped ? 0.0 : phi_i);
       for (int j = 0; j < n; ++j)
         local.jacobian(T_field, i, T_field, j) +=
-            (capacity_i * fe.shape(j, q) + k * dot(fe.grad(j, q), fe.grad(i, q)) +
-             dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
+            (capacity_i * phi[j] + k * dot(grad_phi[j], grad_phi[i]) +
+             dk_dT * phi[j] * grad_T_dot_grad_phi_i) *
             JxW;
       if (lumped)
         local.jacobian(T_field, i, T_field, i) += rho_c_ * dTdot_dT * phi_i * JxW;
@@ -63,8 +67,8 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
                                     const NodalValues &T_dot_nodes, const double dTdot_dT,
                                     LocalSystem &local) const
 {
-  if (fe.n_shape() == small_cell_nodes)
-    assemble<small_cell_nodes>(fe, T_nodes, T_dot_nodes, dTdot_dT, local);
+  if (fe.type() == CellType::hex8)
+    assemble<hex8_n_nodes>(fe, T_nodes, T_dot_nodes, dTdot_dT, local);
   else
     assemble<0>(fe, T_nodes, T_dot_nodes, dTdot_dT, local);
 }

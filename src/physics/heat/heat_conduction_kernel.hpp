@@ -53,8 +53,8 @@ public:
   Capacity capacity() const { return capacity_; }
 
 private:
-  /// A cell of this many nodes (HEX8, the common case) runs with compile-time loop bounds.
-  static constexpr int small_cell_nodes = 8;
+  /// `fixed` = hex8_n_nodes: a HEX8 cell (the common case) with compile-time loop bounds; 0:
+  /// any type.
   template <int fixed>
   void assemble(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
                 double dTdot_dT, LocalSystem &local) const;
