@@ -325,9 +325,19 @@ void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacement
   //   residual[i][d]  = R_{i,d}
   //   gg[i][j][k][l]  = ∫ ∂_k φ_i ∂_l φ_j dΩ  (j >= i only: gg[j][i] is its transpose)
   //   phi_grad[i][j][d] = ∫ φ_j ∂_d φ_i dΩ  (coupled only)
+  // gg and phi_grad (6 KB for a HEX8) are cleared only where the pass uses them: a residual
+  // pass needs neither.
   std::array<Point, N> residual{};
-  std::array<std::array<Tensor, N>, N> gg{};
-  std::array<std::array<Point, N>, N> phi_grad{};
+  std::array<std::array<Tensor, N>, N> gg;
+  std::array<std::array<Point, N>, N> phi_grad;
+  if (jacobian)
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j)
+        gg[i][j] = Tensor{};
+  if (coupled)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        phi_grad[i][j] = Point{};
   std::array<Point, N> grad_JxW;
   std::array<double, N> dT_nodes;
   for (int j = 0; j < n; ++j)
