@@ -9,7 +9,6 @@ namespace kiln
 void ElementValues::reinit(const Mesh &mesh, const int c)
 {
   const Span<const int> nodes = mesh.cell_nodes(c);
-  x_.resize(nodes.size());
   for (int i = 0; i < nodes.size(); ++i)
     x_[i] = mesh.coordinates[nodes[i]];
   reinit(mesh.cell_type(c), x_.data());
@@ -32,9 +31,9 @@ void ElementValues::reinit(const CellType type, const Point *x)
     JxW_.resize(n_qpoints_);
     quadrature_point_.resize(n_qpoints_);
   }
-  // The common HEX8 (8 shape functions, 8 points) with compile-time loop bounds.
-  if (n_shape_ == small_cell && n_qpoints_ == small_cell)
-    map<small_cell>(x);
+  // The common HEX8 (as many points as shape functions) with compile-time loop bounds.
+  if (type_ == CellType::hex8)
+    map<hex8_n_nodes>(x);
   else
     map<0>(x);
 }
@@ -80,8 +79,13 @@ template <int fixed> void ElementValues::map(const Point *x)
     const double inv_det = 1.0 / det;
     Point *grad = grad_.data() + q * n;
     for (int i = 0; i < n; ++i)
+    {
+      // A copy: the stores to grad (Points too) would otherwise make the compiler reload
+      // dN[i] for every component.
+      const Point dN_i = dN[i];
       for (int d = 0; d < 3; ++d)
-        grad[i][d] = (C[d][0] * dN[i][0] + C[d][1] * dN[i][1] + C[d][2] * dN[i][2]) * inv_det;
+        grad[i][d] = (C[d][0] * dN_i[0] + C[d][1] * dN_i[1] + C[d][2] * dN_i[2]) * inv_det;
+    }
     JxW_[q] = det * weights_[q];
     quadrature_point_[q] = xq;
   }

@@ -3,6 +3,7 @@
 #include "elements/finite_element.hpp"
 #include "mesh/mesh.hpp"
 
+#include <array>
 #include <vector>
 
 namespace kiln
@@ -31,16 +32,19 @@ public:
   double shape(const int i, const int q) const { return shape_[q * n_shape_ + i]; }
   /// The physical gradient of N_i at quadrature point q [1/m].
   const Point &grad(const int i, const int q) const { return grad_[q * n_shape_ + i]; }
+  /// N_0..N_{n_shape()-1} at point q: shapes(q)[i] == shape(i, q). The kernels' inner loops
+  /// read a point's row through this (no stride to reload per shape function).
+  const double *shapes(const int q) const { return shape_ + q * n_shape_; }
+  /// The gradients at point q: grads(q)[i] == grad(i, q) [1/m].
+  const Point *grads(const int q) const { return grad_.data() + q * n_shape_; }
   /// det(dx/dxi) times the quadrature weight at point q [m^3].
   double JxW(const int q) const { return JxW_[q]; }
   /// The physical position of quadrature point q [m].
   const Point &quadrature_point(const int q) const { return quadrature_point_[q]; }
 
 private:
-  /// The size (shape functions and points) of the common HEX8, mapped with compile-time loop
-  /// bounds.
-  static constexpr int small_cell = 8;
-  /// Maps the cell: with `fixed` > 0, n_shape_ == n_qpoints_ == fixed (compile-time bounds).
+  /// Maps the cell: with `fixed` > 0, n_shape_ == n_qpoints_ == fixed (compile-time bounds;
+  /// HEX8's hex8_n_nodes).
   template <int fixed> void map(const Point *x);
 
   CellType type_ = CellType::hex8;
@@ -54,6 +58,6 @@ private:
   std::vector<Point> grad_;
   std::vector<double> JxW_;
   std::vector<Point> quadrature_point_;
-  std::vector<Point> x_; ///< the node coordinates of reinit(mesh, c)
+  std::array<Point, max_cell_nodes> x_; ///< the node coordinates of reinit(mesh, c)
 };
 } // namespace kiln

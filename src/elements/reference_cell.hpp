@@ -31,6 +31,22 @@ enum class CellType : unsigned char
 inline constexpr int n_cell_types = static_cast<int>(CellType::tri6) + 1;
 /// The most nodes a cell of any type has (a capacity for per-cell buffers).
 inline constexpr int max_cell_nodes = 27;
+/// The HEX8 reference cell's nodes, [-1,1]^3 in Exodus order: the bottom face (z = -1)
+/// counterclockwise seen from +z, then the top face. ReferenceCell::of(CellType::hex8) is
+/// made from them.
+inline constexpr std::array<Point, 8> hex8_corners = {{{-1, -1, -1},
+                                                       {1, -1, -1},
+                                                       {1, 1, -1},
+                                                       {-1, 1, -1},
+                                                       {-1, -1, 1},
+                                                       {1, -1, 1},
+                                                       {1, 1, 1},
+                                                       {-1, 1, 1}}};
+/// HEX8's node count, the one home of the HEX8 fast path's size: ElementValues and the
+/// kernels map and assemble a HEX8 cell with this compile-time bound for its shape functions
+/// and its quadrature points (its 2x2x2 Gauss rule has a point per corner;
+/// unit_finite_element checks both counts against FiniteElement::of(CellType::hex8)).
+inline constexpr int hex8_n_nodes = static_cast<int>(hex8_corners.size());
 
 class ReferenceCell
 {

@@ -24,8 +24,7 @@ constexpr CellType Q4 = CellType::quad4, T3 = CellType::tri3, Q8 = CellType::qua
 /// Hexahedron corners: [-1,1]^3, bottom (z = -1) counterclockwise seen from +z, then top.
 std::vector<Point> hex_corners()
 {
-  return {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  return {hex8_corners.begin(), hex8_corners.end()};
 }
 /// Exodus' hexahedron edges in mid-edge node order (nodes 8..19): bottom, verticals, top.
 constexpr int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},

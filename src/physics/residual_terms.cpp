@@ -191,10 +191,14 @@ void ResidualTerms::evaluate_faces(const NodalFields &fields, const bool jacobia
   std::array<Point, max_cell_nodes> u{};
   for (const BoundaryFace &face : faces_)
   {
-    nodes = mesh_.face_nodes(face.cell, face.face);
-    const int n = static_cast<int>(nodes.size());
+    // Mesh::face_nodes()'s nodes, into the reused vector (no allocation per face).
+    const std::vector<int> &on_face = mesh_.reference_cell(face.cell).face_nodes(face.face);
+    const Span<const int> cell = mesh_.cell_nodes(face.cell);
+    const int n = static_cast<int>(on_face.size());
+    nodes.resize(on_face.size());
     for (int i = 0; i < n; ++i)
     {
+      nodes[i] = cell[on_face[i]];
       T[i] = fields.T(nodes[i]);
       u[i] = fields.u(nodes[i]);
     }

@@ -30,13 +30,15 @@ double HeatConductionKernel::enthalpy_rate(const double T, const std::array<doub
   return rate;
 }
 
-/// With `fixed` > 0 the cell has that many shape functions (compile-time loop bounds).
+/// With `fixed` > 0 the cell is a HEX8 of `fixed` shape functions and as many points
+/// (compile-time loop bounds).
 template <int fixed, bool linear>
 void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &T_nodes,
                                     const NodalValues &T_dot_nodes, const double dTdot_dT,
                                     const TemperatureHistory &history, LocalSystem &local) const
 {
   const int n = fixed > 0 ? fixed : fe.n_shape();
+  const int n_q = fixed > 0 ? fixed : fe.n_qpoints();
   constexpr int T_field = static_cast<int>(Field::T);
   const bool lumped = capacity_ == Capacity::lumped;
   // rho c of T, lumped: Hdot and a rho c at each node.
@@ -50,22 +52,24 @@ void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &
         H_dot_node[i] = enthalpy_rate(T_nodes[i], T_past, dTdot_dT, history);
         a_rho_c_node[i] = dTdot_dT * enthalpy_.heat_capacity(T_nodes[i]);
       }
-  for (int q = 0; q < fe.n_qpoints(); ++q)
+  for (int q = 0; q < n_q; ++q)
   {
+    const double *phi = fe.shapes(q);
+    const Point *grad_phi = fe.grads(q);
     double T = 0.0;
     double T_dot = 0.0;
     std::array<double, 2> T_past{0.0, 0.0};
     Point grad_T{0.0, 0.0, 0.0};
     for (int j = 0; j < n; ++j)
     {
-      T += fe.shape(j, q) * T_nodes[j];
+      T += phi[j] * T_nodes[j];
       if constexpr (linear)
-        T_dot += fe.shape(j, q) * T_dot_nodes[j];
+        T_dot += phi[j] * T_dot_nodes[j];
       else
         for (int k = 0; k < history.n; ++k)
-          T_past[k] += fe.shape(j, q) * history.T_past[k][j];
+          T_past[k] += phi[j] * history.T_past[k][j];
       for (int d = 0; d < 3; ++d)
-        grad_T[d] += fe.grad(j, q)[d] * T_nodes[j];
+        grad_T[d] += grad_phi[j][d] * T_nodes[j];
     }
     const double k = conductivity_.value(T);
     const double dk_dT = conductivity_.derivative(T);
@@ -81,8 +85,8 @@ void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &
       }
     for (int i = 0; i < n; ++i)
     {
-      const double phi_i = fe.shape(i, q);
-      const double grad_T_dot_grad_phi_i = dot(grad_T, fe.grad(i, q));
+      const double phi_i = phi[i];
+      const double grad_T_dot_grad_phi_i = dot(grad_T, grad_phi[i]);
       // The capacity term: at the point (consistent) or at the node (lumped by rows' sums).
       double H_dot_i = H_dot;
       if (lumped)
@@ -99,8 +103,8 @@ void HeatConductionKernel::assemble(const ElementValues &fe, const NodalValues &
       const double capacity_i = lumped ? 0.0 : a_rho_c * phi_i;
       for (int j = 0; j < n; ++j)
         local.jacobian(T_field, i, T_field, j) +=
-            (capacity_i * fe.shape(j, q) + k * dot(fe.grad(j, q), fe.grad(i, q)) +
-             dk_dT * fe.shape(j, q) * grad_T_dot_grad_phi_i) *
+            (capacity_i * phi[j] + k * dot(grad_phi[j], grad_phi[i]) +
+             dk_dT * phi[j] * grad_T_dot_grad_phi_i) *
             JxW;
       if (lumped)
       {
@@ -119,16 +123,16 @@ void HeatConductionKernel::evaluate(const ElementValues &fe, const NodalValues &
 {
   if (enthalpy_.is_linear())
   {
-    if (fe.n_shape() == small_cell_nodes)
-      assemble<small_cell_nodes, true>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
+    if (fe.type() == CellType::hex8)
+      assemble<hex8_n_nodes, true>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
     else
       assemble<0, true>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
     return;
   }
   KILN_ASSERT(dTdot_dT == 0.0 || history.n > 0,
               "a transient heat capacity of T without the past temperatures");
-  if (fe.n_shape() == small_cell_nodes)
-    assemble<small_cell_nodes, false>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
+  if (fe.type() == CellType::hex8)
+    assemble<hex8_n_nodes, false>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
   else
     assemble<0, false>(fe, T_nodes, T_dot_nodes, dTdot_dT, history, local);
 }

@@ -77,9 +77,8 @@ public:
   Capacity capacity() const { return capacity_; }
 
 private:
-  /// A cell of this many nodes (HEX8, the common case) runs with compile-time loop bounds.
-  static constexpr int small_cell_nodes = 8;
-  /// `linear`: a constant rho c (H = rho c T), the path of a constant material.
+  /// `fixed` = hex8_n_nodes: a HEX8 cell (the common case) with compile-time loop bounds; 0:
+  /// any type. `linear`: a constant rho c (H = rho c T), the path of a constant material.
   template <int fixed, bool linear>
   void assemble(const ElementValues &fe, const NodalValues &T, const NodalValues &T_dot,
                 double dTdot_dT, const TemperatureHistory &history, LocalSystem &local) const;

@@ -12,14 +12,15 @@ namespace
 /// A 3x3 tensor, [row][column].
 using Tensor = std::array<std::array<double, 3>, 3>;
 
-/// ε = sym ∇u at Gauss point q, with (∇u)_dk = ∂u_d/∂x_k [-].
-Tensor strain_at(const ElementValues &fe, const ElasticityKernel::NodalDisplacements &u,
-                 const int q, const int n)
+/// ε = sym ∇u at a point where the n shape functions have the gradients grad_phi, with
+/// (∇u)_dk = ∂u_d/∂x_k [-].
+inline Tensor strain_at(const Point *grad_phi_at, const ElasticityKernel::NodalDisplacements &u,
+                        const int n)
 {
   Tensor grad_u{};
   for (int j = 0; j < n; ++j)
   {
-    const Point &grad_phi = fe.grad(j, q);
+    const Point &grad_phi = grad_phi_at[j];
     for (int d = 0; d < 3; ++d)
       for (int k = 0; k < 3; ++k)
         grad_u[d][k] += u[j][d] * grad_phi[k];
@@ -140,7 +141,7 @@ void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDispl
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     PointInput in;
-    in.strain = to_voigt(strain_at(fe, u, q, fe.n_shape()));
+    in.strain = to_voigt(strain_at(fe.grads(q), u, fe.n_shape()));
     for (int j = 0; j < fe.n_shape(); ++j)
     {
       in.temperature += fe.shape(j, q) * T[j];
@@ -317,14 +318,15 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
 }
 
 /// The cell's terms with per-cell buffers of capacity N >= fe.n_shape(). With `exact` the
-/// cell has N nodes, a compile-time loop bound (the loops of the common HEX8 unroll);
-/// otherwise the loops run to fe.n_shape().
+/// cell is a HEX8 of N nodes and N quadrature points, compile-time loop bounds (its loops
+/// unroll); otherwise the loops run to fe.n_shape() and fe.n_qpoints().
 template <int N, bool exact>
 void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacements &u,
                                 const NodalValues &T_nodes, const Point &body_force,
                                 const int u_slot, const int T_slot, LocalSystem &local) const
 {
   const int n = exact ? N : fe.n_shape();
+  const int n_q = exact ? N : fe.n_qpoints();
   const bool jacobian = local.has_jacobian();
   const bool coupled = T_slot >= 0 && jacobian;
 
@@ -332,27 +334,36 @@ void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacement
   //   residual[i][d]  = R_{i,d}
   //   gg[i][j][k][l]  = ∫ ∂_k φ_i ∂_l φ_j dΩ  (j >= i only: gg[j][i] is its transpose)
   //   phi_grad[i][j][d] = ∫ φ_j ∂_d φ_i dΩ  (coupled only)
+  // gg and phi_grad (6 KB for a HEX8) are cleared only where the pass uses them: a residual
+  // pass needs neither.
   std::array<Point, N> residual{};
-  std::array<std::array<Tensor, N>, N> gg{};
-  std::array<std::array<Point, N>, N> phi_grad{};
+  std::array<std::array<Tensor, N>, N> gg;
+  std::array<std::array<Point, N>, N> phi_grad;
+  if (jacobian)
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j)
+        gg[i][j] = Tensor{};
+  if (coupled)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        phi_grad[i][j] = Point{};
   std::array<Point, N> grad_JxW;
-  std::array<double, N> dT_nodes, phi;
+  std::array<double, N> dT_nodes;
   for (int j = 0; j < n; ++j)
     dT_nodes[j] = T_nodes[j] - T_ref_;
-  for (int q = 0; q < fe.n_qpoints(); ++q)
+  for (int q = 0; q < n_q; ++q)
   {
     const double JxW = fe.JxW(q);
-    // φ_j(x_q), copied once per point (the table lookup is not free in the inner loops).
+    const double *phi = fe.shapes(q);
+    const Point *grad_phi = fe.grads(q);
     double dT = 0.0;
     for (int j = 0; j < n; ++j)
-    {
-      phi[j] = fe.shape(j, q);
       dT += phi[j] * dT_nodes[j];
-    }
-    const Tensor stress = hooke_stress(lambda_, G_, thermal_modulus_, strain_at(fe, u, q, n), dT);
+    const Tensor stress =
+        hooke_stress(lambda_, G_, thermal_modulus_, strain_at(grad_phi, u, n), dT);
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k)
-        grad_JxW[i][k] = fe.grad(i, q)[k] * JxW;
+        grad_JxW[i][k] = grad_phi[i][k] * JxW;
 
     for (int i = 0; i < n; ++i)
     {
@@ -363,7 +374,7 @@ void ElasticityKernel::assemble(const ElementValues &fe, const NodalDisplacement
                           body_force[d] * phi_i_JxW;
       for (int j = i; j < n && jacobian; ++j)
       {
-        const Point &g_j = fe.grad(j, q);
+        const Point &g_j = grad_phi[j];
         Tensor &gg_ij = gg[i][j];
         for (int k = 0; k < 3; ++k)
           for (int l = 0; l < 3; ++l)
@@ -417,10 +428,10 @@ void ElasticityKernel::evaluate(const ElementValues &fe, const NodalDisplacement
               "u_slot " << u_slot << " out of range for " << local.n_fields() << " fields");
   KILN_ASSERT(T_slot < local.n_fields() && (T_slot < u_slot || T_slot >= u_slot + 3),
               "T_slot " << T_slot << " out of range or overlapping u_slot " << u_slot);
-  if (fe.n_shape() == small_cell_nodes)
-    assemble<small_cell_nodes, true>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
-  else if (fe.n_shape() < small_cell_nodes)
-    assemble<small_cell_nodes, false>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
+  if (fe.type() == CellType::hex8)
+    assemble<hex8_n_nodes, true>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
+  else if (fe.n_shape() <= hex8_n_nodes)
+    assemble<hex8_n_nodes, false>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
   else
     assemble<max_cell_nodes, false>(fe, u, T_nodes, body_force, u_slot, T_slot, local);
 }
@@ -434,7 +445,7 @@ ElasticityKernel::CellAverages ElasticityKernel::cell_averages(const ElementValu
   for (int q = 0; q < fe.n_qpoints(); ++q)
   {
     const double JxW = fe.JxW(q);
-    const Tensor strain = strain_at(fe, u, q, fe.n_shape());
+    const Tensor strain = strain_at(fe.grads(q), u, fe.n_shape());
     const double dT = temperature_change_at(fe, T_nodes, T_ref_, q);
     add_to_voigt(JxW, strain, averages.strain);
     add_to_voigt(JxW, hooke_stress(lambda_, G_, thermal_modulus_, strain, dT), averages.stress);

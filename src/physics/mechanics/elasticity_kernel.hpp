@@ -119,10 +119,9 @@ public:
   double reference_temperature() const { return T_ref_; }
 
 private:
-  /// The capacity of the small cells' buffers: a cell of exactly this many nodes (HEX8, the
-  /// common case) runs with compile-time loop bounds; smaller ones share the buffers, larger
-  /// ones use max_cell_nodes.
-  static constexpr int small_cell_nodes = 8;
+  /// assemble<hex8_n_nodes, true>: a HEX8 (the common case) with compile-time loop bounds;
+  /// the other cells of at most hex8_n_nodes nodes share its buffers, larger ones use
+  /// max_cell_nodes.
   template <int N, bool exact>
   void assemble(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
                 const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;

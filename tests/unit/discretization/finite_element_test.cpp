@@ -566,6 +566,20 @@ TEST(Hex8, FacesAndGaussPointsAreKilnsOwn)
   }
 }
 
+TEST(Hex8, FastPathSizeIsTheReferenceCellsNodesAndPoints)
+{
+  // hex8_n_nodes is the compile-time bound of ElementValues' and the kernels' HEX8 path for
+  // both the shape functions and the quadrature points.
+  const ReferenceCell &hex = ReferenceCell::of(CellType::hex8);
+  EXPECT_EQ(hex.n_nodes(), kiln::hex8_n_nodes);
+  for (int i = 0; i < kiln::hex8_n_nodes; ++i)
+    EXPECT_EQ(hex.node(i), kiln::hex8_corners[i]) << "node " << i;
+  const kiln::ReferenceValues &ref = kiln::ReferenceValues::of(CellType::hex8);
+  EXPECT_EQ(ref.n_shape, kiln::hex8_n_nodes);
+  EXPECT_EQ(ref.n_qpoints, kiln::hex8_n_nodes);
+  EXPECT_EQ(FiniteElement::of(CellType::hex8).quadrature().size(), kiln::hex8_n_nodes);
+}
+
 TEST(Quad4, GaussPointsInCornerOrder)
 {
   const Quadrature &q = FiniteElement::of(CellType::quad4).quadrature();
