@@ -29,13 +29,13 @@ Checked: the temperature at every node (each cell's nodes by its half's line) an
 gap_heat_flux at the gap's nodes (q) to 1e-9, the stress (sigma_xx = -P, the rest 0) and the
 contact pressure (P) to 1e-9 P.
 """
-import os
-import subprocess
 import sys
-import tempfile
+from pathlib import Path
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+from kiln_runs import condition_xml, run_last_step  # noqa: E402
 
 SHORTENING = 2.0e-5
 H0, WIDTH, HP = 1.0e3, 1.0e-5, 1.0e-4
@@ -89,42 +89,11 @@ def deck(base, case):
     <Parameter name="Gap Conductance Model" type="string" value="Contact Dependent"/>
     <Parameter name="Gap Width Scale" type="double" value="{WIDTH}"/>
     <Parameter name="Gap Pressure Coefficient" type="double" value="{HP}"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="hot">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{1}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_A}"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="cold">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{2}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_B}"/>
-        </ParameterList>
-      </ParameterList>
+    <ParameterList name="Boundary Conditions">{condition_xml("hot", "Temperature", (1,), None, T_A)}{condition_xml("cold", "Temperature", (2,), None, T_B)}
     </ParameterList>
   </ParameterList>
   <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="wall">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{1}}"/>
-        <Parameter name="Components" type="Array(string)" value="{{x}}"/>
-      </ParameterList>
-      <ParameterList name="rollers">
-        <Parameter name="Type" type="string" value="Normal Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{3, 5}}"/>
-      </ParameterList>
-      <ParameterList name="pressed">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{2}}"/>
-        <Parameter name="Components" type="Array(string)" value="{{x}}"/>
-        <ParameterList name="Displacement">
-          <Parameter name="Value" type="double" value="{-SHORTENING}"/>
-        </ParameterList>
-      </ParameterList>
+    <ParameterList name="Boundary Conditions">{condition_xml("wall", "Displacement", (1,), "x")}{condition_xml("rollers", "Normal Displacement", (3, 5))}{condition_xml("pressed", "Displacement", (2,), "x", -SHORTENING)}
     </ParameterList>
   </ParameterList>
   <ParameterList name="Time Stepping">
@@ -142,27 +111,17 @@ def deck(base, case):
 
 def main():
     kiln, mpiexec, n_ranks, case = sys.argv[1:5]
-    with tempfile.TemporaryDirectory() as folder:
-        base = os.path.join(folder, case)
-        with open(base + ".xml", "w") as f:
-            f.write(deck(base, case))
-        run = subprocess.run([mpiexec, "-np", n_ranks, kiln, base + ".xml"], capture_output=True,
-                             text=True)
-        if run.returncode != 0:
-            print(f"contact_conductance_materials: kiln failed:\n{run.stdout[-3000:]}"
-                  f"{run.stderr[-3000:]}")
-            return 1
-        with h5py.File(base + ".h5", "r") as h5:
-            x = np.array(h5["mesh/coordinates"])
-            connectivity = np.array(h5["mesh/connectivity"])
-            block = np.array(h5["mesh/block_id"])
-            step = h5["steps"][sorted(h5["steps"].keys())[-1]]
-            T = np.array(step["temperature"])
-            stress = np.array(step["stress"])
-            flux = np.array(step["gap_heat_flux"])
-            pressure = np.array(step["contact_pressure"])
+    result = run_last_step(kiln, mpiexec, n_ranks, case, lambda base: deck(base, case),
+                           ("temperature", "stress", "gap_heat_flux", "contact_pressure"),
+                           ("coordinates", "connectivity", "block_id"))
+    if result is None:
+        return 1
+    x, connectivity, block = (result[0][key] for key in ("coordinates", "connectivity",
+                                                         "block_id"))
+    T, stress, flux, pressure = (result[1][key] for key in ("temperature", "stress",
+                                                            "gap_heat_flux", "contact_pressure"))
     k_a, k_b = CASES[case][0][3], CASES[case][1][3]
-    pressure = np.array(pressure)[~np.isnan(pressure)]
+    pressure = pressure[~np.isnan(pressure)]
     if case == "two-materials":
         E_a, E_b = CASES[case][0][1], CASES[case][1][1]
         P = SHORTENING / (HALF / E_a + HALF / E_b)

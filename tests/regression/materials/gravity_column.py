@@ -25,13 +25,13 @@ T, which is exact for a linear T); the strain of a cell is then the mean of the 
 it, so each cell's stress is the exact cell average. Nodal displacements and cell stresses are
 compared with the exact values to 1e-9 of their largest.
 """
-import os
-import subprocess
 import sys
-import tempfile
+from pathlib import Path
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+from kiln_runs import condition_xml, run_last_step  # noqa: E402
 
 G0 = 9.81
 T_FOOT, T_TOP = 300.0, 500.0
@@ -73,15 +73,9 @@ def deck(base, case):
       <Parameter name="Specific Heat" type="double" value="500"/>
       <Parameter name="Conductivity" type="double" value="40"/>
     </ParameterList>"""
-    conditions = ""
-    for name, (sets, component) in {"foot": ((1,), "x"), "rollers y": ((3, 4), "y"),
-                                    "rollers z": ((5, 6), "z")}.items():
-        conditions += f"""
-      <ParameterList name="{name}">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{', '.join(map(str, sets))}}}"/>
-        <Parameter name="Components" type="Array(string)" value="{{{component}}}"/>
-      </ParameterList>"""
+    conditions = (condition_xml("foot", "Displacement", (1,), "x") +
+                  condition_xml("rollers y", "Displacement", (3, 4), "y") +
+                  condition_xml("rollers z", "Displacement", (5, 6), "z"))
     return f"""<ParameterList name="Kiln">
   <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
   <ParameterList name="Mesh">
@@ -96,21 +90,7 @@ def deck(base, case):
   </ParameterList>
   <ParameterList name="Thermal">
     <Parameter name="Initial Temperature" type="double" value="400"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="foot">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{1}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_FOOT}"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="top">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{2}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_TOP}"/>
-        </ParameterList>
-      </ParameterList>
+    <ParameterList name="Boundary Conditions">{condition_xml("foot", "Temperature", (1,), None, T_FOOT)}{condition_xml("top", "Temperature", (2,), None, T_TOP)}
     </ParameterList>
   </ParameterList>
   <ParameterList name="Mechanics">
@@ -172,22 +152,13 @@ def exact(case):
 
 def main():
     kiln, mpiexec, n_ranks, case = sys.argv[1:5]
-    with tempfile.TemporaryDirectory() as folder:
-        base = os.path.join(folder, case)
-        with open(base + ".xml", "w") as f:
-            f.write(deck(base, case))
-        run = subprocess.run([mpiexec, "-np", n_ranks, kiln, base + ".xml"], capture_output=True,
-                             text=True)
-        if run.returncode != 0:
-            print(f"gravity_column: kiln failed:\n{run.stdout[-3000:]}{run.stderr[-3000:]}")
-            return 1
-        with h5py.File(base + ".h5", "r") as h5:
-            x = np.array(h5["mesh/coordinates"])
-            connectivity = np.array(h5["mesh/connectivity"])
-            step = h5["steps"][sorted(h5["steps"].keys())[-1]]
-            T = np.array(step["temperature"])
-            u = np.array(step["displacement"])
-            stress = np.array(step["stress"])
+    result = run_last_step(kiln, mpiexec, n_ranks, case, lambda base: deck(base, case),
+                           ("temperature", "displacement", "stress"),
+                           ("coordinates", "connectivity"))
+    if result is None:
+        return 1
+    x, connectivity = result[0]["coordinates"], result[0]["connectivity"]
+    T, u, stress = (result[1][key] for key in ("temperature", "displacement", "stress"))
     sigma_xx, moduli, u_x = exact(case)
     s_nodes = x[:, 0] + 0.5
     T_exact = T_FOOT + (T_TOP - T_FOOT) * s_nodes
