@@ -56,7 +56,7 @@ public:
     double dT = 0.0;
     for (int I = 0; I < 6; ++I)
     {
-      p += s * m_[I] * r.stress[I];
+      pressure_ += s * m_[I] * r.stress[I];
       dT += m_[I] * r.stress_temperature_derivative[I];
       for (int J = 0; J < 6; ++J)
         v[J] += m_[I] * r.tangent[I][J];
@@ -78,9 +78,11 @@ public:
     }
   }
 
-  double p = 0.0;
+  /// The sum of the points' −(w/2) n.σ n so far [Pa].
+  double pressure() const { return pressure_; }
 
 private:
+  double pressure_ = 0.0;
   Voigt m_{};
   const std::vector<Point> &u_;
   const std::vector<double> &T_;
@@ -178,7 +180,7 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
   };
   add_cell(fe_a, cell_a, cells[0]);
   add_cell(fe_b, cell_b, cells[1]);
-  const double p = side.p;
+  const double p = side.pressure();
   const double dh_dp = p > 0.0 ? p_.pressure_coefficient : 0.0;
 
   for (int q = 0; q < fv.n_qpoints(); ++q)

@@ -42,9 +42,9 @@ public:
     double length = 0.0;               ///< L [m]
     double pressure_coefficient = 0.0; ///< h_p [W/(m^2 K Pa)]
   };
-  /// `models[i]` is material i's mechanical model (no state: n_state() == 0), shared with
-  /// nobody's state; `model_of_block` maps every block id of the mesh to one (it may be empty
-  /// with one model).
+  /// `models[i]` is material i's mechanical model (Material::mechanical_model(); one without
+  /// state, n_state() == 0); `model_of_block` maps every block id of the mesh to one (it may
+  /// be empty with one model).
   ContactConductanceKernel(const Parameters &p, const Mesh &mesh,
                            std::vector<std::shared_ptr<const ConstitutiveModel>> models,
                            std::map<int, int> model_of_block);
