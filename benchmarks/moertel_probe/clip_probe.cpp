@@ -7,6 +7,12 @@
 // checks and output line as moertel_probe (serial only).
 //
 //   clip_probe NX0 NY0 NX1 NY1 [--offset D] [--curve R] [--scale S] [--flat-frame]
+//              [--shift S] [--consistent]
+//
+// --shift S: the secondary surface moved by S along x (before the rotation), so that a column
+// of its faces is only partly covered. --consistent: A from the covered part of each face
+// (diag(int_cov N) (int_cov N N)^-1) instead of the whole face. Besides moertel_probe's
+// figures it prints the smallest D_jj and the gap error with D lumped to its row sums.
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -120,7 +126,8 @@ static std::vector<V2> clip(const std::vector<V2> &poly, const std::vector<V2> &
 int main(int argc, char **argv)
 {
   int n[2][2] = {{4, 4}, {5, 3}}, positional = 0;
-  double offset = 0, radius = 0, scale = 1;
+  double offset = 0, radius = 0, scale = 1, shift = 0;
+  bool consistent = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -130,6 +137,10 @@ int main(int argc, char **argv)
       radius = std::atof(argv[++i]);
     else if (a == "--flat-frame")
       rotation_angles[0] = rotation_angles[1] = 0.0;
+    else if (a == "--shift")
+      shift = std::atof(argv[++i]);
+    else if (a == "--consistent")
+      consistent = true;
     else if (a == "--scale")
       scale = std::atof(argv[++i]);
     else if (positional < 4)
@@ -148,7 +159,8 @@ int main(int argc, char **argv)
         const double x = double(i) / nx, d = x - 0.5;
         const double z =
             (radius > 0 ? radius - std::sqrt(radius * radius - d * d) : 0) + (side ? offset : 0);
-        S[side].x.push_back(rotate({scale * x, scale * double(j) / ny, scale * z}));
+        S[side].x.push_back(
+            rotate({scale * (x + (side ? shift : 0)), scale * double(j) / ny, scale * z}));
       }
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -204,6 +216,15 @@ int main(int argc, char **argv)
       const V3 d = sub(p, c);
       return V2{dot(d, t1), dot(d, t2)};
     };
+    // The quadrature points of the face's overlaps: N of the secondary and primary faces, the
+    // weight and the primary face.
+    struct QPoint
+    {
+      std::array<double, 4> Ns, Nm;
+      double w;
+      int f;
+    };
+    std::vector<QPoint> points;
     double Me[4][4] = {}, De[4] = {};
     const double gp[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
     for (int a = 0; a < 3; ++a)
@@ -220,26 +241,6 @@ int main(int argc, char **argv)
             Me[i][j] += N[i] * N[j] * J;
         }
       }
-    double A[4][4], inv[4][8]; // A = diag(De) Me^-1 by Gauss-Jordan
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 8; ++j)
-        inv[i][j] = j < 4 ? Me[i][j] : (j - 4 == i);
-    for (int i = 0; i < 4; ++i)
-    {
-      const double p = inv[i][i];
-      for (int j = 0; j < 8; ++j)
-        inv[i][j] /= p;
-      for (int r = 0; r < 4; ++r)
-        if (r != i)
-        {
-          const double m = inv[r][i];
-          for (int j = 0; j < 8; ++j)
-            inv[r][j] -= m * inv[i][j];
-        }
-    }
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j)
-        A[i][j] = De[i] * inv[i][4 + j];
     std::vector<V2> mine;
     V3 lo = Q.x[Q.faces[e][0]], hi = lo;
     for (int k : Q.faces[e])
@@ -298,49 +299,96 @@ int main(int argc, char **argv)
                   const V3 y = add(add(c, t1, y2[0]), t2, y2[1]);
                   const V2 st = meet(Q, int(e), y, nrm), sm = meet(P, f, y, nrm);
                   const auto Ns = shape(st[0], st[1]), Nm = shape(sm[0], sm[1]);
-                  const double w = qw[r] * area;
-                  for (int i = 0; i < 4; ++i)
-                  {
-                    double psi = 0;
-                    for (int j = 0; j < 4; ++j)
-                      psi += A[i][j] * Ns[j];
-                    for (int j = 0; j < 4; ++j)
-                      D[Q.faces[e][i]][Q.faces[e][j]] += psi * Ns[j] * w;
-                    for (int k2 = 0; k2 < 4; ++k2)
-                      M[Q.faces[e][i]][P.faces[f][k2]] += psi * Nm[k2] * w;
-                  }
+                  points.push_back({Ns, Nm, qw[r] * area, f});
                 }
             }
           }
         }
+    if (points.empty())
+      continue;
+    if (consistent) // A from the covered part of the face (Cichosz and Bischoff 2011)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        De[i] = 0;
+        for (int j = 0; j < 4; ++j)
+          Me[i][j] = 0;
+      }
+      for (const QPoint &q : points)
+        for (int i = 0; i < 4; ++i)
+        {
+          De[i] += q.Ns[i] * q.w;
+          for (int j = 0; j < 4; ++j)
+            Me[i][j] += q.Ns[i] * q.Ns[j] * q.w;
+        }
+    }
+    double A[4][4], inv[4][8]; // A = diag(De) Me^-1 by Gauss-Jordan
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 8; ++j)
+        inv[i][j] = j < 4 ? Me[i][j] : (j - 4 == i);
+    for (int i = 0; i < 4; ++i)
+    {
+      const double p = inv[i][i];
+      for (int j = 0; j < 8; ++j)
+        inv[i][j] /= p;
+      for (int r = 0; r < 4; ++r)
+        if (r != i)
+        {
+          const double m = inv[r][i];
+          for (int j = 0; j < 8; ++j)
+            inv[r][j] -= m * inv[i][j];
+        }
+    }
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        A[i][j] = De[i] * inv[i][4 + j];
+    for (const QPoint &q : points)
+      for (int i = 0; i < 4; ++i)
+      {
+        double psi = 0;
+        for (int j = 0; j < 4; ++j)
+          psi += A[i][j] * q.Ns[j];
+        for (int j = 0; j < 4; ++j)
+          D[Q.faces[e][i]][Q.faces[e][j]] += psi * q.Ns[j] * q.w;
+        for (int k2 = 0; k2 < 4; ++k2)
+          M[Q.faces[e][i]][P.faces[q.f][k2]] += psi * q.Nm[k2] * q.w;
+      }
   }
   const auto t1c = std::chrono::steady_clock::now();
   const V3 normal = rotate({0, 0, 1});
-  double sum_D = 0, sum_M = 0, pou = 0, gap = 0;
-  int off = 0;
+  double sum_D = 0, sum_M = 0, pou = 0, gap = 0, gap_lumped = 0, min_D = 1e300;
+  int off = 0, rows = 0;
   for (std::size_t i = 0; i < Q.x.size(); ++i)
   {
+    const auto diagonal = D[i].find(int(i));
+    if (diagonal == D[i].end())
+      continue; // not covered: no multiplier
+    const double Dii = diagonal->second;
     double rd = 0, rm = 0, g = 0;
     for (auto [j, v] : D[i])
     {
       rd += v;
       g += v * dot(Q.x[j], normal);
-      off += j != int(i) && std::abs(v) > 1e-8 * D[i][i];
+      off += j != int(i) && std::abs(v) > 1e-8 * std::abs(Dii);
     }
     for (auto [k, v] : M[i])
     {
       rm += v;
       g -= v * dot(P.x[k], normal);
     }
+    ++rows;
     sum_D += rd;
     sum_M += rm;
+    min_D = std::min(min_D, Dii);
     pou = std::max(pou, std::abs(rm - rd));
-    gap = std::max(gap, std::abs(g / D[i][i] / scale - offset));
+    gap = std::max(gap, std::abs(g / Dii / scale - offset));
+    gap_lumped = std::max(gap_lumped, std::abs(g / rd / scale - offset));
   }
-  std::printf("clip %dx%d vs %dx%d%s%s offset %g: rows of D %zu, off-diagonal %d, sum D %.15g, "
-              "sum M %.15g, max|rowsum M - rowsum D| %.3g, max|gap - offset| %.3g, "
-              "search+integrate %.3f s\n",
+  std::printf("clip %dx%d vs %dx%d%s%s%s offset %g shift %g: rows of D %d, off-diagonal %d, "
+              "sum D %.15g, sum M %.15g, min D_ii %.3g, max|rowsum M - rowsum D| %.3g, "
+              "max|gap - offset| %.3g (lumped D %.3g), search+integrate %.3f s\n",
               n[0][0], n[0][1], n[1][0], n[1][1], rotation_angles[0] == 0.0 ? " flat-frame" : "",
-              radius > 0 ? " curved" : "", offset, Q.x.size(), off, sum_D, sum_M, pou, gap,
+              radius > 0 ? " curved" : "", consistent ? " consistent" : "", offset, shift, rows,
+              off, sum_D, sum_M, min_D, pou, gap, gap_lumped,
               std::chrono::duration<double>(t1c - t0).count());
 }

@@ -32,6 +32,14 @@ for c in "${cases[@]}"; do
   # shellcheck disable=SC2086
   "$build/clip_probe" $c
 done
+# A column of secondary faces half covered (shifted by 0.1 along x) and nearly uncovered (0.199):
+# the dual basis of the whole face against that of the covered part (--consistent).
+for c in "--shift 0.1" "--shift 0.1 --consistent" "--shift 0.199" "--shift 0.199 --consistent"; do
+  # shellcheck disable=SC2086
+  "$build/clip_probe" 4 4 5 3 --offset 0.01 $c
+done
+"$build/clip_probe" 4 4 5 3 --curve 2 --offset 0.01
+"$build/clip_probe" 4 4 5 3 --curve 2 --offset 0.01 --consistent
 for g in 3 6 12 27; do "$build/moertel_probe" 4 4 5 3 --offset -0.01 --flat-frame --gauss $g; done
 "$build/moertel_probe" 4 4 5 3 --offset -0.01 --flat-frame --tri
 # MoertelT, the Tpetra port: D and M come back empty (doc/contact.md says why).
