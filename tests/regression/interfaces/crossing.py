@@ -36,29 +36,21 @@ Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
 """
 import os
 import re
-import subprocess
 import sys
+from pathlib import Path
 
 import h5py
 import numpy as np
 from scipy.io import netcdf_file
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
+
+
 def run(kiln, inputs, work, deck, n_ranks, mpiexec):
     os.makedirs(work, exist_ok=True)
-    command = [kiln, os.path.join(inputs, deck + ".xml")]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"{deck}: exit {done.returncode}")
-    with h5py.File(os.path.join(work, "results", deck + ".h5"), "r") as h5:
-        last = h5["steps"][sorted(h5["steps"].keys())[-1]]
-        fields = {k: last[k][...] for k in last.keys()}
-        fields["time"] = float(last.attrs["time"])
-        fields["x"] = h5["mesh/coordinates"][...]
-    return fields, done.stdout
+    done = kd.run_kiln(kiln, os.path.join(inputs, deck + ".xml"), n_ranks, mpiexec, cwd=work)
+    return kd.read_step(done.results), done.log
 
 
 def gap_outputs(work, base, gap_ids, check, what):
@@ -172,18 +164,8 @@ def bonded_text(inputs):
 
 def run_deck(kiln, work, name, text, n_ranks, mpiexec, *args):
     """Runs the deck `text` as WORK/NAME.xml (extra kiln arguments `args`); its log."""
-    deck = os.path.join(work, name + ".xml")
-    with open(deck, "w", encoding="utf-8") as f:
-        f.write(text)
-    command = [kiln, deck, *args]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"{name}: exit {done.returncode}")
-    return done.stdout
+    deck = kd.write_deck(os.path.join(work, name), text)
+    return kd.run_kiln(kiln, deck, n_ranks, mpiexec, args, cwd=work).log
 
 
 def restarted_gaps(kiln, inputs, work, n_ranks, mpiexec, check):
