@@ -246,6 +246,19 @@ def results_file(deck, cwd=None):
 # Results
 
 
+class Checks:
+    """check(ok, what) prints "pass: what" or "FAIL: what" and counts the failures
+    (check.failed), so that a script reports every check before it exits."""
+
+    def __init__(self):
+        self.failed = 0
+
+    def __call__(self, ok, what):
+        print(f"{'pass' if ok else 'FAIL'}: {what}")
+        self.failed += not ok
+        return ok
+
+
 def step_names(h5):
     """The names of /steps in order of output."""
     return sorted(h5["steps"].keys())

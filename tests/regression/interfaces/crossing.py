@@ -219,12 +219,7 @@ def one_end_heated(kiln, inputs, work, n_ranks, mpiexec):
 
 def main():
     kiln, inputs, work, n_ranks, mpiexec = sys.argv[1:6]
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     two, log = run(kiln, inputs, work, "contact-box-crossing", n_ranks, mpiexec)
     check(two["time"] == 150.0 and len(two["x"]) == 180, f"crossing: {len(two['x'])} nodes")
@@ -279,7 +274,7 @@ def main():
           f"heated at face 1, 50 s: {q10:.6g} W across gap 10, {q12:.3g} W across gap 12")
     exodus_gaps(heated, [10, 12], column, check, "heated at face 1")
     restarted_gaps(kiln, inputs, work, n_ranks, mpiexec, check)
-    return 1 if failed else 0
+    return 1 if check.failed else 0
 
 
 if __name__ == "__main__":

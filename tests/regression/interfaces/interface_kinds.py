@@ -62,12 +62,7 @@ def last_step(results):
 def main():
     kiln, work, n_ranks, mpiexec = sys.argv[1:5]
     os.makedirs(work, exist_ok=True)
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     # 1. Bonded = uncut; Sliding leaves the x+ half free to slide: refused.
     runs = {}
@@ -120,7 +115,7 @@ def main():
     # accepted state's check of the open gap.
     check("rigid body" in out or "the gap is open where only contact held a body" in out,
           "Contact under tension: the open gap leaves the x+ half free (exit 2)")
-    return 1 if failed else 0
+    return 1 if check.failed else 0
 
 
 if __name__ == "__main__":

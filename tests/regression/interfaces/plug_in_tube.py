@@ -216,12 +216,7 @@ def errors(r, ex):
 def main():
     kiln, work, n_ranks, mpiexec = sys.argv[1:5]
     os.makedirs(work, exist_ok=True)
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     ex = exact()
     print(f"exact: p = {ex['pressure']:.6e} Pa, u(a) = {ex['u_a']:.6e} m, "
@@ -266,7 +261,7 @@ def main():
     check(du <= 1e-9 and dp <= 1e-9,
           f"level {n}: rollers as held components (Displacement, x on x = 0, y on y = 0, z on "
           f"z = 0, h) = Normal Displacement, displacements to {du:.3g}, pressures to {dp:.3g}")
-    sys.exit(1 if failed else 0)
+    sys.exit(1 if check.failed else 0)
 
 
 if __name__ == "__main__":
