@@ -209,11 +209,13 @@ Run = namedtuple("Run", "deck results log returncode")
 
 
 def run_kiln(kiln, deck, n_ranks=1, mpiexec=None, args=(), cwd=None, expect=0, log=None):
-    """Runs kiln on the deck file on n_ranks ranks: under `mpiexec -np N` when mpiexec is
-    given, else kiln alone (then n_ranks must be 1). stdout and stderr together are the log
-    (also written to the file `log` if given). Stops the script (exit 1, the log's end
-    printed) unless kiln exits with `expect` (None: any status, the caller checks). Returns Run(deck, results, log, returncode);
-    results: the HDF5 file of the deck's File Base, read from the deck (relative to cwd)."""
+    """Runs kiln on the deck file (then `args`, e.g. ["--restart", FILE]) on n_ranks ranks:
+    under `mpiexec -np N` when mpiexec is given, else kiln alone (then n_ranks must be 1), in
+    the environment of mpi_environment(). stdout and stderr together are the log (also
+    written to the file `log` if given). Stops the script (exit 1, the last 6000 characters
+    of the log printed) unless kiln exits with `expect` (None: any status, the caller
+    checks). Returns Run(deck, results, log, returncode); results: the HDF5 file of the
+    deck's Output/File Base, read from the deck (relative to cwd)."""
     command = [kiln, str(deck), *map(str, args)]
     if mpiexec:
         command = [mpiexec, "-np", str(n_ranks)] + command
