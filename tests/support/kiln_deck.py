@@ -130,15 +130,14 @@ def _floats(values):
     return [float(v) for v in values] if isinstance(values, (list, tuple)) else float(values)
 
 
-def _condition(kind, side_sets, **more):
-    return {"Type": kind, "Side Sets": list(side_sets),
-            **{k: v for k, v in more.items() if v is not None}}
+def _condition(kind, side_sets):
+    return {"Type": kind, "Side Sets": [int(s) for s in side_sets]}
 
 
 def displacement(side_sets, components, value=None):
     """Type "Displacement": the components held (to 0 without a value sublist)."""
-    return {**_condition("Displacement", side_sets, Components=list(components)),
-            **({} if value is None else {"Displacement": value})}
+    condition = {**_condition("Displacement", side_sets), "Components": list(components)}
+    return condition if value is None else {**condition, "Displacement": value}
 
 
 def normal_displacement(side_sets, value=None):
