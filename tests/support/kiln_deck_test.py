@@ -10,6 +10,7 @@ import os
 import sys
 import tempfile
 import unittest
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import h5py
@@ -19,38 +20,44 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 
+def parsed(text):
+    """{path: (type, value)} of every Parameter of the XML text, in the order of the text."""
+    found = {}
+
+    def walk(element, path):
+        for child in element:
+            name = path + child.get("name")
+            if child.tag == "ParameterList":
+                walk(child, name + "/")
+            else:
+                found[name] = (child.get("type"), child.get("value"))
+    walk(ET.fromstring(text), "")
+    return found
+
+
 class Xml(unittest.TestCase):
+    def test_nesting(self):
+        self.assertEqual(kd.xml({"L": {"B": True}}, "K"), '<ParameterList name="K">\n'
+                         '  <ParameterList name="L">\n'
+                         '    <Parameter name="B" type="bool" value="true"/>\n'
+                         '  </ParameterList>\n</ParameterList>\n')
+
     def test_deck(self):
-        deck = {"Physics": "Elasticity", "Steps": 3, "Flag": True,
+        deck = {"Physics": "Elasticity", "Steps": 3, "Flag": False,
                 "Mesh": kd.box_mesh((1, 2, 0.5), (2, 2, 1), 10, cell_type="HEX27", phi=45),
                 "BC": {"rollers": kd.displacement([1, 3], "xz", kd.expression("1e-3*x"))}}
-        self.assertEqual(kd.xml(deck), """<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Elasticity"/>
-  <Parameter name="Steps" type="int" value="3"/>
-  <Parameter name="Flag" type="bool" value="true"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{1, 2, 0.5}"/>
-      <Parameter name="Cells" type="Array(int)" value="{2, 2, 1}"/>
-      <Parameter name="Cell Type" type="string" value="HEX27"/>
-      <Parameter name="Phi" type="double" value="45"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="BC">
-    <ParameterList name="rollers">
-      <Parameter name="Type" type="string" value="Displacement"/>
-      <Parameter name="Side Sets" type="Array(int)" value="{1, 3}"/>
-      <Parameter name="Components" type="Array(string)" value="{x, z}"/>
-      <ParameterList name="Displacement">
-        <Parameter name="Type" type="string" value="Expression"/>
-        <Parameter name="Expression" type="string" value="1e-3*x"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-""")
+        self.assertEqual(parsed(kd.xml(deck)), {
+            "Physics": ("string", "Elasticity"), "Steps": ("int", "3"),
+            "Flag": ("bool", "false"), "Mesh/Type": ("string", "Box"),
+            "Mesh/Gap Side Set": ("int", "10"),
+            "Mesh/Box/Size": ("Array(double)", "{1, 2, 0.5}"),
+            "Mesh/Box/Cells": ("Array(int)", "{2, 2, 1}"),
+            "Mesh/Box/Cell Type": ("string", "HEX27"), "Mesh/Box/Phi": ("double", "45"),
+            "BC/rollers/Type": ("string", "Displacement"),
+            "BC/rollers/Side Sets": ("Array(int)", "{1, 3}"),
+            "BC/rollers/Components": ("Array(string)", "{x, z}"),
+            "BC/rollers/Displacement/Type": ("string", "Expression"),
+            "BC/rollers/Displacement/Expression": ("string", "1e-3*x")})
 
     def test_doubles_read_back(self):
         for value in (0.1, 5.2e10, 1e-12, -0.19999999999999998, 2.0 / 3.0, 298.0, 2.3e-05):
@@ -75,14 +82,9 @@ class Derived(unittest.TestCase):
     def test_set_and_add(self):
         text = kd.set_parameter(self.TEXT, "Times", [0, 50])
         text = kd.add_parameters(text, "Output", {"File Base": "a/b", "Every Steps": 1})
-        self.assertEqual(text, """<ParameterList name="Kiln">
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="a/b"/>
-    <Parameter name="Every Steps" type="int" value="1"/>
-    <Parameter name="Times" type="Array(double)" value="{0, 50}"/>
-  </ParameterList>
-</ParameterList>
-""")
+        self.assertEqual(list(parsed(text).items()), [
+            ("Output/File Base", ("string", "a/b")), ("Output/Every Steps", ("int", "1")),
+            ("Output/Times", ("Array(double)", "{0, 50}"))])
 
     def test_refused(self):
         with self.assertRaisesRegex(SystemExit, "0 parameters 'Method', expected 1"):
