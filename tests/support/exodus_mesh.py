@@ -1,6 +1,7 @@
 """Writes small Exodus II meshes for tests with scipy.io.netcdf (netCDF classic, no Exodus
 library): the one writer of tests/cli/scipy_exodus.py, tests/input_errors/meshes/
-make_mixed_exodus.py and tests/regression/interfaces/plug_in_tube.py.
+make_mixed_exodus.py, tests/regression/interfaces/plug_in_tube.py and
+doc/verification/truchas/refine_ring_mesh.py.
 
 Import it from a test script beside tests/support/:
     sys.path.insert(0, str(Path(__file__).resolve().parents[N] / "support"))

@@ -19,13 +19,15 @@ Exit status 0 when all hold; 1 with the reason otherwise.
 """
 import os
 import re
-import subprocess
 import sys
 import tempfile
+from pathlib import Path
 
-import h5py
 import numpy as np
 from paraview import servermanager, simple
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 # VTK cell type numbers (vtkCellType.h).
 VTK = {"TETRA4": 10, "HEX8": 12, "WEDGE6": 13, "PYRAMID5": 14, "TETRA10": 24, "HEX20": 25,
@@ -56,33 +58,17 @@ def fail(message):
 def make_deck(inputs, shared, deck, changes, base):
     text = open(os.path.join(os.path.dirname(inputs), deck)).read()
     text = text.replace("../shared/", shared.rstrip("/") + "/")
-    output = ('<ParameterList name="Output">\n'
-              '    <Parameter name="Format" type="string" value="HDF5 and Exodus"/>\n'
-              f'    <Parameter name="File Base" type="string" value="{base}"/>')
-    text = text.replace('<ParameterList name="Output">', output, 1)
+    text = kd.add_parameters(text, "Output", {"Format": "HDF5 and Exodus", "File Base": base})
     # The box decks end at 50 s (the first output time after 0): enough to have fields.
     text = re.sub(r'(<ParameterList name="Output">.*?name="Times" type="Array\(double\)" '
                   r'value=")\{0, 50[^"]*\}', r"\g<1>{0, 50}", text, count=1, flags=re.S)
     for key, value in changes.items():
         # A Box parameter the deck gives is replaced, another one added.
-        text, n = re.subn(rf'(<Parameter name="{key}" type="[^"]*" value=")[^"]*"', rf'\g<1>{value}"',
-                          text, count=1)
-        if n == 0:
-            text, n = re.subn(r'(<ParameterList name="Box">)',
-                              rf'\1\n      <Parameter name="{key}" type="string" value="{value}"/>',
-                              text, count=1)
-        if n != 1:
-            fail(f"{deck} has no Box list to set {key} in")
-    path = base + ".xml"
-    open(path, "w").write(text)
-    return path
-
-
-def without_singleton_mpi(environment):
-    """pvpython starts as an MPI singleton: its variables would make mpiexec's kiln fail."""
-    singleton = ("PMIX_", "OMPI_COMMAND", "OMPI_ARGV", "OMPI_APP_CTX_", "OMPI_MCA_ess",
-                 "OMPI_MCA_orte_", "OMPI_MCA_pmix")
-    return {k: v for k, v in environment.items() if not k.startswith(singleton)}
+        if f'<Parameter name="{key}" ' in text:
+            text = kd.set_parameter(text, key, value)
+        else:
+            text = kd.add_parameters(text, "Box", {key: value})
+    return kd.write_deck(base, text)
 
 
 def pieces(data):
@@ -196,15 +182,8 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         base = os.path.join(folder, case)
         path = make_deck(inputs, shared, deck, changes, base)
-        run = subprocess.run([mpiexec, "-np", "2", kiln, path], capture_output=True, text=True,
-                             env=without_singleton_mpi(os.environ))
-        if run.returncode != 0:
-            fail(f"kiln failed ({run.returncode}):\n{run.stdout[-2000:]}{run.stderr[-2000:]}")
-
-        with h5py.File(base + ".h5", "r") as h5:
-            last = sorted(h5["steps"].keys())[-1]
-            time = float(h5["steps"][last].attrs["time"])
-            displacement = np.array(h5["steps"][last]["displacement"])
+        state = kd.read_step(kd.run_kiln(kiln, path, 2, mpiexec).results)
+        time, displacement = state["time"], state["displacement"]
 
         xdmf = simple.XDMFReader(FileNames=[base + ".xmf"])
         xdmf.UpdatePipelineInformation()

@@ -11,13 +11,16 @@ r = 0.0254 m) and 4 (the outer radius, r = 0.0508 m) radially onto their cylinde
 refined meshes approach the true geometry (the coarse mesh's facets are chords). Moving along
 the radius keeps a node of the planes x = 0 and y = 0 in its plane. Blocks and side sets are
 carried to the children (a face of a side set becomes its 4 children's faces of the same side
-number). Written as an Exodus II (netCDF, 64-bit offset) file with the variables Kiln's reader
-needs.
+number). Written by tests/support/exodus_mesh.py.
 """
 import sys
+from pathlib import Path
 
 import numpy as np
 from scipy.io import netcdf_file
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "tests" / "support"))
+import exodus_mesh  # noqa: E402  (tests/support/exodus_mesh.py)
 
 # Exodus HEX8 sides as (axis, end) of the reference cube: side 1 eta = -1, 2 xi = +1,
 # 3 eta = +1, 4 xi = -1, 5 zeta = -1, 6 zeta = +1.
@@ -115,53 +118,9 @@ def read(path):
 
 
 def write(path, x, blocks, sides):
-    f = netcdf_file(path, "w", version=2)
-    f.api_version = np.float32(8.03)
-    f.version = np.float32(8.03)
-    f.floating_point_word_size = np.int32(8)
-    f.file_size = np.int32(1)
-    f.maximum_name_length = np.int32(32)
-    f.int64_status = np.int32(0)
-    f.title = b"refine_ring_mesh.py"
-    f.createDimension("time_step", None)  # scipy: the unlimited dimension first
-    f.createDimension("len_string", 33)
-    f.createDimension("len_name", 256)
-    f.createDimension("four", 4)
-    f.createDimension("num_dim", 3)
-    f.createDimension("num_nodes", len(x))
-    n_elem = sum(len(c) for c in blocks.values())
-    f.createDimension("num_elem", n_elem)
-    f.createDimension("num_el_blk", len(blocks))
-    f.createDimension("num_side_sets", len(sides))
-    f.createVariable("time_whole", "d", ("time_step",))
-    v = f.createVariable("eb_status", "i", ("num_el_blk",))
-    v[:] = 1
-    v = f.createVariable("eb_prop1", "i", ("num_el_blk",))
-    v[:] = sorted(blocks)
-    v.name = b"ID"
-    v = f.createVariable("ss_status", "i", ("num_side_sets",))
-    v[:] = 1
-    v = f.createVariable("ss_prop1", "i", ("num_side_sets",))
-    v[:] = sorted(sides)
-    v.name = b"ID"
-    for c, d in zip(("coordx", "coordy", "coordz"), range(3)):
-        v = f.createVariable(c, "d", ("num_nodes",))
-        v[:] = x[:, d]
-    for i, b in enumerate(sorted(blocks)):
-        f.createDimension(f"num_el_in_blk{i + 1}", len(blocks[b]))
-        f.createDimension(f"num_nod_per_el{i + 1}", 8)
-        v = f.createVariable(f"connect{i + 1}", "i",
-                             (f"num_el_in_blk{i + 1}", f"num_nod_per_el{i + 1}"))
-        v[:] = blocks[b] + 1
-        v.elem_type = b"HEX8"
-    for i, s in enumerate(sorted(sides)):
-        faces = np.array(sides[s])
-        f.createDimension(f"num_side_ss{i + 1}", len(faces))
-        v = f.createVariable(f"elem_ss{i + 1}", "i", (f"num_side_ss{i + 1}",))
-        v[:] = faces[:, 0] + 1
-        v = f.createVariable(f"side_ss{i + 1}", "i", (f"num_side_ss{i + 1}",))
-        v[:] = faces[:, 1]
-    f.close()
+    exodus_mesh.write(path, x, [(b, "HEX8", blocks[b] + 1) for b in sorted(blocks)],
+                      [(s, [e + 1 for e, _ in sides[s]], [side for _, side in sides[s]])
+                       for s in sorted(sides)], title="refine_ring_mesh.py")
 
 
 def main():

@@ -11,32 +11,23 @@ EXPECT = "undershoot", if some temperature is below LOWER (the consistent capaci
 undershoot, which shows that the check can fail).
 """
 import os
-import re
-import subprocess
 import sys
+from pathlib import Path
 
 import h5py
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 
 def derived_deck(deck, work, capacity, method):
     with open(deck, encoding="utf-8") as f:
         xml = f.read()
     base = os.path.join(work, f"shock-{capacity}-{method.replace(' ', '-')}")
-    xml, n = re.subn(r'(<Parameter name="Initial Temperature" type="double" value="[^"]*"/>)',
-                     r'\1\n    <Parameter name="Capacity" type="string" value="' + capacity + '"/>',
-                     xml)
-    assert n == 1, "no Thermal/Initial Temperature in the deck"
-    xml, n = re.subn(r'(<Parameter name="Method" type="string" value=")[^"]*"',
-                     r'\g<1>' + method + '"', xml)
-    assert n == 1, "no Time Stepping/Method in the deck"
-    xml = xml.replace('<ParameterList name="Output">',
-                      '<ParameterList name="Output">\n    <Parameter name="File Base" '
-                      f'type="string" value="{base}"/>\n    <Parameter name="Every Steps" '
-                      'type="int" value="1"/>', 1)
-    path = base + ".xml"
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(xml)
-    return path, base
+    xml = kd.add_parameters(xml, "Thermal", {"Capacity": capacity})
+    xml = kd.set_parameter(xml, "Method", method)
+    xml = kd.add_parameters(xml, "Output", {"File Base": base, "Every Steps": 1})
+    return kd.write_deck(base, xml), base
 
 
 def main():
@@ -45,7 +36,7 @@ def main():
     expect = sys.argv[8] if len(sys.argv) > 8 else "bounded"
     os.makedirs(work, exist_ok=True)
     path, base = derived_deck(deck, work, capacity, method)
-    subprocess.run([kiln, path], check=True, stdout=subprocess.DEVNULL)
+    kd.run_kiln(kiln, path)
     low, high, n_steps = float("inf"), float("-inf"), 0
     with h5py.File(base + ".h5", "r") as h5:
         for name, step in h5["steps"].items():

@@ -36,29 +36,21 @@ Usage: crossing.py KILN INPUTS_DIR WORK_DIR NP MPIEXEC
 """
 import os
 import re
-import subprocess
 import sys
+from pathlib import Path
 
 import h5py
 import numpy as np
 from scipy.io import netcdf_file
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
+
+
 def run(kiln, inputs, work, deck, n_ranks, mpiexec):
     os.makedirs(work, exist_ok=True)
-    command = [kiln, os.path.join(inputs, deck + ".xml")]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"{deck}: exit {done.returncode}")
-    with h5py.File(os.path.join(work, "results", deck + ".h5"), "r") as h5:
-        last = h5["steps"][sorted(h5["steps"].keys())[-1]]
-        fields = {k: last[k][...] for k in last.keys()}
-        fields["time"] = float(last.attrs["time"])
-        fields["x"] = h5["mesh/coordinates"][...]
-    return fields, done.stdout
+    done = kd.run_kiln(kiln, os.path.join(inputs, deck + ".xml"), n_ranks, mpiexec, cwd=work)
+    return kd.read_step(done.results), done.log
 
 
 def gap_outputs(work, base, gap_ids, check, what):
@@ -172,18 +164,8 @@ def bonded_text(inputs):
 
 def run_deck(kiln, work, name, text, n_ranks, mpiexec, *args):
     """Runs the deck `text` as WORK/NAME.xml (extra kiln arguments `args`); its log."""
-    deck = os.path.join(work, name + ".xml")
-    with open(deck, "w", encoding="utf-8") as f:
-        f.write(text)
-    command = [kiln, deck, *args]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"{name}: exit {done.returncode}")
-    return done.stdout
+    deck = kd.write_deck(os.path.join(work, name), text)
+    return kd.run_kiln(kiln, deck, n_ranks, mpiexec, args, cwd=work).log
 
 
 def restarted_gaps(kiln, inputs, work, n_ranks, mpiexec, check):
@@ -237,12 +219,7 @@ def one_end_heated(kiln, inputs, work, n_ranks, mpiexec):
 
 def main():
     kiln, inputs, work, n_ranks, mpiexec = sys.argv[1:6]
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     two, log = run(kiln, inputs, work, "contact-box-crossing", n_ranks, mpiexec)
     check(two["time"] == 150.0 and len(two["x"]) == 180, f"crossing: {len(two['x'])} nodes")
@@ -297,7 +274,7 @@ def main():
           f"heated at face 1, 50 s: {q10:.6g} W across gap 10, {q12:.3g} W across gap 12")
     exodus_gaps(heated, [10, 12], column, check, "heated at face 1")
     restarted_gaps(kiln, inputs, work, n_ranks, mpiexec, check)
-    return 1 if failed else 0
+    return 1 if check.failed else 0
 
 
 if __name__ == "__main__":

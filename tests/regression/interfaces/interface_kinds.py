@@ -17,107 +17,52 @@ The box 0.04 m cube, 4 x 4 x 4 cells, rotated (phi 45, theta -30), cut at its mi
    the run must stop with that error (exit 2), not give an answer.
 """
 import os
-import subprocess
 import sys
+from pathlib import Path
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 TRACTION = 1.0e6
 
 
 def deck(base, gap, kind, conditions):
-    contact = "" if gap == 0 else f"""    <ParameterList name="Contact">
-      <Parameter name="Kind" type="string" value="{kind}"/>
-    </ParameterList>
-"""
-    return f"""<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="{gap}"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{{0.04, 0.04, 0.04}}"/>
-      <Parameter name="Cells" type="Array(int)" value="{{4, 4, 4}}"/>
-      <Parameter name="Phi" type="double" value="45"/>
-      <Parameter name="Theta" type="double" value="-30"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Lame Lambda" type="double" value="5.2e10"/>
-    <Parameter name="Shear Modulus" type="double" value="2.6e10"/>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-{conditions}    </ParameterList>
-{contact}  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Absolute Tolerance" type="double" value="1e-11"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="{base}"/>
-    <Parameter name="Times" type="Array(double)" value="{{0, 1}}"/>
-  </ParameterList>
-</ParameterList>
-"""
+    mechanics = {"Boundary Conditions": conditions}
+    if gap != 0:
+        mechanics["Contact"] = {"Kind": kind}
+    return {"Physics": "Elasticity",
+            "Mesh": kd.box_mesh((0.04, 0.04, 0.04), (4, 4, 4), gap, phi=45, theta=-30),
+            "Material": kd.lame(5.2e10, 2.6e10),
+            "Mechanics": mechanics,
+            "Solver": {"Absolute Tolerance": 1e-11},
+            "Output": {"File Base": base, "Times": [0.0, 1.0]}}
 
 
-CLAMPED_AND_SHEARED = """      <ParameterList name="clamped">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1}"/>
-        <Parameter name="Components" type="Array(string)" value="{x, y, z}"/>
-      </ParameterList>
-      <ParameterList name="pulled and sheared">
-        <Parameter name="Type" type="string" value="Traction"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{2}"/>
-        <Parameter name="Traction" type="Array(double)" value="{1e6, 4e5, -3e5}"/>
-      </ParameterList>
-"""
+CLAMPED_AND_SHEARED = {"clamped": kd.displacement([1], "xyz"),
+                       "pulled and sheared": kd.traction([2], (1e6, 4e5, -3e5))}
 
-ROLLERS_AND_TENSION = f"""      <ParameterList name="rollers">
-        <Parameter name="Type" type="string" value="Normal Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{1, 3, 5}}"/>
-      </ParameterList>
-      <ParameterList name="tension">
-        <Parameter name="Type" type="string" value="Pressure"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{2}}"/>
-        <ParameterList name="Pressure">
-          <Parameter name="Value" type="double" value="{-TRACTION}"/>
-        </ParameterList>
-      </ParameterList>
-"""
+ROLLERS_AND_TENSION = {"rollers": kd.normal_displacement([1, 3, 5]),
+                       "tension": kd.pressure([2], -TRACTION)}
 
 
 def run(kiln, work, name, text, n_ranks, mpiexec, expect=0):
+    """Runs the deck text(base) as WORK/NAME.xml; (its results file, its log)."""
     base = os.path.join(work, name)
-    with open(base + ".xml", "w", encoding="utf-8") as f:
-        f.write(text(base))
-    command = [kiln, base + ".xml"]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if done.returncode != expect:
-        print(done.stdout)
-        raise SystemExit(f"{name}: exit {done.returncode}, expected {expect}")
-    return base, done.stdout
+    done = kd.run_kiln(kiln, kd.write_deck(base, text(base)), n_ranks, mpiexec, expect=expect)
+    return done.results, done.log
 
 
-def last_step(base):
-    with h5py.File(base + ".h5", "r") as h5:
-        step = h5["steps"][sorted(h5["steps"].keys())[-1]]
-        fields = {k: step[k][...] for k in step.keys()}
-        return h5["mesh/coordinates"][...], fields
+def last_step(results):
+    state = kd.read_step(results)
+    return state["x"], state
 
 
 def main():
     kiln, work, n_ranks, mpiexec = sys.argv[1:5]
     os.makedirs(work, exist_ok=True)
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     # 1. Bonded = uncut; Sliding leaves the x+ half free to slide: refused.
     runs = {}
@@ -170,7 +115,7 @@ def main():
     # accepted state's check of the open gap.
     check("rigid body" in out or "the gap is open where only contact held a body" in out,
           "Contact under tension: the open gap leaves the x+ half free (exit 2)")
-    return 1 if failed else 0
+    return 1 if check.failed else 0
 
 
 if __name__ == "__main__":

@@ -40,15 +40,14 @@ Checks, on meshes with 2n segments on the quarter circle, n = 2, 4, 8 (written h
 """
 import math
 import os
-import subprocess
 import sys
 from pathlib import Path
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
 import exodus_mesh  # noqa: E402  (tests/support/exodus_mesh.py)
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 A, B, H = 0.01, 0.02, 0.0025  # plug radius, tube outer radius, height [m]
 LAMBDA, G, ALPHA, DT, T_REF = 5.2e10, 2.6e10, 2.2e-5, 10.0, 298.0
@@ -148,80 +147,27 @@ def write_mesh(n, path):
                       title=f"plug in tube, level {n}")
 
 
-NORMAL_ROLLERS = f"""      <ParameterList name="symmetry and plane strain rollers">
-        <Parameter name="Type" type="string" value="Normal Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{X0}, {Y0}, {Z0}, {ZH}}}"/>
-      </ParameterList>
-"""
+NORMAL_ROLLERS = {"symmetry and plane strain rollers": kd.normal_displacement([X0, Y0, Z0, ZH])}
 
-COMPONENT_ROLLERS = "".join(f"""      <ParameterList name="{c} held">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{sets}}}"/>
-        <Parameter name="Components" type="Array(string)" value="{{{c}}}"/>
-      </ParameterList>
-""" for c, sets in (("x", X0), ("y", Y0), ("z", f"{Z0}, {ZH}")))
+COMPONENT_ROLLERS = {f"{c} held": kd.displacement(sets, c)
+                     for c, sets in (("x", [X0]), ("y", [Y0]), ("z", [Z0, ZH]))}
 
 
 def deck(mesh, base, kind, rollers):
-    return f"""<ParameterList name="Kiln">
-  <Parameter name="Problem Name" type="string" value="plug in tube"/>
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Exodus"/>
-    <Parameter name="Gap Side Set" type="int" value="{GAP}"/>
-    <ParameterList name="Exodus">
-      <Parameter name="File" type="string" value="{mesh}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Lame Lambda" type="double" value="{LAMBDA}"/>
-    <Parameter name="Shear Modulus" type="double" value="{G}"/>
-    <Parameter name="Thermal Expansion" type="double" value="{ALPHA}"/>
-    <Parameter name="Reference Temperature" type="double" value="{T_REF}"/>
-    <Parameter name="Density" type="double" value="2.7e3"/>
-    <Parameter name="Specific Heat" type="double" value="9.0e2"/>
-    <ParameterList name="Conductivity">
-      <Parameter name="Type" type="string" value="Constant"/>
-      <Parameter name="Value" type="double" value="2.4e2"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Gap Conductance" type="double" value="0"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="plug heated">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{PLUG_Z0}}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_REF + DT}"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="tube at the reference">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{OUTER}}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{T_REF}"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-{rollers}    </ParameterList>
-    <ParameterList name="Contact">
-      <Parameter name="Kind" type="string" value="{kind}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Absolute Tolerance" type="double" value="1e-9"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="{base}"/>
-  </ParameterList>
-</ParameterList>
-"""
+    return {"Problem Name": "plug in tube",
+            "Physics": "Thermo-Elasticity",
+            "Mesh": kd.exodus_mesh(mesh, GAP),
+            "Material": {**kd.lame(LAMBDA, G), "Thermal Expansion": ALPHA,
+                         "Reference Temperature": T_REF, "Density": 2.7e3,
+                         "Specific Heat": 9.0e2,
+                         "Conductivity": {"Type": "Constant", "Value": 2.4e2}},
+            "Thermal": {"Gap Conductance": 0.0, "Boundary Conditions": {
+                "plug heated": kd.temperature([PLUG_Z0], T_REF + DT),
+                "tube at the reference": kd.temperature([OUTER], T_REF)}},
+            "Mechanics": {"Boundary Conditions": rollers, "Contact": {"Kind": kind}},
+            "Time Stepping": {"Method": "Steady"},
+            "Solver": {"Absolute Tolerance": 1e-9},
+            "Output": {"File Base": base}}
 
 
 def run(kiln, work, n, kind, n_ranks, mpiexec, rollers=NORMAL_ROLLERS):
@@ -231,24 +177,12 @@ def run(kiln, work, n, kind, n_ranks, mpiexec, rollers=NORMAL_ROLLERS):
         write_mesh(n, mesh)
     name = "" if rollers is NORMAL_ROLLERS else "-components"
     base = os.path.join(work, f"plug-in-tube-{n}-{kind}{name}")
-    with open(base + ".xml", "w", encoding="utf-8") as f:
-        f.write(deck(mesh, base, kind, rollers))
-    command = [kiln, base + ".xml"]
-    if int(n_ranks) > 1:
-        command = [mpiexec, "-np", n_ranks] + command
-    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if done.returncode != 0:
-        print(done.stdout)
-        raise SystemExit(f"level {n}, {kind}: exit {done.returncode}")
-    with h5py.File(base + ".h5", "r") as h5:
-        key = sorted(h5["steps"].keys())[-1]
-        step = h5["steps"][key]
-        return {"x": h5["mesh/coordinates"][...], "cells": h5["mesh/connectivity"][...],
-                "block": h5["mesh/block_id"][...], "u": step["displacement"][...],
-                "stress": step["stress"][...], "node_a": h5["gap/node_a"][...],
-                "node_b": h5["gap/node_b"][...],
-                "pressure": h5["gap/steps"][key]["contact_pressure"][...],
-                "active": h5["gap/steps"][key]["contact_active"][...]}
+    done = kd.run_kiln(kiln, kd.write_deck(base, deck(mesh, base, kind, rollers)), n_ranks,
+                       mpiexec)
+    r = kd.read_step(done.results)
+    return {"x": r["x"], "cells": r["cells"], "block": r["block"], "u": r["displacement"],
+            "stress": r["stress"], "node_a": r["gap/node_a"], "node_b": r["gap/node_b"],
+            "pressure": r["gap/contact_pressure"], "active": r["gap/contact_active"]}
 
 
 def hoop_at_b(r):
@@ -282,12 +216,7 @@ def errors(r, ex):
 def main():
     kiln, work, n_ranks, mpiexec = sys.argv[1:5]
     os.makedirs(work, exist_ok=True)
-    failed = 0
-
-    def check(ok, what):
-        nonlocal failed
-        print(f"{'pass' if ok else 'FAIL'}: {what}")
-        failed += not ok
+    check = kd.Checks()
 
     ex = exact()
     print(f"exact: p = {ex['pressure']:.6e} Pa, u(a) = {ex['u_a']:.6e} m, "
@@ -332,7 +261,7 @@ def main():
     check(du <= 1e-9 and dp <= 1e-9,
           f"level {n}: rollers as held components (Displacement, x on x = 0, y on y = 0, z on "
           f"z = 0, h) = Normal Displacement, displacements to {du:.3g}, pressures to {dp:.3g}")
-    sys.exit(1 if failed else 0)
+    sys.exit(1 if check.failed else 0)
 
 
 if __name__ == "__main__":

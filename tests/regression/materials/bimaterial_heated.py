@@ -18,13 +18,14 @@ dT = 100 K). With M = lambda + 2G and beta = (3 lambda + 2G) alpha of each mater
   u_x = eps_1 (x + 0.1) in block 1, eps_1 0.1 + eps_2 x in block 2.
 The fields are piecewise linear, so every cell type is exact: errors to 1e-9 of the largest.
 """
-import os
-import subprocess
 import sys
 import tempfile
+from pathlib import Path
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 MATERIALS = {  # E [Pa], nu, alpha [1/K]
     "aluminium": (70e9, 0.33, 23e-6),
@@ -38,66 +39,21 @@ def lame(E, nu):
 
 
 def deck(base, walls, rollers):
-    materials = ""
-    for block, (name, (E, nu, alpha)) in enumerate(MATERIALS.items(), start=1):
-        materials += f"""
-    <ParameterList name="{name}">
-      <Parameter name="Blocks" type="Array(int)" value="{{{block}}}"/>
-      <Parameter name="Young's Modulus" type="double" value="{E}"/>
-      <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
-      <Parameter name="Thermal Expansion" type="double" value="{alpha}"/>
-      <Parameter name="Reference Temperature" type="double" value="298"/>
-      <Parameter name="Density" type="double" value="3000"/>
-      <Parameter name="Specific Heat" type="double" value="700"/>
-      <Parameter name="Conductivity" type="double" value="100"/>
-    </ParameterList>"""
-    conditions = ""
-    for name, (sets, component) in {**walls, **rollers}.items():
-        conditions += f"""
-      <ParameterList name="{name}">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{{', '.join(map(str, sets))}}}"/>
-        <Parameter name="Components" type="Array(string)" value="{{{component}}}"/>
-      </ParameterList>"""
-    return f"""<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{{0.2, 1, 0.1}}"/>
-      <Parameter name="Cells" type="Array(int)" value="{{4, 5, 2}}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">{materials}
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="{298 + DT}"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="held">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{{1, 2, 3, 4, 5, 6}}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="{298 + DT}"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">{conditions}
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="{base}"/>
-  </ParameterList>
-</ParameterList>
-"""
+    materials = {name: {"Blocks": [block], **kd.young(E, nu), "Thermal Expansion": alpha,
+                        "Reference Temperature": 298.0, "Density": 3000.0,
+                        "Specific Heat": 700.0, "Conductivity": 100.0}
+                 for block, (name, (E, nu, alpha)) in enumerate(MATERIALS.items(), start=1)}
+    conditions = {name: kd.displacement(sets, component)
+                  for name, (sets, component) in {**walls, **rollers}.items()}
+    return {"Physics": "Thermo-Elasticity",
+            "Mesh": kd.box_mesh((0.2, 1, 0.1), (4, 5, 2)),
+            "Materials": materials,
+            "Thermal": {"Initial Temperature": 298 + DT, "Boundary Conditions": {
+                "held": kd.temperature([1, 2, 3, 4, 5, 6], 298 + DT)}},
+            "Mechanics": {"Boundary Conditions": conditions},
+            "Time Stepping": {"Method": "Steady"},
+            "Solver": {"Relative Tolerance": 1e-12},
+            "Output": {"File Base": base}}
 
 
 def exact(case, x):
@@ -132,20 +88,10 @@ def main():
         walls = {"walls": ((3, 4), "y")}
         rollers = {"rollers z": ((5, 6), "z"), "roller x": ((1,), "x")}
     with tempfile.TemporaryDirectory() as folder:
-        base = os.path.join(folder, case)
-        with open(base + ".xml", "w") as f:
-            f.write(deck(base, walls, rollers))
-        run = subprocess.run([mpiexec, "-np", n_ranks, kiln, base + ".xml"], capture_output=True,
-                             text=True)
-        if run.returncode != 0:
-            print(f"bimaterial_heated: kiln failed:\n{run.stdout[-3000:]}{run.stderr[-3000:]}")
-            return 1
-        with h5py.File(base + ".h5", "r") as h5:
-            x = np.array(h5["mesh/coordinates"])
-            block = np.array(h5["mesh/block_id"])
-            step = h5["steps"][sorted(h5["steps"].keys())[-1]]
-            u = np.array(step["displacement"])
-            stress = np.array(step["stress"])
+        base = str(Path(folder) / case)
+        run = kd.run_kiln(kiln, kd.write_deck(base, deck(base, walls, rollers)), n_ranks, mpiexec)
+        state = kd.read_step(run.results)
+    x, block, u, stress = state["x"], state["block"], state["displacement"], state["stress"]
     u_exact, stress_exact = exact(case, x)
     u_error = np.abs(u - u_exact).max() / np.abs(u_exact).max()
     # The results' tensor order is xx yy zz xy yz xz (doc/output-format.md).

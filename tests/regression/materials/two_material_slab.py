@@ -12,32 +12,28 @@ capacity"; doc/materials.md, "Materials and blocks"):
   with the run that never stopped bit for bit (kiln-diff --rel 0: the past temperatures of
   the enthalpy come back with the checkpoint's x_n, x_{n-1}).
 usage: two_material_slab.py KILN STEADY_DECK ENERGY_DECK WORKDIR NP MPIEXEC KILN_DIFF"""
-import os
 import subprocess
 import sys
 from pathlib import Path
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 kiln, steady_deck, energy_deck, work, np_, mpiexec, kiln_diff = sys.argv[1:8]
 work = Path(work)
 work.mkdir(parents=True, exist_ok=True)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
 failures = []
 
 
 def run(deck, *args):
-    subprocess.run([mpiexec, "-np", np_, kiln, str(deck), *args], cwd=work, env=env, check=True)
+    return kd.run_kiln(kiln, deck, np_, mpiexec, args, cwd=work)
 
 
 # Steady: piecewise linear, k = 100 on x < 0, 50 on x > 0.
-run(steady_deck)
-with h5py.File(work / "results" / "two-material-slab.h5", "r") as h5:
-    x = h5["mesh/coordinates"][...]
-    step = h5["steps"][sorted(h5["steps"].keys())[-1]]
-    T = step["temperature"][...].reshape(-1)
+state = kd.read_step(run(steady_deck).results)
+x, T = state["x"], state["temperature"].reshape(-1)
 T_interface = 300.0 + 100.0 / 3.0
 exact = np.where(x[:, 0] <= 0.0, T_interface + (T_interface - 300.0) * x[:, 0],
                  T_interface + (400.0 - T_interface) * x[:, 0])

@@ -16,14 +16,15 @@ usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
   elastic       the same bar, linear elastic (no Model), under a traction growing in time:
                 the Jacobian is constant and kept in every step after the first.
 """
-import os
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 case, kiln, deck, work, n_ranks, mpiexec = sys.argv[1:7]
 work = Path(work) / case
@@ -41,15 +42,11 @@ def fail(message, log=""):
 
 def run(body, name):
     (work / f"{name}.xml").write_text(body)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_rmaps_base_oversubscribe="1")
-    done = subprocess.run([mpiexec, "-np", n_ranks, kiln, f"{name}.xml"], cwd=work, env=env,
-                          capture_output=True, text=True)
-    log = done.stdout + done.stderr
-    (work / f"{name}.log").write_text(log)
+    done = kd.run_kiln(kiln, f"{name}.xml", n_ranks, mpiexec, cwd=work, expect=None,
+                       log=work / f"{name}.log")
     if done.returncode != 0:
-        fail(f"kiln {name}.xml failed ({done.returncode})", log)
-    return log
+        fail(f"kiln {name}.xml failed ({done.returncode})", done.log)
+    return done.log
 
 
 def replace(body, old, new):

@@ -12,11 +12,14 @@ two shear stresses (issue 35, item 4).
 """
 import os
 import re
-import subprocess
 import sys
 import tempfile
+from pathlib import Path
 
 import h5py
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 DOCUMENTS = ["user-guide.md", "mechanics.md", "output-format.md"]
 STATEMENT = re.compile(r"stored\s+in\s+the\s+order\s+\*\*([a-z ]+?)\*\*")
@@ -32,16 +35,9 @@ def written_orders(kiln, deck, work):
     with open(deck, encoding="utf-8") as f:
         xml = f.read()
     base = os.path.join(work, "tensor-order")
-    xml, n = re.subn(r'(<Parameter name="Times" type="Array\(double\)" value=")[^"]*"',
-                     r'\g<1>{0}"', xml)
-    assert n == 1, "the deck has no Output/Times to cut"
-    xml = xml.replace('<ParameterList name="Output">',
-                      '<ParameterList name="Output">\n    <Parameter name="File Base" '
-                      f'type="string" value="{base}"/>', 1)
-    derived = os.path.join(work, "deck.xml")
-    with open(derived, "w", encoding="utf-8") as f:
-        f.write(xml)
-    subprocess.run([kiln, derived], check=True, stdout=subprocess.DEVNULL)
+    xml = kd.set_parameter(xml, "Times", [0])
+    xml = kd.add_parameters(xml, "Output", {"File Base": base})
+    kd.run_kiln(kiln, kd.write_deck(os.path.join(work, "deck"), xml))
     orders = {}
     with h5py.File(base + ".h5", "r") as h5:
         steps = h5["steps"]

@@ -9,9 +9,11 @@ Passes if every figure of the module is within the Truchas test's tolerance, or 
 """
 import importlib.util
 import os
-import subprocess
 import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 
 def main():
@@ -29,11 +31,8 @@ def main():
     def run(deck, folder):
         os.makedirs(folder, exist_ok=True)
         mesh = section.mesh_file(deck)
-        command = [kiln] + (["--mesh", str(mesh)] if mesh is not None else []) + [str(deck)]
-        if int(n_ranks) > 1:
-            command = [mpiexec, "-np", n_ranks] + command
-        subprocess.run(command, check=True, cwd=folder, stdout=subprocess.DEVNULL)
-        return Path(folder) / "results" / f"{deck.stem}.h5"
+        args = ["--mesh", mesh] if mesh is not None else []
+        return kd.run_kiln(kiln, deck, n_ranks, mpiexec, args, cwd=folder).results
 
     results = run(deck, work)
     # A Truchas test that runs two inputs: the module's companions run beside it.

@@ -13,12 +13,14 @@ whole series, 0 to 0.5 s, in one file) pass the deck's own checks
 Usage: viscoplastic_restart.py KILN KILN_DIFF DECK SIDECARS WORK_DIR NP MPIEXEC
 """
 import importlib.util
-import os
 import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 TIMES = '<Parameter name="Times" type="Array(double)" value="{0, 0.1, 0.2, 0.3, 0.4, 0.5}"/>'
 
@@ -45,18 +47,8 @@ def main():
         "{0, 0.1, 0.2, 0.3, 0.4, 0.5}", "{0, 0.1, 0.2, 0.3}"))
 
     def run(name, *extra):
-        command = [kiln, f"{name}.xml", *extra]
-        if int(n_ranks) > 1:
-            command = [mpiexec, "-np", n_ranks] + command
-        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_rmaps_base_oversubscribe="1")
-        done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
-        log = done.stdout + done.stderr
-        (work / f"{name}.log").write_text(log)
-        if done.returncode != 0:
-            print(log)
-            raise SystemExit(f"{' '.join(command)} failed ({done.returncode})")
-        return log
+        return kd.run_kiln(kiln, f"{name}.xml", n_ranks, mpiexec, extra, cwd=work,
+                           log=work / f"{name}.log").log
 
     run("complete")
     run("part1")
