@@ -29,13 +29,16 @@ Checked: the temperature at every node (each cell's nodes by its half's line) an
 gap_heat_flux at the gap's nodes (q) to 1e-9, the stress (sigma_xx = -P, the rest 0) and the
 contact pressure (P) to 1e-9 P.
 """
+import os
 import sys
+import tempfile
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
-from kiln_runs import condition_xml, run_last_step  # noqa: E402
+from kiln_deck import (box_mesh, constant, displacement, normal_displacement,  # noqa: E402
+                       read_step, run_kiln, temperature, write_deck)
 
 SHORTENING = 2.0e-5
 H0, WIDTH, HP = 1.0e3, 1.0e-5, 1.0e-4
@@ -48,78 +51,45 @@ CASES = {  # block 1, block 2: name, E (a number or a table), nu, k
 }
 
 
-def youngs_xml(E):
+def youngs_modulus(E):
     if isinstance(E, float):
-        return f'<Parameter name="Young\'s Modulus" type="double" value="{E}"/>'
+        return E
     (T1, T2), (E1, E2) = E
-    return f"""<ParameterList name="Young's Modulus">
-        <Parameter name="Type" type="string" value="Table"/>
-        <Parameter name="Temperatures" type="Array(double)" value="{{{T1}, {T2}}}"/>
-        <Parameter name="Values" type="Array(double)" value="{{{E1}, {E2}}}"/>
-      </ParameterList>"""
+    return {"Type": "Table", "Temperatures": [T1, T2], "Values": [E1, E2]}
 
 
 def deck(base, case):
-    materials = ""
-    for block, (name, E, nu, k) in enumerate(CASES[case], start=1):
-        materials += f"""
-    <ParameterList name="{name}">
-      <Parameter name="Blocks" type="Array(int)" value="{{{block}}}"/>
-      {youngs_xml(E)}
-      <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
-      <Parameter name="Thermal Expansion" type="double" value="0"/>
-      <Parameter name="Reference Temperature" type="double" value="300"/>
-      <Parameter name="Conductivity" type="double" value="{k}"/>
-    </ParameterList>"""
-    return f"""<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{{0.04, 0.04, 0.04}}"/>
-      <Parameter name="Cells" type="Array(int)" value="{{4, 2, 2}}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">{materials}
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="350"/>
-    <Parameter name="Gap Conductance" type="double" value="{H0}"/>
-    <Parameter name="Gap Conductance Model" type="string" value="Contact Dependent"/>
-    <Parameter name="Gap Width Scale" type="double" value="{WIDTH}"/>
-    <Parameter name="Gap Pressure Coefficient" type="double" value="{HP}"/>
-    <ParameterList name="Boundary Conditions">{condition_xml("hot", "Temperature", (1,), None, T_A)}{condition_xml("cold", "Temperature", (2,), None, T_B)}
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">{condition_xml("wall", "Displacement", (1,), "x")}{condition_xml("rollers", "Normal Displacement", (3, 5))}{condition_xml("pressed", "Displacement", (2,), "x", -SHORTENING)}
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Relative Tolerance" type="double" value="1e-13"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="{base}"/>
-  </ParameterList>
-</ParameterList>
-"""
+    materials = {name: {"Blocks": [block], "Young's Modulus": youngs_modulus(E),
+                        "Poisson's Ratio": nu, "Thermal Expansion": 0.0,
+                        "Reference Temperature": 300.0, "Conductivity": k}
+                 for block, (name, E, nu, k) in enumerate(CASES[case], start=1)}
+    return {
+        "Physics": "Thermo-Elasticity",
+        "Mesh": box_mesh((0.04, 0.04, 0.04), (4, 2, 2), 10),
+        "Materials": materials,
+        "Thermal": {"Initial Temperature": 350.0, "Gap Conductance": H0,
+                    "Gap Conductance Model": "Contact Dependent", "Gap Width Scale": WIDTH,
+                    "Gap Pressure Coefficient": HP,
+                    "Boundary Conditions": {"hot": temperature([1], T_A),
+                                            "cold": temperature([2], T_B)}},
+        "Mechanics": {"Boundary Conditions": {
+            "wall": displacement([1], ["x"]), "rollers": normal_displacement([3, 5]),
+            "pressed": displacement([2], ["x"], constant(-SHORTENING))}},
+        "Time Stepping": {"Method": "Steady"},
+        "Solver": {"Relative Tolerance": 1e-13},
+        "Output": {"File Base": base},
+    }
 
 
 def main():
     kiln, mpiexec, n_ranks, case = sys.argv[1:5]
-    result = run_last_step(kiln, mpiexec, n_ranks, case, lambda base: deck(base, case),
-                           ("temperature", "stress", "gap_heat_flux", "contact_pressure"),
-                           ("coordinates", "connectivity", "block_id"))
-    if result is None:
-        return 1
-    x, connectivity, block = (result[0][key] for key in ("coordinates", "connectivity",
-                                                         "block_id"))
-    T, stress, flux, pressure = (result[1][key] for key in ("temperature", "stress",
-                                                            "gap_heat_flux", "contact_pressure"))
+    with tempfile.TemporaryDirectory() as folder:
+        base = os.path.join(folder, case)
+        state = read_step(run_kiln(kiln, write_deck(base, deck(base, case)), n_ranks,
+                                   mpiexec).results)
+    x, connectivity, block = state["x"], state["cells"], state["block"]
+    T, stress = state["temperature"], state["stress"]
+    flux, pressure = state["gap_heat_flux"], state["contact_pressure"]
     k_a, k_b = CASES[case][0][3], CASES[case][1][3]
     pressure = pressure[~np.isnan(pressure)]
     if case == "two-materials":

@@ -25,13 +25,16 @@ T, which is exact for a linear T); the strain of a cell is then the mean of the 
 it, so each cell's stress is the exact cell average. Nodal displacements and cell stresses are
 compared with the exact values to 1e-9 of their largest.
 """
+import os
 import sys
+import tempfile
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
-from kiln_runs import condition_xml, run_last_step  # noqa: E402
+from kiln_deck import (box_mesh, displacement, read_step, run_kiln, temperature,  # noqa: E402
+                       write_deck, young)
 
 G0 = 9.81
 T_FOOT, T_TOP = 300.0, 500.0
@@ -46,69 +49,36 @@ def lame(E, nu):
     return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 
 
-def density_xml(rho0, slope):
+def density(rho0, slope):
     if slope == 0.0:
-        return f'<Parameter name="Density" type="double" value="{rho0}"/>'
-    return f"""<ParameterList name="Density">
-        <Parameter name="Type" type="string" value="Expression"/>
-        <Parameter name="Expression" type="string" value="{rho0} + ({slope})*(T - 300)"/>
-        <Parameter name="Temperatures" type="Array(double)" value="{{300, 400, 500}}"/>
-      </ParameterList>"""
+        return rho0
+    return {"Type": "Expression", "Expression": f"{rho0} + ({slope})*(T - 300)",
+            "Temperatures": [300.0, 400.0, 500.0]}
 
 
 def deck(base, case):
-    blocks = {}
-    for block, props in enumerate(CASES[case], start=1):
-        blocks.setdefault(props, []).append(block)
-    materials = ""
-    for (name, E, nu, (rho0, slope)), ids in blocks.items():
-        materials += f"""
-    <ParameterList name="{name}">
-      <Parameter name="Blocks" type="Array(int)" value="{{{', '.join(map(str, ids))}}}"/>
-      <Parameter name="Young's Modulus" type="double" value="{E}"/>
-      <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
-      <Parameter name="Thermal Expansion" type="double" value="0"/>
-      <Parameter name="Reference Temperature" type="double" value="300"/>
-      {density_xml(rho0, slope)}
-      <Parameter name="Specific Heat" type="double" value="500"/>
-      <Parameter name="Conductivity" type="double" value="40"/>
-    </ParameterList>"""
-    conditions = (condition_xml("foot", "Displacement", (1,), "x") +
-                  condition_xml("rollers y", "Displacement", (3, 4), "y") +
-                  condition_xml("rollers z", "Displacement", (5, 6), "z"))
-    return f"""<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{{1, 0.1, 0.1}}"/>
-      <Parameter name="Cells" type="Array(int)" value="{{8, 2, 2}}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">{materials}
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="400"/>
-    <ParameterList name="Boundary Conditions">{condition_xml("foot", "Temperature", (1,), None, T_FOOT)}{condition_xml("top", "Temperature", (2,), None, T_TOP)}
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <Parameter name="Gravity" type="Array(double)" value="{{{-G0}, 0, 0}}"/>
-    <ParameterList name="Boundary Conditions">{conditions}
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Relative Tolerance" type="double" value="1e-13"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="{base}"/>
-  </ParameterList>
-</ParameterList>
-"""
+    materials = {}
+    for block, (name, E, nu, (rho0, slope)) in enumerate(CASES[case], start=1):
+        material = materials.setdefault(name, {
+            "Blocks": [], **young(E, nu), "Thermal Expansion": 0.0,
+            "Reference Temperature": 300.0, "Density": density(rho0, slope),
+            "Specific Heat": 500.0, "Conductivity": 40.0})
+        material["Blocks"].append(block)
+    return {
+        "Physics": "Thermo-Elasticity",
+        "Mesh": box_mesh((1, 0.1, 0.1), (8, 2, 2)),
+        "Materials": materials,
+        "Thermal": {"Initial Temperature": 400.0,
+                    "Boundary Conditions": {"foot": temperature([1], T_FOOT),
+                                            "top": temperature([2], T_TOP)}},
+        "Mechanics": {"Gravity": [-G0, 0.0, 0.0],
+                      "Boundary Conditions": {"foot": displacement([1], ["x"]),
+                                              "rollers y": displacement([3, 4], ["y"]),
+                                              "rollers z": displacement([5, 6], ["z"])}},
+        "Time Stepping": {"Method": "Steady"},
+        "Solver": {"Relative Tolerance": 1e-13},
+        "Output": {"File Base": base},
+    }
 
 
 def integral(f, a, b, n=4):
@@ -152,13 +122,12 @@ def exact(case):
 
 def main():
     kiln, mpiexec, n_ranks, case = sys.argv[1:5]
-    result = run_last_step(kiln, mpiexec, n_ranks, case, lambda base: deck(base, case),
-                           ("temperature", "displacement", "stress"),
-                           ("coordinates", "connectivity"))
-    if result is None:
-        return 1
-    x, connectivity = result[0]["coordinates"], result[0]["connectivity"]
-    T, u, stress = (result[1][key] for key in ("temperature", "displacement", "stress"))
+    with tempfile.TemporaryDirectory() as folder:
+        base = os.path.join(folder, case)
+        state = read_step(run_kiln(kiln, write_deck(base, deck(base, case)), n_ranks,
+                                   mpiexec).results)
+    x, connectivity = state["x"], state["cells"]
+    T, u, stress = state["temperature"], state["displacement"], state["stress"]
     sigma_xx, moduli, u_x = exact(case)
     s_nodes = x[:, 0] + 0.5
     T_exact = T_FOOT + (T_TOP - T_FOOT) * s_nodes
