@@ -595,32 +595,43 @@ TEST(ContactJacobian, ContactDependentConductanceOpen)
   EXPECT_EQ(check.gap_T_other_u, 0.0);
 }
 
-TEST(ContactJacobian, ContactDependentConductanceClosed)
+/// Both sides warmer than T_ref and pushed together: p > 0 at every face, g < 0, so only
+/// dh/dp acts (on the displacements of all nodes of the two cells, and the temperatures).
+/// `materials`: a material per block (null: the fixture's everywhere).
+void check_closed_contact_dependent(const std::string &name, const kiln::MaterialMap *materials)
 {
-  // Both sides warmer than T_ref and pushed together: p > 0 at every face, g < 0, so only
-  // dh/dp acts (on the displacements of all nodes of the two cells, and the temperatures).
   Design d;
   d.T_a = 312.0;
   d.T_b = 303.0;
   d.opening = -2.0e-6;
-  const JacobianCheck check = run_case("closed, Contact Dependent conductance", d, "Min", 1.0,
-                                       Conductance::contact_dependent, 16);
+  const JacobianCheck check =
+      run_case(name, d, "Min", 1.0, Conductance::contact_dependent, 16, false, materials);
   EXPECT_GT(check.gap_T_other_u, 1.0e3); // ~ jump * area * h_p (lambda + 2G) / h
   EXPECT_GT(check.gap_T_gap_u, 1.0e3);
 }
 
-TEST(ContactJacobian, ContactDependentConductanceOpenUnderCompression)
+/// Open (g > 0) but warmer than T_ref: p > 0 at every face as well, so dh/dg and dh/dp both
+/// act; P > 0 but c g larger, so every pair stays open.
+void check_open_under_compression(const std::string &name, const kiln::MaterialMap *materials)
 {
-  // Open (g > 0) but warmer than T_ref: p > 0 at every face as well, so dh/dg and dh/dp both
-  // act; P > 0 but c g larger, so every pair stays open.
   Design d;
   d.T_a = 303.0;
   d.T_b = 309.0;
   d.opening = 6.0e-6;
-  const JacobianCheck check = run_case("open and warm, Contact Dependent conductance", d, "Min",
-                                       1.0, Conductance::contact_dependent, 0);
+  const JacobianCheck check =
+      run_case(name, d, "Min", 1.0, Conductance::contact_dependent, 0, false, materials);
   EXPECT_GT(check.gap_T_gap_u, 1.0e3);
   EXPECT_GT(check.gap_T_other_u, 1.0e3);
+}
+
+TEST(ContactJacobian, ContactDependentConductanceClosed)
+{
+  check_closed_contact_dependent("closed, Contact Dependent conductance", nullptr);
+}
+
+TEST(ContactJacobian, ContactDependentConductanceOpenUnderCompression)
+{
+  check_open_under_compression("open and warm, Contact Dependent conductance", nullptr);
 }
 
 /// Two materials on the two sides of the gap (the Contact Dependent conductance takes each
@@ -657,32 +668,18 @@ kiln::MaterialMap two_materials()
 
 TEST(ContactJacobian, ContactDependentConductanceTwoMaterialsClosed)
 {
-  // As ContactDependentConductanceClosed, with E(T) and alpha(T) on side b: dh/dp through
-  // each side's tangent and dsigma/dT (the general path of the model layer on side b).
+  // dh/dp through each side's tangent and dsigma/dT (the general path of the model layer on
+  // side b).
   const kiln::MaterialMap materials = two_materials();
-  Design d;
-  d.T_a = 312.0;
-  d.T_b = 303.0;
-  d.opening = -2.0e-6;
-  const JacobianCheck check =
-      run_case("closed, two materials, Contact Dependent conductance", d, "Min", 1.0,
-               Conductance::contact_dependent, 16, false, &materials);
-  EXPECT_GT(check.gap_T_other_u, 1.0e3);
-  EXPECT_GT(check.gap_T_gap_u, 1.0e3);
+  check_closed_contact_dependent("closed, two materials, Contact Dependent conductance",
+                                 &materials);
 }
 
 TEST(ContactJacobian, ContactDependentConductanceTwoMaterialsOpenUnderCompression)
 {
   const kiln::MaterialMap materials = two_materials();
-  Design d;
-  d.T_a = 303.0;
-  d.T_b = 309.0;
-  d.opening = 6.0e-6;
-  const JacobianCheck check =
-      run_case("open and warm, two materials, Contact Dependent conductance", d, "Min", 1.0,
-               Conductance::contact_dependent, 0, false, &materials);
-  EXPECT_GT(check.gap_T_gap_u, 1.0e3);
-  EXPECT_GT(check.gap_T_other_u, 1.0e3);
+  check_open_under_compression("open and warm, two materials, Contact Dependent conductance",
+                               &materials);
 }
 
 TEST(ContactJacobian, FrozenTemperatureWithContact)
