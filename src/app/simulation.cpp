@@ -153,10 +153,7 @@ void Simulation::setup()
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
     const MaterialMap materials(params_, mesh_.block_ids(), input_path_);
-    const auto &g = params_.sublist("Mechanics").get<Teuchos::Array<double>>("Gravity");
-    const bool gravity =
-        layout_.displacement && std::any_of(g.begin(), g.end(), [](double x) { return x != 0.0; });
-    const Material &material = materials.uniform_material(gravity);
+    const Material &material = materials.uniform_material();
     problem_ = Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
                                                params_.sublist("Mechanics"), input_path_ + ": Kiln",
                                                &materials));

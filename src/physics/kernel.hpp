@@ -94,6 +94,8 @@ struct InterfaceState
   const std::vector<Point> &u;  ///< per local node [m]
   double time;                  ///< [s]
   FieldSlots slots;
+  /// The global indices of cells a and b (mesh.block_id: their materials); -1 if not set.
+  std::array<int, 2> cells{-1, -1};
 };
 
 class InterfaceKernel

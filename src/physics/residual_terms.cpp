@@ -258,7 +258,8 @@ void ResidualTerms::evaluate_gap_faces(const NodalFields &fields, const bool jac
             fe_a.reinit(mesh_, face.cell_a);
             fe_b.reinit(mesh_, face.cell_b);
           }
-          const InterfaceState state{fv, fe_a, fe_b, cell_a, cell_b, T, u, fields.time(), slots_};
+          const InterfaceState state{fv, fe_a, fe_b,          cell_a, cell_b,
+                                     T,  u,    fields.time(), slots_, {face.cell_a, face.cell_b}};
           LocalSystem local(static_cast<int>(nodes.size()), dofs_.n_node_fields(), jacobian);
           kernel.evaluate(state, local);
           sink(nodes, local);

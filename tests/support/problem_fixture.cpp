@@ -166,15 +166,28 @@ ProblemFixture::ProblemFixture(kiln::Mesh m, const kiln::DofLayout layout,
 {
 }
 
-Teuchos::RCP<kiln::CoupledProblem>
-ProblemFixture::problem(const Teuchos::ParameterList &thermal,
-                        const Teuchos::ParameterList &mechanics) const
+kiln::MaterialMap material_map(const Teuchos::ParameterList &kiln_user,
+                               const std::vector<int> &block_ids)
+{
+  Teuchos::ParameterList valid("Kiln");
+  valid.sublist("Material").setParameters(kiln::Material::valid_parameters());
+  kiln::set_named_sublists(valid, "Materials", "materials by name",
+                           kiln::MaterialMap::valid_named_parameters());
+  return kiln::MaterialMap(kiln::validated(kiln_user, valid, "test.xml", "Kiln"), block_ids,
+                           "test.xml");
+}
+
+Teuchos::RCP<kiln::CoupledProblem> ProblemFixture::problem(const Teuchos::ParameterList &thermal,
+                                                           const Teuchos::ParameterList &mechanics,
+                                                           const kiln::MaterialMap *materials) const
 {
   const Teuchos::ParameterList t = kiln::validated(
       thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
   const Teuchos::ParameterList m = kiln::validated(
       mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
-  return Teuchos::rcp(new kiln::CoupledProblem(mesh, dofs, material, t, m, "test.xml: Kiln"));
+  return Teuchos::rcp(new kiln::CoupledProblem(
+      mesh, dofs, materials != nullptr ? materials->uniform_material() : material, t, m,
+      "test.xml: Kiln", materials));
 }
 
 std::vector<char> ProblemFixture::nodes_of_side_set(const int id) const

@@ -7,6 +7,7 @@
 #include "mesh/mesh.hpp"
 #include "physics/coupled_problem.hpp"
 #include "physics/materials/material.hpp"
+#include "physics/materials/material_map.hpp"
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_DefaultComm.hpp>
@@ -66,6 +67,11 @@ kiln::Mesh crossed_box(const BoxShape &box, const std::vector<int> &gap_side_set
 kiln::Mesh distorted_box(const BoxShape &box, double distortion, int gap_side_set,
                          bool plane_gap = false);
 
+/// The MaterialMap of a user's Kiln list (its "Material" or "Materials", validated against
+/// Kiln's) for the element blocks `block_ids` ("test.xml" in messages).
+kiln::MaterialMap material_map(const Teuchos::ParameterList &kiln_user,
+                               const std::vector<int> &block_ids);
+
 /// Mesh, partition, unknowns and material of one test. CoupledProblem keeps references to the
 /// mesh and the unknowns, so a fixture stays where it is built.
 struct ProblemFixture
@@ -76,10 +82,12 @@ struct ProblemFixture
   ProblemFixture &operator=(const ProblemFixture &) = delete;
 
   /// A CoupledProblem of the fixture's unknowns with the Thermal and Mechanics lists (each
-  /// validated, its defaults set).
+  /// validated, its defaults set); with `materials` (read at construction), a
+  /// material per block, else the fixture's material for every cell.
   Teuchos::RCP<kiln::CoupledProblem>
   problem(const Teuchos::ParameterList &thermal,
-          const Teuchos::ParameterList &mechanics = Teuchos::ParameterList()) const;
+          const Teuchos::ParameterList &mechanics = Teuchos::ParameterList(),
+          const kiln::MaterialMap *materials = nullptr) const;
   /// 1 for the nodes of the faces of side set `id`.
   std::vector<char> nodes_of_side_set(int id) const;
   /// A twin node made by the gap split.

@@ -1,5 +1,6 @@
 #include "physics/heat/contact_conductance_kernel.hpp"
 
+#include "base/errors.hpp"
 #include "contact/gap_opening.hpp"
 
 #include <algorithm>
@@ -7,6 +8,101 @@
 
 namespace kiln
 {
+namespace
+{
+/// The Voigt index of tensor component (d, k).
+constexpr int voigt_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+
+/// One side of the gap: the contribution of its cell to p = (p_a + p_b)/2 and to dp/du, dp/dT
+/// per local node, point by point (doc/contact.md, "Contact Dependent with materials").
+class SidePressure
+{
+public:
+  SidePressure(const Point &normal, const std::vector<Point> &u, const std::vector<double> &T,
+               std::vector<Point> &dp_du, std::vector<double> &dp_dT)
+      : u_(u), T_(T), dp_du_(dp_du), dp_dT_(dp_dT)
+  {
+    // n.σ n = m . σ in Voigt form (shear components counted twice).
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k)
+        m_[voigt_index[d][k]] += normal[d] * normal[k];
+  }
+
+  /// Adds −(w/2) n.σ n of a point where the cell's node j (local node cell[j]) has the shape
+  /// value phi[j] and gradient grad[j], σ the model's at the point's ε and T.
+  void add_point(const ConstitutiveModel &model, const double w, const Span<const int> cell,
+                 const double *phi, const Point *grad)
+  {
+    const int n = cell.size();
+    PointInput in;
+    std::array<std::array<double, 3>, 3> grad_u{};
+    for (int j = 0; j < n; ++j)
+    {
+      const int l = cell[j];
+      in.temperature += phi[j] * T_[l];
+      for (int d = 0; d < 3; ++d)
+        for (int k = 0; k < 3; ++k)
+          grad_u[d][k] += u_[l][d] * grad[j][k];
+    }
+    for (int d = 0; d < 3; ++d)
+      for (int k = d; k < 3; ++k)
+        in.strain[voigt_index[d][k]] = 0.5 * (grad_u[d][k] + grad_u[k][d]);
+    in.temperature_old = in.temperature;
+    PointResponse r;
+    model.evaluate(in, nullptr, nullptr, r);
+    const double s = -0.5 * w;
+    // v = m^T C: d(m.σ)/dε_J; dT = m . ∂σ/∂T.
+    Voigt v{};
+    double dT = 0.0;
+    for (int I = 0; I < 6; ++I)
+    {
+      pressure_ += s * m_[I] * r.stress[I];
+      dT += m_[I] * r.stress_temperature_derivative[I];
+      for (int J = 0; J < 6; ++J)
+        v[J] += m_[I] * r.tangent[I][J];
+    }
+    for (int j = 0; j < n; ++j)
+    {
+      const int l = cell[j];
+      const Point &g = grad[j];
+      // ∂ε_dk/∂u_{j,e} = (δ_de g_k + δ_ke g_d) / 2 (tensor shear strains).
+      for (int e = 0; e < 3; ++e)
+      {
+        double value = v[e] * g[e];
+        for (int k = 0; k < 3; ++k)
+          if (k != e)
+            value += 0.5 * v[voigt_index[e][k]] * g[k];
+        dp_du_[l][e] += s * value;
+      }
+      dp_dT_[l] += s * dT * phi[j];
+    }
+  }
+
+  /// The sum of the points' −(w/2) n.σ n so far [Pa].
+  double pressure() const { return pressure_; }
+
+private:
+  double pressure_ = 0.0;
+  Voigt m_{};
+  const std::vector<Point> &u_;
+  const std::vector<double> &T_;
+  std::vector<Point> &dp_du_;
+  std::vector<double> &dp_dT_;
+};
+} // namespace
+
+ContactConductanceKernel::ContactConductanceKernel(
+    const Parameters &p, const Mesh &mesh,
+    std::vector<std::shared_ptr<const ConstitutiveModel>> models, std::map<int, int> model_of_block)
+    : p_(p), models_(std::move(models)),
+      model_of_cell_(mesh, std::move(model_of_block), static_cast<int>(models_.size()))
+{
+  KILN_ASSERT(std::all_of(models_.begin(), models_.end(),
+                          [](const auto &model)
+                          { return model != nullptr && model->n_state() == 0; }),
+              "the contact conductance takes models without state");
+}
+
 std::vector<int> ContactConductanceKernel::nodes(const Mesh &mesh, const GapFace &face) const
 {
   std::vector<int> result = InterfaceKernel::nodes(mesh, face);
@@ -19,8 +115,8 @@ std::vector<int> ContactConductanceKernel::nodes(const Mesh &mesh, const GapFace
 
 void ContactConductanceKernel::evaluate(const InterfaceState &state, LocalSystem &local) const
 {
-  evaluate(state.fv, state.fe_a, state.fe_b, state.cell_a, state.cell_b, state.T, state.u,
-           state.slots.T, state.slots.u, local);
+  evaluate(state.fv, state.fe_a, state.fe_b, state.cell_a, state.cell_b, state.cells, state.T,
+           state.u, state.slots.T, state.slots.u, local);
 }
 
 double ContactConductanceKernel::conductance(const double g, const double p) const
@@ -31,9 +127,11 @@ double ContactConductanceKernel::conductance(const double g, const double p) con
 
 void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValues &fe_a,
                                         const ElementValues &fe_b, const Span<const int> cell_a,
-                                        const Span<const int> cell_b, const std::vector<double> &T,
-                                        const std::vector<Point> &u, const int T_slot,
-                                        const int u_slot, LocalSystem &local) const
+                                        const Span<const int> cell_b,
+                                        const std::array<int, 2> &cells,
+                                        const std::vector<double> &T, const std::vector<Point> &u,
+                                        const int T_slot, const int u_slot,
+                                        LocalSystem &local) const
 {
   const int n_local = local.n_nodes();
   const int n_face = fv.n_shape(); // local nodes 0..n_face-1 on side a, then their twins
@@ -46,40 +144,43 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
   for (double &x : n)
     x /= length;
 
-  // p = (p_a + p_b)/2, p_X = -[lambda tr ε̄ + 2G n.ε̄ n - beta (T̄ - T_ref)], linear in u
-  // and T: dp/du_j (a vector) and dp/dT_j per local node.
+  // p = (p_a + p_b)/2, p_X = −n.σ̄_X n, σ̄_X the volume average of cell X's stress from its
+  // material's model: dp/du_j (a vector) and dp/dT_j per local node.
   std::vector<Point> dp_du(n_local, Point{});
   std::vector<double> dp_dT(n_local, 0.0);
-  double p = 0.0;
-  const auto add_cell = [&](const ElementValues &fe, const Span<const int> cell)
+  SidePressure side(n, u, T, dp_du, dp_dT);
+  std::vector<double> mean_phi;
+  std::vector<Point> mean_grad;
+  const auto add_cell = [&](const ElementValues &fe, const Span<const int> cell, const int index)
   {
+    const ConstitutiveModel &model = *models_[model_of_cell_.of_cell(index)];
     double volume = 0.0;
     for (int q = 0; q < fe.n_qpoints(); ++q)
       volume += fe.JxW(q);
-    for (int j = 0; j < fe.n_shape(); ++j)
+    if (!model.constant_linear())
     {
-      Point B{};
-      double w = 0.0;
       for (int q = 0; q < fe.n_qpoints(); ++q)
-      {
-        for (int d = 0; d < 3; ++d)
-          B[d] += fe.grad(j, q)[d] * fe.JxW(q) / volume;
-        w += fe.shape(j, q) * fe.JxW(q) / volume;
-      }
-      const int l = cell[j];
-      const double nB = dot(n, B);
-      Point d_u{};
-      for (int d = 0; d < 3; ++d)
-        d_u[d] = -0.5 * (p_.lambda * B[d] + 2.0 * p_.shear_modulus * nB * n[d]);
-      const double d_T = 0.5 * p_.beta * w;
-      for (int d = 0; d < 3; ++d)
-        dp_du[l][d] += d_u[d];
-      dp_dT[l] += d_T;
-      p += dot(d_u, u[l]) + d_T * (T[l] - p_.reference_temperature);
+        side.add_point(model, fe.JxW(q) / volume, cell, fe.shapes(q), fe.grads(q));
+      return;
     }
+    // σ linear in (ε, T): the average stress is the stress of the average ε and T.
+    mean_phi.assign(fe.n_shape(), 0.0);
+    mean_grad.assign(fe.n_shape(), Point{});
+    for (int q = 0; q < fe.n_qpoints(); ++q)
+    {
+      const double w = fe.JxW(q) / volume;
+      for (int j = 0; j < fe.n_shape(); ++j)
+      {
+        mean_phi[j] += fe.shape(j, q) * w;
+        for (int d = 0; d < 3; ++d)
+          mean_grad[j][d] += fe.grad(j, q)[d] * w;
+      }
+    }
+    side.add_point(model, 1.0, cell, mean_phi.data(), mean_grad.data());
   };
-  add_cell(fe_a, cell_a);
-  add_cell(fe_b, cell_b);
+  add_cell(fe_a, cell_a, cells[0]);
+  add_cell(fe_b, cell_b, cells[1]);
+  const double p = side.pressure();
   const double dh_dp = p > 0.0 ? p_.pressure_coefficient : 0.0;
 
   for (int q = 0; q < fv.n_qpoints(); ++q)

@@ -4,8 +4,12 @@
 #include "discretization/face_values.hpp"
 #include "discretization/local_system.hpp"
 #include "physics/kernel.hpp"
+#include "physics/kernel_of_block.hpp"
+#include "physics/materials/constitutive_model.hpp"
 
 #include <array>
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace kiln
@@ -17,34 +21,42 @@ namespace kiln
 /// - g = n . (u_b - u_a), the gap opening at the quadrature point (n: the face's outward
 ///   normal on side a): an open gap conducts like a gas layer of conductivity h0 L in
 ///   series with a contact of h0, so h falls from h0 as the gap opens;
-/// - p = -n . σ n, the normal compression of the two cells at the face (the mean of their
-///   volume-averaged stresses, σ = λ tr ε I + 2G ε - β (T - T_ref) I, β = (3λ + 2G) α):
-///   pressed together, h grows with the contact pressure. At an open face p is the free
-///   surface's normal stress, zero up to the discretization error.
-/// Both are continuous at closure (g = 0, p = 0: h = h0), and everything is linear in the
-/// nodal u and T but for the max() kinks, so the Jacobian is exact (generalized
-/// derivative 0 at the kinks): dR/dT of the jump and of p, dR/du of g and of p.
+/// - p = -n . σ̄ n, the normal compression of the two cells at the face: the mean of the
+///   two cells' volume averages σ̄_X = ∫_X σ dΩ / |X|, each cell's σ from its own block's
+///   material through the constitutive-model layer (ConstitutiveModel::evaluate at each
+///   quadrature point's ε = sym ∇u and T: E(T), ν(T), the secant α(T) as in the elasticity
+///   kernel; doc/contact.md). A constant linear-elastic model (σ linear in ε and T) is
+///   evaluated once per cell, at the cell's mean strain and temperature, which gives the same
+///   average. Pressed together, h grows with the contact pressure. At an open face p is the
+///   free surface's normal stress, zero up to the discretization error. Models with state
+///   (viscoplastic) are not taken: ThermalPhysics refuses them beside a gap.
+/// Both are continuous at closure (g = 0, p = 0: h = h0), and the Jacobian is exact but at
+/// the max() kinks (generalized derivative 0 there): dR/dT of the jump and, through ∂σ/∂T, of
+/// p; dR/du of g and, through the tangent ∂σ/∂ε, of p.
 class ContactConductanceKernel final : public InterfaceKernel
 {
 public:
   struct Parameters
   {
-    double h0 = 0.0;                          ///< h at closure [W/(m^2 K)]
-    double length = 0.0;                      ///< L [m]
-    double pressure_coefficient = 0.0;        ///< h_p [W/(m^2 K Pa)]
-    double lambda = 0.0, shear_modulus = 0.0; ///< [Pa]
-    double beta = 0.0;                        ///< (3 lambda + 2G) alpha [Pa/K]
-    double reference_temperature = 0.0;       ///< [K]
+    double h0 = 0.0;                   ///< h at closure [W/(m^2 K)]
+    double length = 0.0;               ///< L [m]
+    double pressure_coefficient = 0.0; ///< h_p [W/(m^2 K Pa)]
   };
-  explicit ContactConductanceKernel(const Parameters &p) : p_(p) {}
+  /// `models[i]` is material i's mechanical model (Material::mechanical_model(); one without
+  /// state, n_state() == 0); `model_of_block` maps every block id of the mesh to one (it may
+  /// be empty with one model).
+  ContactConductanceKernel(const Parameters &p, const Mesh &mesh,
+                           std::vector<std::shared_ptr<const ConstitutiveModel>> models,
+                           std::map<int, int> model_of_block);
 
-  /// fv: the side-a face; fe_a, fe_b: its two cells. Local nodes: 0..n-1 the face's n nodes
-  /// on side a, n..2n-1 their twins; cell_a[i], cell_b[i]: the local node of each cell's node i.
-  /// T [K] and u [m] per local node. Adds [W] and [W/K], [W/m] to `local` (fields T_slot,
-  /// u_slot..u_slot+2).
+  /// fv: the side-a face; fe_a, fe_b: its two cells, `cells` their global indices (their
+  /// blocks' models). Local nodes: 0..n-1 the face's n nodes on side a, n..2n-1 their twins;
+  /// cell_a[i], cell_b[i]: the local node of each cell's node i. T [K] and u [m] per local node.
+  /// Adds [W] and [W/K], [W/m] to `local` (fields T_slot, u_slot..u_slot+2).
   void evaluate(const FaceValues &fv, const ElementValues &fe_a, const ElementValues &fe_b,
-                Span<const int> cell_a, Span<const int> cell_b, const std::vector<double> &T,
-                const std::vector<Point> &u, int T_slot, int u_slot, LocalSystem &local) const;
+                Span<const int> cell_a, Span<const int> cell_b, const std::array<int, 2> &cells,
+                const std::vector<double> &T, const std::vector<Point> &u, int T_slot, int u_slot,
+                LocalSystem &local) const;
 
   /// The side-a face nodes, their twins, then the other nodes of both cells (p depends on
   /// them).
@@ -58,5 +70,7 @@ public:
 
 private:
   Parameters p_;
+  std::vector<std::shared_ptr<const ConstitutiveModel>> models_;
+  KernelOfBlock model_of_cell_;
 };
 } // namespace kiln

@@ -109,30 +109,40 @@ BlockHeatConductionKernel conduction_kernels(const Teuchos::ParameterList &therm
   return BlockHeatConductionKernel(mesh, std::move(kernels), std::move(kernel_of_block));
 }
 
-/// The material of the cells beside the gaps, for the Contact Dependent conductance (one
-/// set of elastic constants): `material` without `materials`; an InputError naming the
-/// materials if the gaps' cells are of several.
-const Material &gap_material(const Material &material, const Mesh &mesh,
-                             const MaterialMap *materials, const std::string &where)
+/// The Contact Dependent conductance's models: each material's mechanical model (of
+/// `materials`, or `material`'s alone) and the material of each block. An InputError naming
+/// the material if one beside a gap has a model with state (viscoplastic): its stress needs
+/// the state at its points, which the gap's terms do not read.
+ContactConductanceKernel contact_conductance_kernel(const ContactConductanceKernel::Parameters &k,
+                                                    const Material &material, const Mesh &mesh,
+                                                    const MaterialMap *materials,
+                                                    const std::string &where)
 {
-  if (materials == nullptr || materials->n_materials() == 1)
-    return material;
+  std::vector<std::shared_ptr<const ConstitutiveModel>> models;
+  std::map<int, int> model_of_block;
+  if (materials == nullptr)
+    models.push_back(material.mechanical_model());
+  else
+  {
+    for (int i = 0; i < materials->n_materials(); ++i)
+      models.push_back(materials->material(i).mechanical_model());
+    for (const int block : mesh.block_ids())
+      model_of_block[block] = materials->index_of_block(block);
+  }
   std::set<int> at_gap;
   for (const GapFace &face : mesh.gap_faces)
     for (const int cell : {face.cell_a, face.cell_b})
       if (cell >= 0)
-        at_gap.insert(materials->index_of_block(mesh.block_id[cell]));
-  if (at_gap.size() <= 1)
-    return at_gap.empty() ? material : materials->material(*at_gap.begin());
-  std::string names;
+        at_gap.insert(materials != nullptr ? model_of_block.at(mesh.block_id[cell]) : 0);
   for (const int i : at_gap)
-    names += (names.empty() ? "\"" : ", \"") + materials->name(i) + "\"";
-  KILN_CHECK_INPUT(false, where + "/\"Gap Conductance Model\"",
-                   "is \"Contact Dependent\", which takes one material's elastic constants, "
-                   "but the gap's cells are of "
-                       << at_gap.size() << " materials (" << names
-                       << "); use \"Constant\", or the same material on both sides of the gap");
-  return material;
+    KILN_CHECK_INPUT(models[i]->n_state() == 0, where + "/\"Gap Conductance Model\"",
+                     "is \"Contact Dependent\", whose contact pressure takes the stress of the "
+                     "cells beside the gap from their material's elastic law, but material \""
+                         << (materials != nullptr ? materials->name(i) : "Material")
+                         << "\" beside the gap has a viscoplastic Model, whose stress needs the "
+                            "state at its quadrature points, which the gap's terms do not read; "
+                            "use \"Constant\", or an elastic material beside the gap");
+  return ContactConductanceKernel(k, mesh, std::move(models), std::move(model_of_block));
 }
 } // namespace
 
@@ -151,20 +161,12 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
                      "is \"Contact Dependent\", which needs the contact state: set Kiln/"
                      "\"Physics\" to \"Thermo-Elasticity\" with Mechanics/Contact/\"Enabled\" "
                      "true, or use \"Constant\"");
-    const Material &gap = gap_material(material, mesh, materials, where);
-    KILN_CHECK_INPUT(gap.elastically_constant(), where + "/\"Gap Conductance Model\"",
-                     "is \"Contact Dependent\", which takes constant elastic constants and "
-                     "expansion, but the material's depend on T; give them as numbers, or use "
-                     "\"Constant\"");
     ContactConductanceKernel::Parameters k;
     k.h0 = h;
     k.length = thermal.get<double>("Gap Width Scale");
     k.pressure_coefficient = thermal.get<double>("Gap Pressure Coefficient");
-    k.lambda = gap.lame_lambda();
-    k.shear_modulus = gap.shear_modulus();
-    k.beta = (3.0 * k.lambda + 2.0 * k.shear_modulus) * gap.thermal_expansion();
-    k.reference_temperature = gap.reference_temperature();
-    gap_ = std::make_unique<ContactConductanceKernel>(k);
+    gap_ = std::make_unique<ContactConductanceKernel>(
+        contact_conductance_kernel(k, material, mesh, materials, where));
   }
   else
   {

@@ -39,7 +39,9 @@ public:
 
   /// @name Properties at a temperature T [K]
   /// @{
-  double density(double T) const { return density_.value(T); }             ///< rho [kg/m^3]
+  double density(double T) const { return density_.value(T); } ///< rho [kg/m^3]
+  /// rho(T) itself (its derivative for the Jacobian of the body force rho(T) g).
+  const TemperatureFunction &density_function() const { return density_; }
   double specific_heat(double T) const { return specific_heat_.value(T); } ///< c [J/(kg K)]
   /// rho c [J/(m^3 K)]
   double heat_capacity(double T) const { return density_.value(T) * specific_heat_.value(T); }

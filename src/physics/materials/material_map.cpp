@@ -104,15 +104,8 @@ bool MaterialMap::all_constant() const
                      [](const Material &m) { return m.is_constant(); });
 }
 
-const Material &MaterialMap::uniform_material(const bool gravity) const
+const Material &MaterialMap::uniform_material() const
 {
-  if (gravity)
-    for (int i = 0; i < n_materials(); ++i)
-      for (const std::string &property : materials_[i].temperature_dependent_properties())
-        KILN_CHECK_INPUT(property != "Density", paths_[i] + "/\"" + property + "\"",
-                         "depends on temperature, but the body force rho g (Mechanics/"
-                         "\"Gravity\") takes a constant density yet; give a number (the value "
-                         "at the temperatures of interest), or no Gravity");
   return materials_.front();
 }
 } // namespace kiln

@@ -47,10 +47,9 @@ public:
 
   /// The material of the problem's scales (the reference temperature, the contact's modulus):
   /// the first. The physics take each block's material (ThermalPhysics: rho(T), c(T), k(T);
-  /// MechanicalPhysics: the elastic constants, expansion and model). With `gravity` (a nonzero
-  /// Mechanics/"Gravity"), throws InputError naming the material if a density depends on T:
-  /// the body force rho g takes a constant rho yet.
-  const Material &uniform_material(bool gravity = false) const;
+  /// MechanicalPhysics: the elastic constants, expansion, model and the density of the body
+  /// force rho(T) g).
+  const Material &uniform_material() const;
   /// Block id -> material index, for every block of the mesh.
   const std::map<int, int> &material_of_block() const { return material_of_block_; }
 

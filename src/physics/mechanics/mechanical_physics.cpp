@@ -7,6 +7,8 @@
 
 #include <Teuchos_Array.hpp>
 
+#include <algorithm>
+
 namespace kiln
 {
 namespace internal
@@ -58,28 +60,44 @@ Teuchos::ParameterList MechanicalPhysics::valid_parameters()
 
 namespace
 {
+/// The materials of the kernels: each of `materials`, or `material` alone.
+std::vector<const Material *> materials_of(const Material &material, const MaterialMap *materials)
+{
+  if (materials == nullptr)
+    return {&material};
+  std::vector<const Material *> result;
+  for (int i = 0; i < materials->n_materials(); ++i)
+    result.push_back(&materials->material(i));
+  return result;
+}
+
+/// Whether `m`'s weight is the GravityKernel's (its density depends on T) rather than a
+/// constant body force of its elasticity kernel.
+bool weighed_apart(const Material &m)
+{
+  return !m.density_function().is_constant();
+}
+
 /// One kernel per material of `materials`, or `material`'s alone. The body force ρ g + f
-/// takes each material's ρ at its T_ref.
+/// takes each material's ρ, if it is a number; a ρ(T) is the GravityKernel's (f alone here).
 std::vector<ElasticityKernel> elasticity_kernels(const Teuchos::ParameterList &mechanics,
                                                  const Material &material,
                                                  const MaterialMap *materials,
                                                  const std::string &where)
 {
+  const auto density = [](const Material &m)
+  { return weighed_apart(m) ? 0.0 : m.density(m.reference_temperature()); };
   std::vector<ElasticityKernel> kernels;
   if (materials == nullptr)
   {
     kernels.emplace_back(material.lame_lambda(), material.shear_modulus(),
                          material.thermal_expansion(), material.reference_temperature(),
-                         internal::body_force(mechanics, material.density(), where));
+                         internal::body_force(mechanics, density(material), where));
     return kernels;
   }
-  for (int i = 0; i < materials->n_materials(); ++i)
-  {
-    const Material &m = materials->material(i);
-    kernels.emplace_back(
-        m.mechanical_model(),
-        internal::body_force(mechanics, m.density(m.reference_temperature()), where));
-  }
+  for (const Material *m : materials_of(material, materials))
+    kernels.emplace_back(m->mechanical_model(),
+                         internal::body_force(mechanics, density(*m), where));
   return kernels;
 }
 
@@ -92,14 +110,43 @@ std::map<int, int> kernel_of_block(const Mesh &mesh, const MaterialMap *material
       result[block] = materials->index_of_block(block);
   return result;
 }
+
+/// ρ(T) g of the materials whose density depends on T; null if none does or g = 0.
+std::unique_ptr<GravityKernel> gravity_kernel(const Teuchos::ParameterList &mechanics,
+                                              const Material &material, const Mesh &mesh,
+                                              const MaterialMap *materials)
+{
+  const auto &g = mechanics.get<Teuchos::Array<double>>("Gravity");
+  const Point gravity{g[0], g[1], g[2]};
+  std::vector<TemperatureFunction> densities;
+  std::vector<char> weighed;
+  for (const Material *m : materials_of(material, materials))
+  {
+    densities.push_back(m->density_function());
+    weighed.push_back(weighed_apart(*m));
+  }
+  if (gravity == Point{} || std::none_of(weighed.begin(), weighed.end(), [](char w) { return w; }))
+    return nullptr;
+  return std::make_unique<GravityKernel>(mesh, std::move(densities), std::move(weighed),
+                                         kernel_of_block(mesh, materials), gravity);
+}
 } // namespace
+
+std::vector<const CellKernel *> MechanicalPhysics::cell_kernels() const
+{
+  std::vector<const CellKernel *> kernels{&elasticity_};
+  if (gravity_)
+    kernels.push_back(gravity_.get());
+  return kernels;
+}
 
 MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
                                      const Material &material, const Mesh &mesh,
                                      const InteriorFaceCheck &interior, const std::string &where,
                                      const MaterialMap *materials)
     : elasticity_(mesh, elasticity_kernels(mechanics, material, materials, where),
-                  kernel_of_block(mesh, materials))
+                  kernel_of_block(mesh, materials)),
+      gravity_(gravity_kernel(mechanics, material, mesh, materials))
 {
   conditions_ =
       read_boundary_conditions(mechanical_conditions(), mechanics.sublist("Boundary Conditions"),

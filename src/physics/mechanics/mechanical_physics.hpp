@@ -7,6 +7,7 @@
 #include "physics/materials/material_map.hpp"
 #include "physics/mechanics/block_elasticity_kernel.hpp"
 #include "physics/mechanics/elasticity_kernel.hpp"
+#include "physics/mechanics/gravity_kernel.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -17,7 +18,8 @@
 namespace kiln
 {
 /// Small-strain thermo-elasticity (doc/mechanics.md): the elasticity kernel of every cell with
-/// the body force rho g + f, and the mechanical boundary conditions
+/// the body force rho g + f (a material's rho(T) g, if its density depends on T and Gravity is
+/// not zero, in a GravityKernel of its own), and the mechanical boundary conditions
 /// (mechanical_conditions()). The "Contact" sublist is the interface's (interface_parameters()).
 class MechanicalPhysics
 {
@@ -39,11 +41,13 @@ public:
   const BlockElasticityKernel &block_elasticity() const { return elasticity_; }
   BlockElasticityKernel &block_elasticity() { return elasticity_; }
   /// The kernels of every cell (a new cell kernel of the mechanics is added here).
-  std::vector<const CellKernel *> cell_kernels() const { return {&elasticity_}; }
+  std::vector<const CellKernel *> cell_kernels() const;
   const std::vector<std::unique_ptr<BoundaryCondition>> &conditions() const { return conditions_; }
 
 private:
   BlockElasticityKernel elasticity_;
+  /// rho(T) g of the materials whose density depends on T (null: none, or no gravity).
+  std::unique_ptr<GravityKernel> gravity_;
   std::vector<std::unique_ptr<BoundaryCondition>> conditions_;
 };
 } // namespace kiln

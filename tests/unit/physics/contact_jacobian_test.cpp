@@ -16,6 +16,8 @@
 //   dh/dg term: the heat rows of gap nodes depend on the gap nodes' displacements only) and
 //   closed under compression (the dh/dp term: they also depend on the other nodes of the two
 //   cells), and open but warmer than T_ref (both terms);
+// - the same closed and open-but-warm states with two materials on the two sides of the gap,
+//   side b with E(T) and alpha(T) (each side's p from its own material's model);
 // - with the temperature frozen (freeze_temperature), closed.
 // No perturbation changes the number of pairs in contact (checked at every evaluation). At np 2
 // the partition puts the two nodes of every pair on different ranks, at np 3 half of them.
@@ -480,7 +482,7 @@ void print_pairs(const Fixture &s, const std::string &name, const PairStates &p)
 /// is frozen at its values in x (CoupledProblem::freeze_temperature).
 JacobianCheck run_case(const std::string &name, const Design &design, const std::string &function,
                        const double scale, const Conductance model, const int expected_active,
-                       const bool freeze = false)
+                       const bool freeze = false, const kiln::MaterialMap *materials = nullptr)
 {
   Fixture s;
   EXPECT_EQ(static_cast<int>(s.mesh.gap_pairs.size()), 16);
@@ -497,8 +499,10 @@ JacobianCheck run_case(const std::string &name, const Design &design, const std:
               << split_faces << " of " << s.mesh.gap_faces.size() << " gap faces their cells\n";
   }
   const Teuchos::ParameterList thermal = thermal_block(model, design.T_a);
-  auto problem = s.problem(thermal, mechanics_block(function, scale, 0.5 * design.opening));
-  auto min_problem = s.problem(thermal, mechanics_block("Min", scale, 0.5 * design.opening));
+  auto problem =
+      s.problem(thermal, mechanics_block(function, scale, 0.5 * design.opening), materials);
+  auto min_problem =
+      s.problem(thermal, mechanics_block("Min", scale, 0.5 * design.opening), materials);
   EXPECT_EQ(problem->n_pairs(), 16);
   s.set_time(*problem, design);
   s.set_time(*min_problem, design);
@@ -591,32 +595,91 @@ TEST(ContactJacobian, ContactDependentConductanceOpen)
   EXPECT_EQ(check.gap_T_other_u, 0.0);
 }
 
-TEST(ContactJacobian, ContactDependentConductanceClosed)
+/// Both sides warmer than T_ref and pushed together: p > 0 at every face, g < 0, so only
+/// dh/dp acts (on the displacements of all nodes of the two cells, and the temperatures).
+/// `materials`: a material per block (null: the fixture's everywhere).
+void check_closed_contact_dependent(const std::string &name, const kiln::MaterialMap *materials)
 {
-  // Both sides warmer than T_ref and pushed together: p > 0 at every face, g < 0, so only
-  // dh/dp acts (on the displacements of all nodes of the two cells, and the temperatures).
   Design d;
   d.T_a = 312.0;
   d.T_b = 303.0;
   d.opening = -2.0e-6;
-  const JacobianCheck check = run_case("closed, Contact Dependent conductance", d, "Min", 1.0,
-                                       Conductance::contact_dependent, 16);
+  const JacobianCheck check =
+      run_case(name, d, "Min", 1.0, Conductance::contact_dependent, 16, false, materials);
   EXPECT_GT(check.gap_T_other_u, 1.0e3); // ~ jump * area * h_p (lambda + 2G) / h
   EXPECT_GT(check.gap_T_gap_u, 1.0e3);
 }
 
-TEST(ContactJacobian, ContactDependentConductanceOpenUnderCompression)
+/// Open (g > 0) but warmer than T_ref: p > 0 at every face as well, so dh/dg and dh/dp both
+/// act; P > 0 but c g larger, so every pair stays open.
+void check_open_under_compression(const std::string &name, const kiln::MaterialMap *materials)
 {
-  // Open (g > 0) but warmer than T_ref: p > 0 at every face as well, so dh/dg and dh/dp both
-  // act; P > 0 but c g larger, so every pair stays open.
   Design d;
   d.T_a = 303.0;
   d.T_b = 309.0;
   d.opening = 6.0e-6;
-  const JacobianCheck check = run_case("open and warm, Contact Dependent conductance", d, "Min",
-                                       1.0, Conductance::contact_dependent, 0);
+  const JacobianCheck check =
+      run_case(name, d, "Min", 1.0, Conductance::contact_dependent, 0, false, materials);
   EXPECT_GT(check.gap_T_gap_u, 1.0e3);
   EXPECT_GT(check.gap_T_other_u, 1.0e3);
+}
+
+TEST(ContactJacobian, ContactDependentConductanceClosed)
+{
+  check_closed_contact_dependent("closed, Contact Dependent conductance", nullptr);
+}
+
+TEST(ContactJacobian, ContactDependentConductanceOpenUnderCompression)
+{
+  check_open_under_compression("open and warm, Contact Dependent conductance", nullptr);
+}
+
+/// Two materials on the two sides of the gap (the Contact Dependent conductance takes each
+/// side's own, issue 31): block 1 the fixture's (E 70 GPa, nu 0.33, alpha 2.2e-5, k(T)), so
+/// that the contact scale is the same; block 2 a steel with E(T) a table (210 GPa at 280 K, 170
+/// GPa at 320 K), nu 0.3 and alpha(T) a formula (the secant coefficient from T_ref = 298 K).
+kiln::MaterialMap two_materials()
+{
+  Teuchos::ParameterList kiln_user;
+  Teuchos::ParameterList &a = kiln_user.sublist("Materials").sublist("aluminium");
+  a.set("Blocks", ids({1}));
+  a.set("Young's Modulus", TableMaterial::youngs);
+  a.set("Poisson's Ratio", TableMaterial::poisson);
+  a.set("Thermal Expansion", TableMaterial::alpha);
+  a.set("Reference Temperature", TableMaterial::T_ref);
+  Teuchos::ParameterList &k = a.sublist("Conductivity");
+  k.set("Type", "Table");
+  k.set("Temperatures", values({200.0, 280.0, 400.0}));
+  k.set("Values", values({300.0, 120.0, 360.0}));
+  Teuchos::ParameterList &b = kiln_user.sublist("Materials").sublist("steel");
+  b.set("Blocks", ids({2}));
+  Teuchos::ParameterList &E = b.sublist("Young's Modulus");
+  E.set("Type", "Table");
+  E.set("Temperatures", values({280.0, 320.0}));
+  E.set("Values", values({2.1e11, 1.7e11}));
+  b.set("Poisson's Ratio", 0.3);
+  Teuchos::ParameterList &alpha = b.sublist("Thermal Expansion");
+  alpha.set("Type", "Expression");
+  alpha.set("Expression", "1.2e-5 + 4e-8*(T - 298)");
+  b.set("Reference Temperature", TableMaterial::T_ref);
+  b.set("Conductivity", 50.0);
+  return material_map(kiln_user, {1, 2});
+}
+
+TEST(ContactJacobian, ContactDependentConductanceTwoMaterialsClosed)
+{
+  // dh/dp through each side's tangent and dsigma/dT (the general path of the model layer on
+  // side b).
+  const kiln::MaterialMap materials = two_materials();
+  check_closed_contact_dependent("closed, two materials, Contact Dependent conductance",
+                                 &materials);
+}
+
+TEST(ContactJacobian, ContactDependentConductanceTwoMaterialsOpenUnderCompression)
+{
+  const kiln::MaterialMap materials = two_materials();
+  check_open_under_compression("open and warm, two materials, Contact Dependent conductance",
+                               &materials);
 }
 
 TEST(ContactJacobian, FrozenTemperatureWithContact)

@@ -1,8 +1,8 @@
 // Tests src/physics/materials/material_map.cpp: Kiln/Material for every block, Kiln/Materials
 // by name with their "Blocks", the messages for a block without material, a block in two
 // materials, an unknown block, both lists given, and uniform_material (the first material,
-// for the scales; a density of T refused only with gravity: the heat equation takes several
-// materials and rho(T), c(T), k(T), the mechanics E(T), nu(T), alpha(T)).
+// for the scales: the heat equation takes several materials and rho(T), c(T), k(T), the
+// mechanics E(T), nu(T), alpha(T) and rho(T) g).
 // KILN_TEST_NP: 1
 #include "physics/materials/material_map.hpp"
 
@@ -84,7 +84,6 @@ TEST(MaterialMap, MaterialsByNameOnBlocks)
   EXPECT_EQ(map.of_block(2).density(), 7900.0);
   // Both physics take them by block; the scales take the first.
   EXPECT_EQ(map.uniform_material().density(), 2700.0);
-  EXPECT_EQ(map.uniform_material(true).density(), 2700.0);
   EXPECT_EQ(map.material_of_block().at(2), 1);
   // One named material for every block is what Kiln/Material is.
   Teuchos::ParameterList one;
@@ -169,13 +168,10 @@ TEST(MaterialMap, PropertiesOfTemperatureAndTheDensityUnderGravity)
   c.set("Type", "Table");
   c.set("Temperatures", Teuchos::Array<double>(Teuchos::tuple(300.0, 500.0)));
   c.set("Values", Teuchos::Array<double>(Teuchos::tuple(450.0, 520.0)));
-  // The heat equation takes rho(T) and c(T) (its enthalpy); so does the mechanics without
-  // gravity.
+  // The heat equation takes rho(T) and c(T) (its enthalpy); the mechanics rho(T) g (a
+  // GravityKernel: tests/unit/physics/gravity_kernel_test.cpp).
   EXPECT_FALSE(make(rho_of_T).uniform_material().enthalpy().is_linear());
-  EXPECT_EQ(kiln_test::input_error_message([&] { make(rho_of_T).uniform_material(true); }),
-            "in.xml: Kiln/Material/\"Density\": depends on temperature, but the body force "
-            "rho g (Mechanics/\"Gravity\") takes a constant density yet; give a number (the "
-            "value at the temperatures of interest), or no Gravity");
+  EXPECT_FALSE(make(rho_of_T).uniform_material().density_function().is_constant());
 }
 
 TEST(MaterialMap, ModelSublistChoosesTheMechanicalModel)
