@@ -116,9 +116,10 @@ void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::str
                            << other_gap_side_sets(interface_.mesh(), node, interface_.gap())
                            << " and its displacement conditions "
                            << condition_names(constraints, constraints.directions(node))
-                           << "), so the node is over-determined. Mesh the gaps so that at most "
-                              "three independent directions meet at a node, or make gaps that "
-                              "meet in a line one gap side set");
+                           << "), so the node is over-determined: its normals and held "
+                              "directions must be linearly independent. Remove a displacement "
+                              "condition there or one of the gaps, or mesh the gaps so that "
+                              "their normals and the held directions at a node are independent");
       KILN_ASSERT(dot(constraints.frame_axis_so_far(node, slot), free) > 1.0 - 1e-12,
                   "the axis of node " << node << " is not its free normal");
       (node == pair.a ? axis.slot_a : axis.slot_b) = slot;
