@@ -8,9 +8,38 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace kiln
 {
+namespace
+{
+/// The names of the displacement conditions of `directions`, quoted ("none" if none).
+std::string condition_names(const NodalConstraints &constraints,
+                            const std::vector<NodalConstraints::Direction> &directions)
+{
+  std::string text;
+  for (const auto &d : directions)
+    text += (text.empty() ? "\"" : ", \"") + constraints.value_name(d.value) + "\"";
+  return text.empty() ? std::string("none") : text;
+}
+
+/// The ids of the gap side sets other than `gap` (an index) with a pair at `node`.
+std::string other_gap_side_sets(const Mesh &mesh, const int node, const int gap)
+{
+  std::vector<int> ids;
+  for (const GapPair &p : mesh.gap_pairs)
+    if ((p.node_a == node || p.node_b == node) && p.gap != gap &&
+        std::find(ids.begin(), ids.end(), mesh.gap_side_sets[p.gap]) == ids.end())
+      ids.push_back(mesh.gap_side_sets[p.gap]);
+  std::string text;
+  for (const int id : ids)
+    text += (text.empty() ? "" : ", ") + std::to_string(id);
+  return text.empty() ? std::string("none") : text;
+}
+} // namespace
+
 CondensedPairs::CondensedPairs(const ContactInterface &interface, const DofManager &dofs,
                                const NodalConstraints &constraints)
     : InterfaceStrategy(interface, dofs), constraints_(constraints),
@@ -28,12 +57,7 @@ void CondensedPairs::check_alike(const NodalConstraints &constraints,
   if (alike)
     return;
   const auto names = [&](const std::vector<NodalConstraints::Direction> &directions)
-  {
-    std::string text;
-    for (const auto &d : directions)
-      text += (text.empty() ? "\"" : ", \"") + constraints.value_name(d.value) + "\"";
-    return text.empty() ? std::string("none") : text;
-  };
+  { return condition_names(constraints, directions); };
   const Point &x = interface_.mesh().coordinates[pair.a];
   KILN_CHECK_INPUT(false, where,
                    "cannot pair gap nodes "
@@ -75,21 +99,29 @@ void CondensedPairs::claim_normals(NodalConstraints &constraints, const std::str
     axis.leaning = length < 1.0 - 1e-12;
     for (const int node : {pair.a, pair.b})
     {
+      // Where gaps cross, each pair of the node claims its own normal as an axis of the node's
+      // frame (perpendicular or not: the frame's dual basis keeps each pair's multiplier in its
+      // own row); a normal in the span of the node's other axes over-determines it.
       const int slot = constraints.add_free_axis(node, pair.normal);
-      // Where gaps cross, each pair of the node claims its own normal: they must be
-      // perpendicular there for each to be an axis of the node's frame.
-      const double along = slot < 0 ? 0.0 : dot(constraints.frame_axis_so_far(node, slot), free);
       const Point &x = mesh_points[node];
-      KILN_CHECK_INPUT(1.0 - along <= 1e-12, where,
-                       "cannot hold: gap node "
+      KILN_CHECK_INPUT(slot >= 0, where,
+                       "cannot hold gap node "
                            << node << " at (" << x[0] << ", " << x[1] << ", " << x[2]
-                           << ") is on gaps whose normals there are not perpendicular (the "
-                              "normal of its pair with node "
-                           << (node == pair.a ? pair.b : pair.a) << " leans by "
-                           << std::acos(std::min(1.0, along))
-                           << " rad from the plane of the others' and its conditions'); Kiln "
-                              "holds crossing gaps at right angles: mesh them so, or make them "
-                              "one gap side set");
+                           << "): the normal of its pair with node "
+                           << (node == pair.a ? pair.b : pair.a) << " across gap side set "
+                           << interface_.mesh().gap_side_sets[interface_.gap()] << " lies (within "
+                           << NodalConstraints::min_sine
+                           << " rad) in the span of the directions the node already has (the "
+                              "normals of its pairs across gap side sets "
+                           << other_gap_side_sets(interface_.mesh(), node, interface_.gap())
+                           << " and its displacement conditions "
+                           << condition_names(constraints, constraints.directions(node))
+                           << "), so the node is over-determined: its normals and held "
+                              "directions must be linearly independent. Remove a displacement "
+                              "condition there or one of the gaps, or mesh the gaps so that "
+                              "their normals and the held directions at a node are independent");
+      KILN_ASSERT(dot(constraints.frame_axis_so_far(node, slot), free) > 1.0 - 1e-12,
+                  "the axis of node " << node << " is not its free normal");
       (node == pair.a ? axis.slot_a : axis.slot_b) = slot;
     }
     axes_.push_back(axis);
@@ -116,8 +148,8 @@ void CondensedPairs::claim_free_axes(NodalConstraints &constraints, const std::s
     std::array<Point, 4> candidates{pair.normal, Point{1, 0, 0}, Point{0, 1, 0}, Point{0, 0, 1}};
     for (std::size_t c = 0; c < candidates.size(); ++c)
     {
-      const int slot_a = constraints.add_free_axis(pair.a, candidates[c]);
-      const int slot_b = constraints.add_free_axis(pair.b, candidates[c]);
+      const int slot_a = constraints.add_free_axis(pair.a, candidates[c], c > 0);
+      const int slot_b = constraints.add_free_axis(pair.b, candidates[c], c > 0);
       KILN_ASSERT((slot_a < 0) == (slot_b < 0), "the frames of a tied pair differ");
       if (slot_a >= 0)
         axes_.push_back({static_cast<int>(k), slot_a, slot_b, c == 0, c == 0 && !perpendicular});
@@ -250,15 +282,16 @@ void CondensedPairs::add_terms(Assembler &assembler) const
       const Axis &axis = axes_[l];
       const ContactInterface::Pair &pair = interface_.pairs()[k];
       const Point d = direction(l);
-      // d(A C)/dû = A c dC/d(cg) dg/dû, g = d.(u_b - u_a), u = sum_k û_k q_k: the columns of
-      // the unknowns that are not constrained (those are fixed at their prescribed values).
+      // d(A C)/dû = A c dC/d(cg) dg/dû, g = d.(u_b - u_a), u = sum_k û_k t_k (the dual axes):
+      // the columns of the unknowns that are not constrained (those are fixed at their
+      // prescribed values).
       const double w = pair.area * pair.c * value_[l].dC_dcg;
       local.clear();
       // Row b gets them; row a, which is R_a + R_b - A C, minus them.
       for (int side = 0; side < 2; ++side)
       {
         const int node = side == 0 ? pair.a : pair.b;
-        const auto &q = constraints_.axes(node);
+        const auto &q = constraints_.dual_axes(node);
         for (int c = constraints_.n_constrained(node); c < 3; ++c)
         {
           const double v = (side == 0 ? -w : w) * dot(d, q[c]);

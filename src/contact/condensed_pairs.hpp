@@ -49,8 +49,10 @@ protected:
                  const NodalConstraints &constraints);
   /// Claims the gap normal of every pair (its first axis): the component of the normal that
   /// the nodes' displacement conditions leave free (none: the pair is held by them, and has
-  /// no axis). Throws InputError (naming `where`) when the two nodes are constrained in
-  /// different directions, or the normals of gaps that cross at a node are not perpendicular.
+  /// no axis). Where gaps cross, a node's normals need not be perpendicular (the frame is then
+  /// not orthonormal: NodalConstraints). Throws InputError (naming `where`) when the two nodes
+  /// are constrained in different directions, or a normal lies in the span of the node's other
+  /// normals and held directions (NodalConstraints::add_free_axis()).
   void claim_normals(NodalConstraints &constraints, const std::string &where);
   /// Throws InputError (naming `where`) unless the pair's two nodes have the same constrained
   /// directions.

@@ -6,10 +6,30 @@
 #include "mesh/hex_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace kiln
 {
+namespace
+{
+/// The dual basis of q: t_k with q_j . t_k = delta_jk (t_0 = q_1 x q_2 / det, and cyclic).
+std::array<Point, 3> dual_basis(const std::array<Point, 3> &q)
+{
+  std::array<Point, 3> t{};
+  for (int k = 0; k < 3; ++k)
+  {
+    const Point &a = q[(k + 1) % 3], &b = q[(k + 2) % 3];
+    t[k] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+  const double det = dot(q[0], t[0]);
+  for (Point &v : t)
+    for (double &x : v)
+      x /= det;
+  return t;
+}
+} // namespace
+
 NodalConstraints::NodalConstraints(const Mesh &mesh, const DofManager &dofs)
     : mesh_(mesh), dofs_(dofs), F_(dofs.n_node_fields()), T_slot_(dofs.layout().slot(Field::T)),
       u_slot_(dofs.layout().slot(Field::ux)), temperature_value_(mesh.n_nodes(), -1),
@@ -49,6 +69,7 @@ void NodalConstraints::constrain_direction(const int node, const Point &n, const
   KILN_ASSERT(frame.n_free == 0, "a constraint added after a free axis at node " << node);
   if (frame.basis.size() < 3 && append_orthonormal(frame.basis, n))
   {
+    frame.axes.push_back(frame.basis.back());
     frame.value[frame.n_constrained] = value;
     frame.n[frame.n_constrained] = n;
     ++frame.n_constrained;
@@ -66,20 +87,44 @@ std::vector<NodalConstraints::Direction> NodalConstraints::directions(const int 
   return result;
 }
 
-int NodalConstraints::add_free_axis(const int node, const Point &n)
+int NodalConstraints::add_free_axis(const int node, const Point &n, const bool complete)
 {
   KILN_ASSERT(!closed_ && u_slot_ >= 0, "add_free_axis() after close() or without u");
   Frame &frame = frame_of(node);
-  if (frame.basis.size() >= 3 || !append_orthonormal(frame.basis, n))
+  std::vector<Point> basis = frame.basis;
+  if (basis.size() >= 3 || !append_orthonormal(basis, n))
     return -1;
+  // n made orthogonal to all the axes so far (as before the frames could lean) ...
+  Point axis = basis.back();
+  if (!complete)
+  {
+    // ... or to the constrained directions only, where n leans to the free axes there: the
+    // frame is then not orthonormal (doc/contact.md, "Gaps that cross").
+    std::vector<Point> held(frame.basis.begin(), frame.basis.begin() + frame.n_constrained);
+    if (!append_orthonormal(held, n))
+      return -1;
+    const Point &free = held.back();
+    // axis is the part of `free` off the span of the other axes: their dot is the sine of the
+    // angle between `free` and that span.
+    const double sine = dot(axis, free);
+    if (sine < 1.0 - 1e-12)
+    {
+      if (sine < min_sine)
+        return -1;
+      axis = free;
+      frame.orthonormal = false;
+    }
+  }
+  frame.basis = std::move(basis);
+  frame.axes.push_back(axis);
   ++frame.n_free;
-  return static_cast<int>(frame.basis.size()) - 1;
+  return static_cast<int>(frame.axes.size()) - 1;
 }
 
 const Point &NodalConstraints::frame_axis_so_far(const int node, const int slot) const
 {
   KILN_ASSERT(!closed_ && has_frame(node), "frame_axis_so_far() after close() or without a frame");
-  return frames_[frame_of_node_[node]].basis.at(slot);
+  return frames_[frame_of_node_[node]].axes.at(slot);
 }
 
 void NodalConstraints::close(const double conductivity, const double modulus)
@@ -90,10 +135,13 @@ void NodalConstraints::close(const double conductivity, const double modulus)
     {
       Point e{};
       e[d] = 1.0;
-      append_orthonormal(frame.basis, e);
+      if (append_orthonormal(frame.basis, e))
+        frame.axes.push_back(frame.basis.back());
     }
-    std::copy(frame.basis.begin(), frame.basis.end(), frame.q.begin());
+    std::copy(frame.axes.begin(), frame.axes.end(), frame.q.begin());
     frame.basis.clear();
+    frame.axes.clear();
+    frame.t = frame.orthonormal ? frame.q : dual_basis(frame.q);
   }
   closed_ = true;
   const std::vector<double> sums = stiffness_sums();
@@ -151,6 +199,16 @@ const std::array<Point, 3> &NodalConstraints::axes(const int node) const
   return has_frame(node) ? frames_[frame_of_node_[node]].q : identity;
 }
 
+const std::array<Point, 3> &NodalConstraints::dual_axes(const int node) const
+{
+  return has_frame(node) ? frames_[frame_of_node_[node]].t : axes(node);
+}
+
+bool NodalConstraints::orthonormal(const int node) const
+{
+  return !has_frame(node) || frames_[frame_of_node_[node]].orthonormal;
+}
+
 int NodalConstraints::n_constrained(const int node) const
 {
   return has_frame(node) ? frames_[frame_of_node_[node]].n_constrained : 0;
@@ -170,7 +228,9 @@ std::array<double, 3> NodalConstraints::prescribed_components(const int node, co
 std::array<double, 3> NodalConstraints::prescribed_components(const Frame &frame,
                                                               const double t) const
 {
-  // n_l . u = g_l with u = sum_k û_k q_k and n_l . q_k = 0 for k > l: forward substitution.
+  // n_l . u = g_l with u = sum_k û_k t_k, where t_k = q_k for the constrained axes k < m (they
+  // are orthonormal and orthogonal to the others) and n_l . t_k = 0 for k > l: forward
+  // substitution.
   KILN_ASSERT(closed_, "prescribed values before close()");
   const auto &q = frame.q;
   std::array<double, 3> u_hat{};
@@ -199,7 +259,7 @@ Point NodalConstraints::displacement(const int node, const double *unknowns) con
     u_hat[k] = frame.prescribed[k];
   Point u{};
   for (int d = 0; d < 3; ++d)
-    u[d] = frame.q[0][d] * u_hat[0] + frame.q[1][d] * u_hat[1] + frame.q[2][d] * u_hat[2];
+    u[d] = frame.t[0][d] * u_hat[0] + frame.t[1][d] * u_hat[1] + frame.t[2][d] * u_hat[2];
   return u;
 }
 
@@ -212,8 +272,8 @@ void NodalConstraints::distribute(const std::vector<int> &nodes, LocalSystem &lo
     {
       if (!has_frame(nodes[i]))
         continue;
-      const auto &q = frames_[frame_of_node_[nodes[i]]].q;
-      // Rows: R̂_k = q_k . R; columns: dR/dû_k = dR/du . q_k.
+      const auto &q = frames_[frame_of_node_[nodes[i]]].t;
+      // Rows: R̂_k = t_k . R; columns: dR/dû_k = dR/du . t_k (t = q where orthonormal).
       Point r{};
       for (int k = 0; k < 3; ++k)
         for (int d = 0; d < 3; ++d)

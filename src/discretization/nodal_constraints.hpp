@@ -27,9 +27,13 @@ class Assembler;
 ///   solve of the displacement).
 ///
 /// How they enter (doc/mechanics.md, "Exact constraints"). A node with displacement
-/// constraints or free axes has an orthonormal frame Q = [q_0 q_1 q_2]: its constrained
-/// directions (Gram-Schmidt in the order given), its free axes, then the coordinate axes. Its
-/// unknowns are û = Q^T u and its rows are rotated alike (Q^T R). Every row is evaluated at
+/// constraints or free axes has a frame of axes q_0, q_1, q_2: its constrained directions
+/// (Gram-Schmidt in the order given), its free axes, then the coordinate axes. Its unknowns are
+/// û_k = q_k . u, so u = sum_k û_k t_k with t the dual basis (q_j . t_k = delta_jk), and its
+/// rows are t_k . R (Galerkin: the Jacobian stays symmetric). A free axis is made orthogonal
+/// to the constrained directions only, so the free axes of a node need not be perpendicular
+/// (gaps that cross at an angle, doc/contact.md); the completion is orthogonal to all. Where
+/// the axes are orthonormal (most frames), t = q and û = Q^T u. Every row is evaluated at
 /// x~, x with each constrained unknown replaced by its prescribed value (temperature(),
 /// displacement()); a constrained row is s (x_c - g_c(t)) with s a stiffness scale of the node
 /// (add_rows()); distribute() removes the rows and columns of constrained unknowns from each
@@ -61,12 +65,19 @@ public:
   };
   /// The node's constrained directions, in order.
   std::vector<Direction> directions(int node) const;
-  /// Makes n.u at `node` an unknown of its own: the node's frame gets n (made orthogonal to
-  /// its constrained directions) right after them. Returns the slot of that unknown among the
-  /// node's displacement unknowns, or -1 if n lies in the span of the constrained directions.
-  int add_free_axis(int node, const Point &n);
+  /// Makes n.u at `node` an unknown of its own: the node's frame gets n, made orthogonal to
+  /// its constrained directions (and with `complete` to all its axes so far, as close()
+  /// completes a frame), as its next axis. Returns the slot of that unknown among the node's
+  /// displacement unknowns, or -1 if the frame is full or n lies in the span of its axes so
+  /// far: within 1e-6 (of its length) for a `complete` axis or one perpendicular to the
+  /// others, within `min_sine` (the sine of the angle between n and that span) for one that
+  /// leans to the free axes already there.
+  int add_free_axis(int node, const Point &n, bool complete = false);
+  /// The smallest sine of the angle between a leaning free axis and the span of the node's
+  /// other axes (add_free_axis()): below it the directions are taken as dependent.
+  static constexpr double min_sine = 1e-3;
   /// Before close(): axis `slot` of the node's frame so far (its constrained directions and
-  /// free axes, orthonormal); `slot` was returned by add_free_axis().
+  /// free axes); `slot` was returned by add_free_axis().
   const Point &frame_axis_so_far(int node, int slot) const;
   /// Completes every frame with the coordinate axes and sets the scales of the constraint
   /// rows, s = c ∫|∇φ_i|^2 dΩ with c the conductivity k [W/(m K)] for a temperature and the
@@ -86,8 +97,13 @@ public:
   const std::string &value_name(const int value) const { return value_names_[value]; }
   bool has_temperature(const int node) const { return temperature_value_[node] >= 0; }
   bool has_frame(const int node) const { return frame_of_node_[node] >= 0; }
-  /// The frame axes of a node (the coordinate axes if it has no frame).
+  /// The frame axes q_k of a node, û_k = q_k . u (the coordinate axes if it has no frame).
   const std::array<Point, 3> &axes(int node) const;
+  /// The dual axes t_k of a node, u = sum_k û_k t_k and rows t_k . R (q_j . t_k = delta_jk;
+  /// the same as axes() where those are orthonormal).
+  const std::array<Point, 3> &dual_axes(int node) const;
+  /// Whether the node's frame axes are orthonormal (true without a frame).
+  bool orthonormal(int node) const;
   /// The number of constrained displacement directions of a node.
   int n_constrained(int node) const;
   /// The prescribed temperature of a node at t [K] (it must have one).
@@ -98,11 +114,12 @@ public:
   /// The physical temperature [K] of mesh node `node` from its unknowns (x at the node's
   /// first unknown): the prescribed value where constrained.
   double temperature(int node, const double *unknowns) const;
-  /// The physical displacement u = Q û~ [m] of mesh node `node` from its unknowns, with the
-  /// constrained components at their prescribed values.
+  /// The physical displacement u = sum_k û~_k t_k [m] of mesh node `node` from its unknowns, with
+  /// the constrained components at their prescribed values.
   Point displacement(int node, const double *unknowns) const;
 
-  /// Rotates the displacement rows and columns of framed nodes into their frames, then
+  /// Turns the displacement rows and columns of framed nodes into their frames (t_k . R,
+  /// dR/du t_k), then
   /// removes the rows and columns of constrained unknowns and the rows of held ones;
   /// nodes[i] is the mesh node of local node i.
   void distribute(const std::vector<int> &nodes, LocalSystem &local) const;
@@ -112,8 +129,11 @@ public:
 private:
   struct Frame
   {
-    std::vector<Point> basis;           ///< while set up: the axes so far
-    std::array<Point, 3> q{};           ///< orthonormal axes; q[0..m) the constrained ones
+    std::vector<Point> basis;           ///< while set up: an orthonormal basis of the axes' span
+    std::vector<Point> axes;            ///< while set up: the axes so far
+    std::array<Point, 3> q{};           ///< the axes, û_k = q_k . u; q[0..m) the constrained ones
+    std::array<Point, 3> t{};           ///< the dual axes, u = sum_k û_k t_k
+    bool orthonormal = true;            ///< q orthonormal (then t = q)
     int n_constrained = 0;              ///< m
     int n_free = 0;                     ///< free axes after the constrained ones
     std::array<int, 3> value{};         ///< the value of constraint l

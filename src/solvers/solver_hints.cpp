@@ -58,7 +58,8 @@ SolverHints::SolverHints(const Mesh &mesh, const DofManager &dofs,
     }
     if (u_slot >= 0)
     {
-      // Rigid-body modes in the node's unknowns (û = Q^T u where it has a frame).
+      // Rigid-body modes in the node's unknowns (û_k = q_k . u where it has a frame, q its
+      // axes: NodalConstraints::axes(), orthonormal or not).
       const Point r{x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]};
       const std::array<Point, 6> modes = {Point{1, 0, 0},        Point{0, 1, 0},
                                           Point{0, 0, 1},        Point{0, -r[2], r[1]},

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace kiln_test
@@ -44,7 +45,21 @@ kiln::Mesh generate(const BoxShape &box, const bool mid_y = false, const bool mi
   p.set("Phi", box.phi);
   p.set("Theta", box.theta);
   p.set("Translation", values({box.shift[0], box.shift[1], box.shift[2]}));
-  return kiln::BoxMeshGenerator(p, "test/Box").generate(mid_y, mid_z);
+  kiln::Mesh mesh = kiln::BoxMeshGenerator(p, "test/Box").generate(mid_y, mid_z);
+  if (box.shear != 0.0)
+  {
+    // x_block += shear z_block, y_block += shear z_block; x = A x_block + shift.
+    const auto A = kiln::rotation_matrix(box.phi, box.theta);
+    for (kiln::Point &x : mesh.coordinates)
+    {
+      double z_block = 0.0;
+      for (int d = 0; d < 3; ++d)
+        z_block += A[d][2] * (x[d] - box.shift[d]);
+      for (int d = 0; d < 3; ++d)
+        x[d] += box.shear * z_block * (A[d][0] + A[d][1]);
+    }
+  }
+  return mesh;
 }
 } // namespace
 
@@ -65,6 +80,36 @@ std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &proble
         q[i][k][d] = u[i][d] - u0[i][d];
   }
   return q;
+}
+
+std::array<double, 3> frame_components(const std::array<kiln::Point, 3> &t, const kiln::Point &u)
+{
+  // The free components solve G û = (t_j . u) with G_jk = t_j . t_k over the free axes (they
+  // are orthogonal to the constrained ones): Gauss-Jordan on at most 3 x 3.
+  std::vector<int> free;
+  for (int k = 0; k < 3; ++k)
+    if (std::sqrt(kiln::dot(t[k], t[k])) > 0.5)
+      free.push_back(k);
+  const std::size_t m = free.size();
+  std::vector<std::vector<double>> G(m, std::vector<double>(m + 1));
+  for (std::size_t j = 0; j < m; ++j)
+  {
+    for (std::size_t k = 0; k < m; ++k)
+      G[j][k] = kiln::dot(t[free[j]], t[free[k]]);
+    G[j][m] = kiln::dot(t[free[j]], u);
+  }
+  for (std::size_t c = 0; c < m; ++c)
+    for (std::size_t r = 0; r < m; ++r)
+      if (r != c)
+      {
+        const double f = G[r][c] / G[c][c];
+        for (std::size_t k = c; k <= m; ++k)
+          G[r][k] -= f * G[c][k];
+      }
+  std::array<double, 3> u_hat{};
+  for (std::size_t j = 0; j < m; ++j)
+    u_hat[free[j]] = G[j][m] / G[j][j];
+  return u_hat;
 }
 
 double jacobian_error(const ProblemFixture &s, kiln::CoupledProblem &problem,

@@ -39,6 +39,10 @@ struct BoxShape
   std::array<int, 3> cells;
   double phi = 0.0, theta = 0.0; ///< [degrees]
   kiln::Point shift{0.0, 0.0, 0.0};
+  /// x += shear z and y += shear z in the block frame (before the rotation): the planes
+  /// z = const stay, the planes x = const and y = const slant, so that no two of the three
+  /// families are perpendicular.
+  double shear = 0.0;
 };
 
 /// The box, split at side set `gap_side_set` (0: not split).
@@ -48,6 +52,11 @@ kiln::Mesh box_mesh(const BoxShape &box, int gap_side_set);
 /// problem: the physical direction of each displacement unknown, zero where it is
 /// constrained, read back through node_displacements(). Collective.
 std::vector<std::array<kiln::Point, 3>> node_frames(kiln::CoupledProblem &problem);
+
+/// The components û_k of a displacement u [m] in a node's frame given by node_frames() (t_k,
+/// u = sum_k û_k t_k, zero vectors for constrained components, which get 0): the frame need not
+/// be orthonormal (gaps that cross at an angle).
+std::array<double, 3> frame_components(const std::array<kiln::Point, 3> &t, const kiln::Point &u);
 
 /// The largest difference between J at x of a Thermo-Elasticity problem and its central
 /// differences (steps 1e-3 K, 1e-9 m), relative to the largest entry of its row in its block

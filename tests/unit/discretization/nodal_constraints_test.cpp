@@ -7,7 +7,9 @@
 // - temperature() and displacement(): x~, the prescribed values in place of the unknowns;
 // - distribute(): rows and columns rotated into the frames, constrained rows and columns
 //   removed, a held temperature's row alone removed; residual-only systems alike;
-// - add_rows(): s (x - g) and x_T - T_held with the scale of the node.
+// - add_rows(): s (x - g) and x_T - T_held with the scale of the node;
+// - free axes that lean to each other (gaps that cross at an angle): the frame keeps them, the
+//   dual basis gives u and the rows, a nearly dependent one is refused.
 // KILN_TEST_NP: 1 2
 #include "discretization/nodal_constraints.hpp"
 
@@ -98,6 +100,72 @@ TEST(NodalConstraints, FramesFollowTheDirectionsInOrder)
   const auto u_hat = s.constraints.prescribed_components(0, 2.0);
   EXPECT_NEAR(u_hat[0], 2e-3, 1e-17);
   EXPECT_EQ(u_hat[2], 0.0);
+}
+
+TEST(NodalConstraints, LeaningFreeAxesGetTheDualBasis)
+{
+  // Node 0: a roller along z, then two free axes at 60 degrees in the plane z = 0 (after the
+  // roller's part is taken out of the second): the frame (z, n1, n2') is not orthonormal; the
+  // unknowns are n_k . u and u = sum_k u_k t_k with the dual axes. Node 1: a free axis, then
+  // one within the 1e-3 sine of its span (refused), then a perpendicular one (orthonormal
+  // frame, t = q). Node 2: three free axes in one plane: the third is refused.
+  Fixture s;
+  const int g = s.constraints.add_value("roller", [](const double t) { return 1e-3 * t; });
+  const Point z{0.0, 0.0, 1.0}, n1{1.0, 0.0, 0.0};
+  const Point n2 = unit({0.5, std::sqrt(3.0) / 2.0, 0.3});
+  s.constraints.constrain_direction(0, z, g);
+  EXPECT_EQ(s.constraints.add_free_axis(0, n1), 1);
+  EXPECT_EQ(s.constraints.add_free_axis(0, n2), 2);
+  EXPECT_EQ(s.constraints.add_free_axis(1, n1), 0);
+  EXPECT_EQ(s.constraints.add_free_axis(1, unit({1.0, 5e-4, 0.0})), -1);
+  EXPECT_EQ(s.constraints.add_free_axis(1, {0.0, 1.0, 0.0}), 1);
+  EXPECT_EQ(s.constraints.add_free_axis(2, n1), 0);
+  EXPECT_EQ(s.constraints.add_free_axis(2, unit({1.0, 1.0, 0.0})), 1);
+  EXPECT_EQ(s.constraints.add_free_axis(2, unit({1.0, -2.0, 0.0})), -1);
+  s.constraints.close(1.0, 1.0);
+  s.constraints.set_time(2.0);
+
+  EXPECT_FALSE(s.constraints.orthonormal(0));
+  EXPECT_TRUE(s.constraints.orthonormal(1));
+  EXPECT_TRUE(s.constraints.orthonormal(3));
+  const auto &q = s.constraints.axes(0);
+  const auto &t = s.constraints.dual_axes(0);
+  const Point n2_free = unit({0.5, std::sqrt(3.0) / 2.0, 0.0});
+  EXPECT_NEAR(kiln::dot(q[1], n1), 1.0, 1e-15);
+  EXPECT_NEAR(kiln::dot(q[2], n2_free), 1.0, 1e-15);
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(kiln::dot(q[j], t[k]), j == k ? 1.0 : 0.0, 1e-15) << j << k;
+  EXPECT_EQ(s.constraints.dual_axes(1), s.constraints.axes(1));
+
+  // u from the unknowns: the roller's value along z, and n_k . u = u_k for the free axes.
+  const double unknowns[4] = {300.0, 9.0, 3e-4, -7e-4};
+  const Point u = s.constraints.displacement(0, unknowns);
+  EXPECT_NEAR(kiln::dot(z, u), 2e-3, 1e-18);
+  EXPECT_NEAR(kiln::dot(n1, u), 3e-4, 1e-18);
+  EXPECT_NEAR(kiln::dot(n2_free, u), -7e-4, 1e-18);
+
+  // distribute(): node 0's rows are t_k . R and its columns J t_k.
+  kiln::LocalSystem local(1, 4);
+  std::mt19937 random(3u);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  for (double &v : local.residual_values())
+    v = value(random);
+  for (double &v : local.jacobian_values())
+    v = value(random);
+  kiln::LocalSystem original = local;
+  s.constraints.distribute({0}, local);
+  for (int k = 1; k < 3; ++k)
+  {
+    double row = 0.0;
+    for (int d = 0; d < 3; ++d)
+      row += t[k][d] * original.residual(1 + d, 0);
+    EXPECT_NEAR(local.residual(1 + k, 0), row, 1e-15);
+    double column = 0.0;
+    for (int d = 0; d < 3; ++d)
+      column += original.jacobian(0, 0, 1 + d, 0) * t[k][d];
+    EXPECT_NEAR(local.jacobian(0, 0, 1 + k, 0), column, 1e-15);
+  }
 }
 
 TEST(NodalConstraints, DistributeRotatesAndEliminates)

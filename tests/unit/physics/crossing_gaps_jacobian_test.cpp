@@ -9,6 +9,11 @@
 // three faces x-, y-, z- only and "Free Motions" = "Minimum Norm", every pair open, so that
 // pairs are held shut where the bodies would be freer than at set-up (doc/contact.md, "Free
 // motions while pairs open": tied rows at nodes with two and three gaps and held directions).
+// The same box sheared (x += 0.3 z and y += 0.3 z in its frame) so that no two of its gap
+// planes are perpendicular, nor the slanted outer faces (rollers) to the gap planes they cut:
+// nodes with two and three non-perpendicular normals, and with held directions leaning to
+// them, in frames that are not orthonormal (doc/contact.md, "Gaps that cross"); cut at all three
+// mid-planes and at x = 0 and z = 0 only.
 // Each block's entries agree with the finite differences to 1e-7 of the largest in its row.
 // KILN_TEST_NP: 1 2 3
 #include "physics/coupled_problem.hpp"
@@ -21,6 +26,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -102,21 +108,24 @@ Vector state(ProblemFixture &s, kiln::CoupledProblem &problem, const double T, c
       for (int d = 0; d < 3; ++d)
         u[d] -= delta * (along > 0.0 ? 1.0 : -1.0) * A[d][axis];
     }
+    const std::array<double, 3> u_hat = frame_components(q[i], u);
     for (int k = 0; k < 3; ++k)
       if (std::sqrt(kiln::dot(q[i][k], q[i][k])) > 0.5)
-        x.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), kiln::dot(q[i][k], u));
+        x.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), u_hat[k]);
   }
   return x;
 }
 
 struct Crossed : ProblemFixture
 {
-  Crossed()
-      : ProblemFixture(crossed_box({{0.02, 0.02, 0.02}, {2, 2, 2}, phi, theta}, {10, 11, 12}),
+  explicit Crossed(const double shear = 0.0, const std::vector<int> &gaps = {10, 11, 12})
+      : ProblemFixture(crossed_box({{0.02, 0.02, 0.02}, {2, 2, 2}, phi, theta, {}, shear}, gaps),
                        kiln::DofLayout{true, true, true})
   {
   }
 };
+
+constexpr double shear = 0.3;
 
 TEST(CrossingGapsJacobian, MeshHasEightBodiesAndThreePairsAtTheCentre)
 {
@@ -167,18 +176,89 @@ TEST(CrossingGapsJacobian, SlidingAndBonded)
   }
 }
 
-TEST(CrossingGapsJacobian, ContactOpenPairsHeldShutWithMinimumNorm)
+/// Rollers on x-, y-, z- only and "Free Motions" = "Minimum Norm", every pair open by about
+/// 4e-7 m, the openings made distinct by the random part (3e-8 m), so that the least open
+/// pairs, which are held shut, stay the same under the 1e-9 m steps.
+void check_open_pairs_held_shut(const double box_shear)
 {
-  Crossed s;
+  Crossed s(box_shear);
   Teuchos::ParameterList mechanics = mechanics_block("Contact", {1, 3, 5});
   mechanics.set("Free Motions", "Minimum Norm");
   auto problem = s.problem(thermal_block(), mechanics);
-  // Every pair open by about 4e-7 m, the openings made distinct by the random part (3e-8 m),
-  // so that the least open pairs, which are held shut, stay the same under the 1e-9 m steps.
   Vector x = state(s, *problem, 285.0, -2.0e-7, 3.0e-8);
   const int shut = problem->n_active_pairs(x);
   EXPECT_GT(shut, 0) << "no pair held shut";
   EXPECT_LT(shut, 48);
   EXPECT_LE(jacobian_error(s, *problem, x, shut), tolerance);
+}
+
+TEST(CrossingGapsJacobian, ContactOpenPairsHeldShutWithMinimumNorm)
+{
+  check_open_pairs_held_shut(0.0);
+}
+
+TEST(CrossingGapsJacobian, ShearedFramesAreNotOrthonormal)
+{
+  // The frames of the centre's copies: three gap normals, no two perpendicular, so that the
+  // unknowns' directions (the dual axes) are not orthogonal either.
+  Crossed s(shear);
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  const std::vector<std::array<Point, 3>> t = node_frames(*problem);
+  const auto &owned = s.dofs.owned_nodes();
+  int leaning = 0;
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (std::sqrt(kiln::dot(s.mesh.coordinates[owned[i]], s.mesh.coordinates[owned[i]])) < 1e-12)
+    {
+      const double worst =
+          std::max({std::abs(kiln::dot(t[i][0], t[i][1])), std::abs(kiln::dot(t[i][0], t[i][2])),
+                    std::abs(kiln::dot(t[i][1], t[i][2]))});
+      EXPECT_GT(worst, 0.05) << "node " << owned[i];
+      ++leaning;
+    }
+  int all = 0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, leaning, Teuchos::outArg(all));
+  EXPECT_EQ(all, 8);
+}
+
+TEST(CrossingGapsJacobian, ShearedContactAllClosed)
+{
+  Crossed s(shear);
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  Vector x = state(s, *problem, 340.0, 2.0e-7, 1.0e-9);
+  EXPECT_LE(jacobian_error(s, *problem, x, 48), tolerance);
+}
+
+TEST(CrossingGapsJacobian, ShearedContactAllOpen)
+{
+  Crossed s(shear);
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  Vector x = state(s, *problem, 285.0, -2.0e-7, 1.0e-9);
+  EXPECT_LE(jacobian_error(s, *problem, x, 0), tolerance);
+}
+
+TEST(CrossingGapsJacobian, ShearedTwoGapsClosed)
+{
+  // Gaps at x = 0 and z = 0 only: the mid-edge copies on y = 0 have two non-perpendicular
+  // normals, those on the outer faces y = +-0.01 a roller too (perpendicular to both).
+  Crossed s(shear, {10, 12});
+  auto problem = s.problem(thermal_block(), mechanics_block("Contact"));
+  Vector x = state(s, *problem, 340.0, 2.0e-7, 1.0e-9);
+  EXPECT_LE(jacobian_error(s, *problem, x, 24), tolerance);
+}
+
+TEST(CrossingGapsJacobian, ShearedSlidingAndBonded)
+{
+  for (const std::string kind : {"Sliding", "Bonded"})
+  {
+    Crossed s(shear);
+    auto problem = s.problem(thermal_block(), mechanics_block(kind));
+    Vector x = state(s, *problem, 310.0, 1.0e-7, 3.0e-8);
+    EXPECT_LE(jacobian_error(s, *problem, x, 48), tolerance) << kind;
+  }
+}
+
+TEST(CrossingGapsJacobian, ShearedContactOpenPairsHeldShutWithMinimumNorm)
+{
+  check_open_pairs_held_shut(shear);
 }
 } // namespace
