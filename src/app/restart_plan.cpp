@@ -70,6 +70,9 @@ std::string RestartPlan::earlier_results()
   if (cut_off)
   {
     const std::string moved = base + ".interrupted" + extension;
+    // Every rank has looked for the files before rank 0 moves one: a rank that looked after
+    // would find neither and go on alone (the ranks then wait in different collectives).
+    comm_->barrier();
     if (comm_->getRank() == 0)
       std::filesystem::rename(base + ".running" + extension, moved);
     comm_->barrier();

@@ -191,25 +191,20 @@ TEST(RestartPlan, MissingResultsWarn)
                              "the restart\n");
 }
 
-TEST(RestartPlan, AnotherRunsResultsAreRefused)
+TEST(RestartPlan, ResultsOfAnotherRunOrOfNoneAreRefused)
 {
-  Fixture f;
-  f.write_results(f.base + ".h5", "theirs", {0.0});
-  kiln::RestartPlan plan = f.plan("c.h5");
-  EXPECT_THAT(input_error_message([&] { plan.earlier_results(); }),
-              HasSubstr(f.base + ".h5: was written by another run (run fingerprint theirs) than "
-                                 "the checkpoint c.h5 (run fingerprint ours: its mesh, physics "
-                                 "and initial state): the restart would append to the results "
-                                 "of another run, and nothing was written."));
-}
-
-TEST(RestartPlan, ResultsWithoutFingerprintAreRefused)
-{
-  Fixture f;
-  f.write_results(f.base + ".h5", "", {0.0});
-  kiln::RestartPlan plan = f.plan("c.h5");
-  EXPECT_THAT(input_error_message([&] { plan.earlier_results(); }),
-              HasSubstr(f.base + ".h5: has no run fingerprint (the attribute run_fingerprint), "
-                                 "so it cannot be shown to belong to the run of the checkpoint "
-                                 "c.h5"));
+  // (the results' run fingerprint, "" for none; what the message says of them)
+  const std::pair<std::string, std::string> cases[] = {
+      {"theirs", ".h5: was written by another run (run fingerprint theirs) than the checkpoint "
+                 "c.h5 (run fingerprint ours: its mesh, physics and initial state): the restart "
+                 "would append to the results of another run, and nothing was written."},
+      {"", ".h5: has no run fingerprint (the attribute run_fingerprint), so it cannot be shown "
+           "to belong to the run of the checkpoint c.h5"}};
+  for (const auto &[digest, message] : cases)
+  {
+    Fixture f;
+    f.write_results(f.base + ".h5", digest, {0.0});
+    kiln::RestartPlan plan = f.plan("c.h5");
+    EXPECT_THAT(input_error_message([&] { plan.earlier_results(); }), HasSubstr(f.base + message));
+  }
 }
