@@ -4,6 +4,7 @@
 #include "app/memory_estimate.hpp"
 #include "app/output_schedule.hpp"
 #include "app/progress_report.hpp"
+#include "app/restart_plan.hpp"
 #include "app/results_lock.hpp"
 #include "app/run_observer.hpp"
 #include "base/errors.hpp"
@@ -238,21 +239,6 @@ void Simulation::check()
                               << " s; remove it or add a later time to Kiln/Output/\"Times\"");
 }
 
-namespace
-{
-/// True if `path` names Exodus results (BASE.exo), else they are HDF5.
-bool is_exodus(const std::string &path)
-{
-  return path.size() > 4 && path.compare(path.size() - 4, 4, ".exo") == 0;
-}
-
-/// The summary of the HDF5 or Exodus results file `path`.
-ResultsSummary summary_of_results(const std::string &path)
-{
-  return is_exodus(path) ? exodus_results_summary(path) : results_summary(path);
-}
-} // namespace
-
 Simulation::Ending Simulation::run()
 {
   check();
@@ -271,18 +257,15 @@ Simulation::Ending Simulation::run()
           : std::make_unique<const ResultsLock>(checkpoints.base() + ".lock", *comm_,
                                                 "checkpoints with this Checkpoint/File Base",
                                                 "Kiln/Checkpoint/\"File Base\"");
-  const bool fresh = restart_.empty();
+  restart_plan_ = std::make_unique<RestartPlan>(
+      restart_, outputs_->file_base(), outputs_->writes_hdf5() ? ".h5" : ".exo",
+      RunFingerprint::of(mesh_, layout_, params_).digest(), comm_, out_);
+  const bool fresh = restart_plan_->fresh();
   TimeStepper::State state = fresh ? start() : resume();
-  KILN_CHECK_INPUT(fresh || state.time < outputs_->end_time() * (1.0 - 1e-12), restart_,
-                   "the checkpoint's time, t = "
-                       << state.time << " s, is at or past the end of this run, the last output "
-                       << "time " << outputs_->end_time()
-                       << " s: there is nothing left to compute, and nothing was written. To go "
-                          "on, add later times to Kiln/Output/\"Times\" of "
-                       << input_path_);
+  restart_plan_->check_time_left(state.time, outputs_->end_time(), input_path_);
   // A continued run's results start with the earlier run's, read before the new files open.
-  const std::string earlier_results = fresh ? "" : earlier_results_file();
-  open_results(!fresh && earlier_results.empty() ? restart_output_steps_ : 0);
+  const std::string earlier_results = restart_plan_->earlier_results();
+  open_results(restart_plan_->first_gap_step(earlier_results));
   const int output_steps =
       earlier_results.empty() ? 0 : continue_results(earlier_results, state.time);
   HistoryCsv history = open_history(state);
@@ -374,7 +357,7 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
   std::vector<HistoryColumn> columns = history_columns(mesh_.gap_side_sets);
   // A restart writes its history beside an earlier one it would shorten (finish_results()).
   const std::string running = outputs_->file_base() + ".running.history.csv";
-  if (restart_.empty())
+  if (restart_plan_->fresh())
   {
     // A new run: the history of a restart cut off before (of the results it replaces) goes.
     std::error_code ignored;
@@ -410,10 +393,9 @@ TimeStepper::State Simulation::start()
 std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
                                            const CheckpointSchedule &checkpoints) const
 {
-  const bool fresh = restart_.empty();
-  std::vector<double> all = outputs_->stop_times(state.time, fresh);
+  std::vector<double> all = outputs_->stop_times(state.time, restart_plan_->fresh());
   for (const double t : checkpoints.times())
-    if (fresh ? t >= state.time : t > state.time * (1.0 + 1e-12) + 1e-12)
+    if (restart_plan_->ahead(t, state.time))
       all.push_back(t);
   std::sort(all.begin(), all.end());
   std::vector<double> stops;
@@ -448,8 +430,8 @@ Simulation::files_written(const std::string &checkpoint) const
 
 TimeStepper::State Simulation::resume()
 {
-  Checkpoint c = read_checkpoint(restart_, RunFingerprint::of(mesh_, layout_, params_),
-                                 problem_->solution_map(), *comm_, problem_->quadrature_state());
+  Checkpoint c = restart_plan_->read(RunFingerprint::of(mesh_, layout_, params_),
+                                     problem_->solution_map(), problem_->quadrature_state());
   const int active = problem_->resume(c.state.time, *c.state.x);
   int saved_active = 0;
   for (const int a : c.info.active)
@@ -463,62 +445,9 @@ TimeStepper::State Simulation::resume()
   if (active != saved_active)
     *out_ << "warning: the checkpoint says " << saved_active
           << " gap pairs were in contact; its state gives " << active << "\n";
-  restart_output_steps_ = c.info.output_steps;
   newton_->restore_preconditioner_origin(std::move(c.info.preconditioner_origin));
   solution_ = c.state.x;
   return c.state;
-}
-
-std::string Simulation::earlier_results_file()
-{
-  // BASE.running.h5 if the earlier run was cut off (moved aside, as the new run writes that
-  // name), else BASE.h5; with Exodus output only, the same of BASE.exo.
-  const std::string base = outputs_->file_base();
-  const std::string extension = outputs_->writes_hdf5() ? ".h5" : ".exo";
-  const std::string complete = base + extension;
-  const bool cut_off = std::filesystem::exists(base + ".running" + extension);
-  if (cut_off || std::filesystem::exists(complete))
-    check_same_run(cut_off ? base + ".running" + extension : complete);
-  // The complete results of the run continued stay until this run has passed them.
-  if (std::filesystem::exists(complete))
-  {
-    const ResultsSummary earlier = summary_of_results(complete);
-    if (earlier.run_fingerprint == RunFingerprint::of(mesh_, layout_, params_).digest())
-      kept_results_end_ = earlier.end_time;
-  }
-  if (cut_off)
-  {
-    const std::string moved = base + ".interrupted" + extension;
-    if (comm_->getRank() == 0)
-      std::filesystem::rename(base + ".running" + extension, moved);
-    comm_->barrier();
-    *out_ << "results: " << base << ".running" << extension
-          << " of a run that was cut off is kept as " << moved << "\n";
-    return moved;
-  }
-  if (std::filesystem::exists(base + extension))
-    return base + extension;
-  *out_ << "warning: " << base << extension
-        << " (the earlier run's results) is missing; the results start at the restart\n";
-  return "";
-}
-
-void Simulation::check_same_run(const std::string &results) const
-{
-  // Every rank reads the attribute of the same file: the check gives one answer.
-  const std::string theirs = summary_of_results(results).run_fingerprint;
-  const std::string ours = RunFingerprint::of(mesh_, layout_, params_).digest();
-  KILN_CHECK_INPUT(theirs == ours, results,
-                   (theirs.empty() ? "has no run fingerprint (the attribute run_fingerprint), so "
-                                     "it cannot be shown to belong to the run of the checkpoint "
-                                   : "was written by another run (run fingerprint " + theirs +
-                                         ") than the checkpoint ")
-                       << restart_ << " (run fingerprint " << ours
-                       << ": its mesh, physics and initial state): the restart would append to "
-                          "the results of another run, and nothing was written. Restart with "
-                          "that run's checkpoint, give the checkpoint's run its own "
-                          "Kiln/Output/\"File Base\", or move "
-                       << results << " aside (the results then start at the restart)");
 }
 
 int Simulation::continue_results(const std::string &source, const double time)
@@ -529,30 +458,24 @@ int Simulation::continue_results(const std::string &source, const double time)
   ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells(), {}};
   for (const GapPair &pair : mesh_.gap_pairs)
     rows.gap_pairs.emplace_back(pair.node_a, pair.node_b);
-  const int n = is_exodus(source)
+  const int n = restart_plan_->exodus_results()
                     ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
                     : replay_results(source, time, rows, writers, *comm_);
   *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
         << " continue in " << outputs_->results_files(false) << "\n";
-  if (n != restart_output_steps_)
-    *out_ << "warning: the checkpoint was written after " << restart_output_steps_
-          << " output steps, but " << source << " holds " << n << " up to its time\n";
+  restart_plan_->check_replayed(n, source);
   return n;
 }
 
 void Simulation::finish_results(const std::string &status, const double time, HistoryCsv &history)
 {
-  const double kept_end = std::max(kept_results_end_, history.kept_end());
-  if (time < kept_end * (1.0 - 1e-12) - 1e-12)
+  const RestartPlan::Kept kept = restart_plan_->kept(time, history.kept_end());
+  if (kept.aside)
   {
     // A restart that stopped before it passed the results (or the history) of the run it
     // continued: those stay whole under BASE, and this run's go beside them.
-    const std::string base = outputs_->file_base();
-    const std::string aside = base + ".restarted";
-    results_aside_ = outputs_->results_files();
-    for (std::size_t at = 0; (at = results_aside_.find(base + ".", at)) != std::string::npos;
-         at += aside.size() + 1)
-      results_aside_.replace(at, base.size(), aside);
+    const std::string aside = restart_plan_->aside_base();
+    results_aside_ = restart_plan_->aside(outputs_->results_files());
     for (const auto &writer : writers_)
       writer->set_final_base(aside);
     const bool history_aside = history.path() != outputs_->history_path();
@@ -560,13 +483,12 @@ void Simulation::finish_results(const std::string &status, const double time, Hi
       history.finish(aside + ".history.csv");
     // The files kept: the results if they are the continued run's, the history if this run
     // wrote beside it.
-    const bool results_kept = time < kept_results_end_ * (1.0 - 1e-12) - 1e-12;
     const std::string history_kept = history_aside ? outputs_->history_path() : "";
     *out_ << "results: "
-          << (results_kept ? outputs_->results_files(false) +
+          << (kept.results ? outputs_->results_files(false) +
                                  (history_aside ? " and " + history_kept : std::string())
                            : history_kept)
-          << " of the run continued (to t = " << kept_end
+          << " of the run continued (to t = " << kept.end
           << " s) are kept whole, as this run stopped at t = " << time
           << " s, before it passed them; this run's results are in " << results_aside_
           << (history_aside ? ", its history in " + history.path() : std::string()) << "\n";

@@ -13,7 +13,6 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <chrono>
-#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -27,6 +26,7 @@ class GapCsvWriter;
 class HistoryCsv;
 class OutputSchedule;
 class ResultsWriter;
+class RestartPlan;
 class NewtonSolver;
 class CoupledProblem;
 
@@ -97,19 +97,12 @@ private:
   /// The "key: value" lines of the files written, for the summary.
   std::vector<std::pair<std::string, std::string>>
   files_written(const std::string &checkpoint) const;
-  /// The results (HDF5, or Exodus with Exodus output only) of the run a restart continues, or
-  /// "" if there are none; notes the end of a BASE.h5 (BASE.exo) of the same run, kept until
-  /// this run passes it.
-  std::string earlier_results_file();
-  /// Refuses (InputError naming both files) the earlier `results` if their run fingerprint is
-  /// not this run's, the checkpoint's: a restart appends only to its own run's results.
-  void check_same_run(const std::string &results) const;
   /// The earlier run's output steps in `source` up to `time` into this run's results;
   /// returns their number.
   int continue_results(const std::string &source, double time);
   /// Gives the results files and the `history` their final names, recording `status`. The
   /// earlier run's results and history are kept if this run, at `time` [s], has not passed
-  /// them both (the new ones then get the base BASE.restarted).
+  /// them both (the new ones then get the base BASE.restarted: RestartPlan::kept).
   void finish_results(const std::string &status, double time, HistoryCsv &history);
   /// The results writers of Output/"Format", the gap tables (their first output step
   /// `first_gap_step`) and the field output.
@@ -123,11 +116,9 @@ private:
   std::string input_path_;
   std::string input_xml_; ///< the input as given
   std::string mesh_file_;
-  std::string restart_;          ///< the checkpoint to continue from, or ""
-  int restart_output_steps_ = 0; ///< the output steps written before the checkpoint
-  /// The last output time of the continued run's BASE.h5 (BASE.exo), kept until this run
-  /// passes it [s].
-  double kept_results_end_ = -std::numeric_limits<double>::infinity();
+  std::string restart_; ///< the checkpoint to continue from, or ""
+  /// What run() does with the checkpoint and the files of the run it continues.
+  std::unique_ptr<RestartPlan> restart_plan_;
   std::string results_aside_; ///< this run's results files, if not under BASE
   std::string history_file_;  ///< this run's history as finished, or "" before
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

@@ -39,6 +39,12 @@ public:
     id_ = -1;
     return id;
   }
+  /// Closes the identifier now; the closer's status (negative: closing failed).
+  herr_t close()
+  {
+    const hid_t id = release();
+    return id >= 0 && closer_ != nullptr ? closer_(id) : 0;
+  }
   void reset()
   {
     if (id_ >= 0 && closer_ != nullptr)

@@ -36,6 +36,17 @@ void quiet_hdf5_errors()
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
 }
 
+QuietHdf5Errors::QuietHdf5Errors()
+{
+  H5Eget_auto2(H5E_DEFAULT, &old_function_, &old_data_);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+QuietHdf5Errors::~QuietHdf5Errors()
+{
+  H5Eset_auto2(H5E_DEFAULT, old_function_, old_data_);
+}
+
 std::string hdf5_failure_reason()
 {
   std::vector<std::string> descriptions;

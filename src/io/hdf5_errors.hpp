@@ -1,5 +1,7 @@
 #pragma once
 /// Private to src/io: HDF5 failures as one Kiln message instead of HDF5's error stack.
+#include <hdf5.h>
+
 #include <string>
 
 namespace kiln
@@ -10,6 +12,21 @@ namespace internal
 /// Kiln makes is checked, and a failure becomes one Kiln message naming the file and the
 /// system's reason (hdf5_failure_reason()).
 void quiet_hdf5_errors();
+
+/// Silences HDF5's printout of its error stack while it lives, and restores the printout
+/// that was set before (for calls whose failure becomes a Kiln error message instead).
+class QuietHdf5Errors
+{
+public:
+  QuietHdf5Errors();
+  ~QuietHdf5Errors();
+  QuietHdf5Errors(const QuietHdf5Errors &) = delete;
+  QuietHdf5Errors &operator=(const QuietHdf5Errors &) = delete;
+
+private:
+  H5E_auto2_t old_function_ = nullptr;
+  void *old_data_ = nullptr;
+};
 
 /// The system's reason for the HDF5 failure just seen, read from HDF5's error stack (e.g.
 /// "No space left on device", "File too large"), or "" if the stack names none. Call it right

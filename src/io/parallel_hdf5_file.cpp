@@ -25,25 +25,6 @@ namespace internal
 {
 namespace
 {
-/// Silences the HDF5 error stack printout while it lives (for calls whose failure
-/// becomes a Kiln error message instead).
-class QuietHdf5Errors
-{
-public:
-  QuietHdf5Errors()
-  {
-    H5Eget_auto2(H5E_DEFAULT, &old_func_, &old_data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, old_func_, old_data_); }
-  QuietHdf5Errors(const QuietHdf5Errors &) = delete;
-  QuietHdf5Errors &operator=(const QuietHdf5Errors &) = delete;
-
-private:
-  H5E_auto2_t old_func_ = nullptr;
-  void *old_data_ = nullptr;
-};
-
 std::string directory_of(const std::string &path)
 {
   const auto slash = path.find_last_of('/');

@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "io/field_catalog.hpp"
 #include "io/h5_handle.hpp"
+#include "io/hdf5_errors.hpp"
 
 #include <hdf5.h>
 
@@ -130,12 +131,9 @@ int internal::write_replayed(const std::string &path, const std::string &error,
 ResultsSummary results_summary(const std::string &path)
 {
   using internal::H5Handle;
-  H5E_auto2_t old_function = nullptr;
-  void *old_data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   ResultsSummary summary{"", -std::numeric_limits<double>::infinity()};
   {
+    const internal::QuietHdf5Errors quiet;
     const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     const H5Handle a(file.valid() && H5Aexists(file.get(), "run_fingerprint") > 0
                          ? H5Aopen(file.get(), "run_fingerprint", H5P_DEFAULT)
@@ -164,7 +162,6 @@ ResultsSummary results_summary(const std::string &path)
           // A step without its time (cut off while it was begun) ends nothing.
         }
   }
-  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
   return summary;
 }
 
@@ -177,12 +174,9 @@ int replay_results(const std::string &path, const double until, const ReplayRows
   // Every rank reads the steps (serial HDF5, read-only), then each writes its rows.
   std::vector<Step> steps;
   std::string error;
-  H5E_auto2_t old_function = nullptr;
-  void *old_data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try
   {
+    const internal::QuietHdf5Errors quiet;
     const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     if (!file.valid())
       throw std::runtime_error("not a readable HDF5 file");
@@ -239,7 +233,6 @@ int replay_results(const std::string &path, const double until, const ReplayRows
   {
     error = e.what();
   }
-  H5Eset_auto2(H5E_DEFAULT, old_function, old_data);
   return internal::write_replayed(path, error, steps, writers, comm);
 }
 } // namespace kiln

@@ -13,7 +13,8 @@ namespace internal
 class RowGather
 {
 public:
-  /// `owned`: this rank's rows, increasing; `n_rows`: the rows of all ranks.
+  /// `owned`: this rank's rows (in any order; each row owned by one rank); `n_rows`: the rows
+  /// of all ranks.
   RowGather(MPI_Comm comm, const std::vector<int> &owned, int n_rows);
   std::size_t n_owned() const { return n_owned_; }
   /// On rank 0 the values of every row, component after component (component c of row r at

@@ -4,6 +4,7 @@
 
 #include "base/errors.hpp"
 #include "mesh/exodus_file.hpp"
+#include "mesh/side_set_nodes.hpp"
 
 #include <exodusII.h>
 #include <kiln/version.hpp>
@@ -169,13 +170,7 @@ ExodusLayout exodus_layout(const Mesh &mesh, const std::vector<int> &gap_side_se
     }
     layout.side_set_names.push_back(name);
 
-    std::vector<int> nodes;
-    for (int i = 0; i < set.n_sides(); ++i)
-      for (const int n : mesh.face_nodes(set.cells[i], set.faces[i]))
-        nodes.push_back(n);
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    layout.side_set_nodes.push_back(std::move(nodes));
+    layout.side_set_nodes.push_back(side_set_nodes(mesh, set));
   }
   return layout;
 }

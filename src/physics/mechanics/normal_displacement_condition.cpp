@@ -2,8 +2,11 @@
 
 #include "discretization/face_values.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "mesh/side_set_nodes.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace kiln
 {
@@ -35,32 +38,39 @@ void NormalDisplacementCondition::add_constraints(const Mesh &mesh,
   FaceValues fv;
   for (const int id : side_sets())
   {
-    std::vector<Point> normal(mesh.n_nodes(), Point{});
-    std::vector<int> touched;
     const SideSet &set = *mesh.find_side_set(id);
+    // The side set's own nodes (increasing) and their normals: nothing sized to the mesh.
+    const std::vector<int> nodes = side_set_nodes(mesh, set);
+    const auto index_of = [&nodes](const int node)
+    {
+      return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), node) -
+                                      nodes.begin());
+    };
+    std::vector<Point> normal(nodes.size(), Point{});
+    std::vector<std::size_t> touched; // indices into nodes, in the order the faces reach them
     for (int s = 0; s < set.n_sides(); ++s)
     {
       fv.reinit(mesh, set.cells[s], set.faces[s]);
       for (int i = 0; i < fv.n_shape(); ++i)
       {
-        const int node = mesh.face_node(set.cells[s], set.faces[s], i);
-        if (dot(normal[node], normal[node]) == 0.0)
-          touched.push_back(node);
+        const std::size_t k = index_of(mesh.face_node(set.cells[s], set.faces[s], i));
+        if (dot(normal[k], normal[k]) == 0.0)
+          touched.push_back(k);
         // The node's normal: its faces' normals weighted by |N_i| (N_i itself for linear
         // faces; a TRI6 corner's N_i integrates to 0 and a QUAD8 corner's to a negative
         // share of the area, which would give it no normal or the inward one).
         for (int q = 0; q < fv.n_qpoints(); ++q)
           for (int d = 0; d < 3; ++d)
-            normal[node][d] += std::abs(fv.shape(i, q)) * fv.normal(q)[d] * fv.JxW(q);
+            normal[k][d] += std::abs(fv.shape(i, q)) * fv.normal(q)[d] * fv.JxW(q);
       }
     }
-    for (const int node : touched)
+    for (const std::size_t k : touched)
     {
-      Point n = normal[node];
+      Point n = normal[k];
       const double length = std::sqrt(dot(n, n));
       for (double &x : n)
         x /= length;
-      constraints.constrain_direction(node, n, values.at(node));
+      constraints.constrain_direction(nodes[k], n, values.at(nodes[k]));
     }
   }
 }
