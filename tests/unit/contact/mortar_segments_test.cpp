@@ -89,6 +89,9 @@ struct Layout
   double offset = 0.01; ///< d: the secondary's height above the primary (before the rotation)
   double shift = 0.0;   ///< the secondary moved along x by this
   double radius = 0.0;  ///< > 0: both on the cylinder z = R - sqrt(R^2 - (x - 1/2)^2)
+  /// Moves the inner nodes in the plane (the primary's one way, the secondary's the other):
+  /// quadrilaterals that are no parallelograms.
+  double distortion = 0.0;
   double angles[2] = {0, 0};
 };
 
@@ -105,17 +108,21 @@ struct Assembled
 Assembled assemble(const Layout &l)
 {
   Assembled a;
-  const auto placement = [&l](const double height, const double shift)
+  const auto placement = [&l](const double height, const double shift, const double distortion)
   {
-    return [&l, height, shift](const double x, const double y)
+    return [&l, height, shift, distortion](const double x0, const double y0)
     {
+      const double pi = std::acos(-1.0);
+      const double x = x0 + distortion * x0 * (1 - x0) * std::sin(2 * pi * y0),
+                   y = y0 + distortion * y0 * (1 - y0) * std::sin(2 * pi * x0);
       const double d = x - 0.5;
       const double z = (l.radius > 0 ? l.radius - std::sqrt(l.radius * l.radius - d * d) : 0.0);
       return rotate({x + shift, y, z + height}, l.angles[0], l.angles[1]);
     };
   };
-  a.primary = grid(l.nx_m, l.ny_m, placement(0.0, 0.0), false, l.triangles_m);
-  a.secondary = grid(l.nx_s, l.ny_s, placement(l.offset, l.shift), true, l.triangles_s);
+  a.primary = grid(l.nx_m, l.ny_m, placement(0.0, 0.0, l.distortion), false, l.triangles_m);
+  a.secondary =
+      grid(l.nx_s, l.ny_s, placement(l.offset, l.shift, -l.distortion), true, l.triangles_s);
   a.normal = rotate({0, 0, 1}, l.angles[0], l.angles[1]);
   const std::size_t n_s = a.secondary.x.size(), n_m = a.primary.x.size();
   a.D.assign(n_s, std::vector<double>(n_s, 0.0));
@@ -151,8 +158,9 @@ double sum_D(const Assembled &a)
 }
 
 /// The checks of a flat pair with the secondary at height `offset`: D diagonal with D_jj > 0,
-/// sum D = `area`, the row sums of M = D_jj, the weighted gap / D_jj = offset, and the
-/// secondary nodes' coordinates reproduced by D and M: D_jj n.x_j - Σ M_jk n.x_k = the gap.
+/// sum D = `area`, the row sums of M = D_jj, the weighted gap / D_jj = offset, and M
+/// reproducing the primary's coordinates (linear in both bases): the twin point
+/// Σ_k M_jk x_k / D_jj is x_j moved back across the gap, x_j - offset n.
 void expect_flat_pair(const Assembled &a, const double offset, const double area)
 {
   EXPECT_NEAR(sum_D(a), area, 1e-14);
@@ -160,20 +168,24 @@ void expect_flat_pair(const Assembled &a, const double offset, const double area
   {
     const double Djj = a.D[j][j];
     EXPECT_GT(Djj, 0.0) << "node " << j;
-    double off_diagonal = 0, row_M = 0, gap_DM = Djj * kiln_test::dot(a.normal, a.secondary.x[j]);
+    double off_diagonal = 0, row_M = 0;
+    Point twin{0, 0, 0};
     for (std::size_t k = 0; k < a.D.size(); ++k)
       off_diagonal += k == j ? 0.0 : std::abs(a.D[j][k]);
     for (std::size_t k = 0; k < a.M[j].size(); ++k)
     {
       row_M += a.M[j][k];
-      gap_DM -= a.M[j][k] * kiln_test::dot(a.normal, a.primary.x[k]);
+      for (int d = 0; d < 3; ++d)
+        twin[d] += a.M[j][k] * a.primary.x[k][d] / Djj;
     }
     // Round-off of the face's integrals (the surface's area is 1): D_jj is 4e-7 on a face
     // covered by 0.5%, its off-diagonal entries 2e-19.
     EXPECT_LT(off_diagonal, 1e-16 + 1e-14 * Djj) << "node " << j;
     EXPECT_NEAR(row_M, Djj, 1e-14) << "node " << j;
     EXPECT_NEAR(a.gap[j] / Djj, offset, 1e-12) << "node " << j;
-    EXPECT_NEAR(gap_DM / Djj, offset, 1e-12) << "node " << j;
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(twin[d], a.secondary.x[j][d] - offset * a.normal[d], 1e-12)
+          << "node " << j << ", component " << d;
   }
 }
 } // namespace
@@ -381,4 +393,29 @@ TEST(MortarFaceIntegrals, TrianglesAgainstQuadrilaterals)
   both.triangles_s = both.triangles_m = true;
   both.offset = -0.02;
   expect_flat_pair(assemble(both), both.offset, 1.0);
+}
+
+TEST(MortarFaceIntegrals, DistortedQuadrilaterals)
+{
+  // The inner nodes moved in the plane by up to 0.15 / 4 (faces that are no parallelograms:
+  // xi on each face by Newton), rotated: still D diagonal, sum D = 1, the gap exact.
+  Layout l;
+  l.distortion = 0.6;
+  l.angles[0] = 0.3;
+  l.angles[1] = 0.2;
+  const Assembled a = assemble(l);
+  const Point moved = rotate({0.25, 0.25, 0}, 0.3, 0.2); // where inner node 6 was
+  EXPECT_GT(kiln_test::norm({a.primary.x[6][0] - moved[0], a.primary.x[6][1] - moved[1],
+                             a.primary.x[6][2] - moved[2]}),
+            0.05);
+  expect_flat_pair(a, l.offset, 1.0);
+  for (const bool triangles : {true, false})
+  {
+    SCOPED_TRACE(triangles ? "TRI3 secondary" : "TRI3 primary");
+    Layout t = l;
+    t.triangles_s = triangles;
+    t.triangles_m = !triangles;
+    t.offset = -0.02;
+    expect_flat_pair(assemble(t), t.offset, 1.0);
+  }
 }
