@@ -3,8 +3,9 @@
 // design"): two non-matching surfaces on the unit square, the primary at z = 0 facing +z, the
 // secondary at z = d facing it, every secondary face integrated against every primary face (no
 // search). Checks: D diagonal, sum D = the covered area, the row sums of M = D_jj (flat), the
-// weighted gap / D_jj = d; rotated in 3D, on a cylinder, with a column of faces partly covered,
-// with triangles; and an overlap computed by hand.
+// weighted gap / D_jj = d, the twin point Σ M_jk x_k / D_jj; rotated in 3D, on a cylinder, with
+// a column of faces partly covered, with triangles, with distorted quadrilaterals; the dual
+// basis on a quarter of a face; and an overlap computed by hand.
 #include "base/errors.hpp"
 #include "contact/dual_basis.hpp"
 #include "contact/mortar_face_integrals.hpp"
