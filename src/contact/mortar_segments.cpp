@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace kiln
 {
@@ -97,11 +98,13 @@ Point reference_centre(const CellType type)
 }
 
 /// The reference coordinates of the point of `face` on the line y + l n (Newton on
-/// x(xi) - l n = y from the face's centre; one step for an affine face).
+/// x(xi) - l n = y from the face's centre; one step for an affine face). InternalError if it
+/// does not converge (a face nearly parallel to n): never a wrong point without a word.
 Point project_along(const MortarFace &face, const Point &y, const Point &n)
 {
   Point xi = reference_centre(face.type);
-  for (int iteration = 0; iteration < 30; ++iteration)
+  double step = 1.0;
+  for (int iteration = 0; iteration < 30 && !(step < 1e-15); ++iteration)
   {
     Point x, a, b;
     map_face(face, xi, x, a, b);
@@ -112,9 +115,13 @@ Point project_along(const MortarFace &face, const Point &y, const Point &n)
     const double ds = dot(r, cross(b, c)) / det, dt = dot(a, cross(r, c)) / det;
     xi[0] -= ds;
     xi[1] -= dt;
-    if (std::abs(ds) + std::abs(dt) < 1e-15)
-      break;
+    step = std::abs(ds) + std::abs(dt);
   }
+  if (!(step < 1e-12))
+    throw InternalError("MortarSegments: the projection onto a " +
+                        ReferenceCell::of(face.type).name() +
+                        " face along the secondary normal did not converge (last step " +
+                        std::to_string(step) + ")");
   return xi;
 }
 } // namespace
