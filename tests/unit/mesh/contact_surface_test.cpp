@@ -159,6 +159,30 @@ TEST(ContactSurface, TriangleFaces)
   EXPECT_NEAR(total_area, 4.0, 1e-13);
 }
 
+TEST(ContactSurface, QuadAndTriangleFacesTogether)
+{
+  // The MIXED box: HEX8 for x < 0, tetrahedra (and pyramids on x = 0) for x > 0; its top
+  // z = +1 has two QUAD4 and four TRI3 faces.
+  const double phi = 20.0, theta = 35.0;
+  const ContactSurface surface(box("MIXED", phi, theta), 6, pair);
+  int quads = 0, triangles = 0;
+  for (int f = 0; f < surface.n_faces(); ++f)
+  {
+    quads += surface.face_type(f) == kiln::CellType::quad4;
+    triangles += surface.face_type(f) == kiln::CellType::tri3;
+  }
+  EXPECT_EQ(quads, 2);
+  EXPECT_EQ(triangles, 4);
+  EXPECT_EQ(surface.n_nodes(), 9);
+  double total_area = 0.0;
+  for (int j = 0; j < surface.n_nodes(); ++j)
+  {
+    total_area += surface.nodal_area(j);
+    expect_near(surface.normal(j), rotated_z(phi, theta), 1e-14);
+  }
+  EXPECT_NEAR(total_area, 4.0, 1e-13);
+}
+
 TEST(ContactSurface, MovedSurface)
 {
   const Mesh mesh = box("HEX8");
