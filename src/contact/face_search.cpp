@@ -41,13 +41,14 @@ FaceSearch::FaceSearch(std::vector<BoundingBox> boxes, const double cell_size)
   origin_ = all.lo;
   for (int d = 0; d < 3; ++d)
     n_buckets_[d] = static_cast<int>(std::floor((all.hi[d] - all.lo[d]) / cell_size_)) + 1;
+  // Each face in the bucket of its box's lower corner; span_ the most buckets a box reaches
+  // beyond it (1 with the largest face as the cell: a box is no wider than its face).
   for (int f = 0; f < n_faces(); ++f)
   {
     const BoundingBox &box = boxes_[f];
-    for (int i = bucket(0, box.lo[0]); i <= bucket(0, box.hi[0]); ++i)
-      for (int j = bucket(1, box.lo[1]); j <= bucket(1, box.hi[1]); ++j)
-        for (int k = bucket(2, box.lo[2]); k <= bucket(2, box.hi[2]); ++k)
-          entries_.emplace_back(key(i, j, k), f);
+    for (int d = 0; d < 3; ++d)
+      span_[d] = std::max(span_[d], bucket(d, box.hi[d]) - bucket(d, box.lo[d]));
+    entries_.emplace_back(key(bucket(0, box.lo[0]), bucket(1, box.lo[1]), bucket(2, box.lo[2])), f);
   }
   std::sort(entries_.begin(), entries_.end());
 }
@@ -69,18 +70,31 @@ std::vector<int> FaceSearch::candidates(const BoundingBox &box, const double rea
   if (boxes_.empty())
     return found;
   const BoundingBox query = box.grown(reach);
-  for (int i = bucket(0, query.lo[0]); i <= bucket(0, query.hi[0]); ++i)
-    for (int j = bucket(1, query.lo[1]); j <= bucket(1, query.hi[1]); ++j)
-      for (int k = bucket(2, query.lo[2]); k <= bucket(2, query.hi[2]); ++k)
+  // A box that meets the query has its lower corner at most span_ buckets below the query's.
+  const auto first = [&](const int d) { return std::max(0, bucket(d, query.lo[d]) - span_[d]); };
+  const int k_lo = first(2), k_hi = bucket(2, query.hi[2]);
+  for (int i = first(0); i <= bucket(0, query.hi[0]); ++i)
+  {
+    auto it = entries_.begin();
+    for (int j = first(1); j <= bucket(1, query.hi[1]); ++j)
+    {
+      // The buckets (i, j, k_lo .. k_hi) are consecutive keys, after those of (i, j - 1): a
+      // galloping search from there, then a scan.
+      const auto start = std::make_pair(key(i, j, k_lo), -1);
+      auto end = it;
+      for (std::ptrdiff_t step = 1; end != entries_.end() && *end < start; step *= 2)
       {
-        const std::int64_t b = key(i, j, k);
-        auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(b, -1));
-        for (; it != entries_.end() && it->first == b; ++it)
-          if (boxes_[it->second].overlaps(query))
-            found.push_back(it->second);
+        it = end;
+        end = entries_.end() - it > step ? it + step : entries_.end();
       }
+      it = std::lower_bound(it, end, start);
+      const std::int64_t last = key(i, j, k_hi);
+      for (; it != entries_.end() && it->first <= last; ++it)
+        if (boxes_[it->second].overlaps(query))
+          found.push_back(it->second);
+    }
+  }
   std::sort(found.begin(), found.end());
-  found.erase(std::unique(found.begin(), found.end()), found.end());
   return found;
 }
 } // namespace kiln

@@ -1,8 +1,10 @@
 #pragma once
 /// The contact search (issue 30, doc/contact.md "Search"): the primary faces' bounding boxes in
 /// a grid of buckets whose cell is the largest primary face's diameter, so that a box spans at
-/// most two cells per axis. A query with a secondary face's box grown by a reach returns every
-/// primary face whose box meets it: the candidates the mortar segments are integrated over.
+/// most two cells per axis; each face is kept once, in its box's lower corner's bucket, and
+/// the buckets are a sorted list (memory follows the faces, not the grid). A query with a secondary
+/// face's box grown by a reach returns every primary face whose box meets it: the candidates the
+/// mortar segments are integrated over.
 #include "mesh/bounding_box.hpp"
 
 #include <array>
@@ -36,7 +38,9 @@ private:
   double cell_size_ = 1.0;
   Point origin_{0.0, 0.0, 0.0};
   std::array<int, 3> n_buckets_{0, 0, 0};
-  /// (bucket key, face) for every bucket each face's box meets, sorted.
+  /// The most buckets a face's box reaches beyond its lower corner's, per axis.
+  std::array<int, 3> span_{0, 0, 0};
+  /// (bucket key of the box's lower corner, face), sorted.
   std::vector<std::pair<std::int64_t, int>> entries_;
 };
 } // namespace kiln
