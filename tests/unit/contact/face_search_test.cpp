@@ -118,6 +118,25 @@ TEST(FaceSearch, CurvedPairFindsThePrimaryFaceAcross)
   }
 }
 
+TEST(FaceSearch, BucketsSmallerThanTheFaces)
+{
+  // Buckets of a tenth of a face: a box reaches ten buckets beyond its lower corner's.
+  Mesh mesh = kiln_test::two_flat_bodies({6, 5}, {4, 7}, 0.01);
+  kiln_test::perturb(mesh, 0.03);
+  kiln_test::rotate(mesh, 10.0, 50.0);
+  const ContactSurface primary(mesh, 1, "test: primary");
+  const ContactSurface secondary(mesh, 2, "test: secondary");
+  std::vector<kiln::BoundingBox> boxes;
+  for (int p = 0; p < primary.n_faces(); ++p)
+    boxes.push_back(primary.face_box(p));
+  const FaceSearch search(boxes, 0.1 * primary.max_face_diameter());
+  for (const double reach : {0.0, 0.02, 0.3})
+    for (int s = 0; s < secondary.n_faces(); ++s)
+      EXPECT_EQ(search.candidates(secondary.face_box(s), reach),
+                brute_force(primary, secondary.face_box(s), reach))
+          << "secondary face " << s << ", reach " << reach;
+}
+
 TEST(FaceSearch, NoPrimaryFaces)
 {
   const FaceSearch search({}, 0.0);
