@@ -63,15 +63,14 @@ void check_boundary_faces(const Mesh &mesh, const SideSet &set, const std::strin
                                     "listed once");
   }
 }
-} // namespace internal
 
-ContactSurface::ContactSurface(const Mesh &mesh, const int side_set_id, const std::string &where)
-    : side_set_id_(side_set_id)
+/// Side set `side_set_id` of the mesh after the checks a contact surface needs.
+const SideSet &contact_side_set(const Mesh &mesh, const int side_set_id, const std::string &where)
 {
   const SideSet *set = mesh.find_side_set(side_set_id);
   KILN_CHECK_INPUT(set != nullptr, where,
-                   "side set " << side_set_id << " is not in the mesh (side sets present: "
-                               << internal::side_set_list(mesh)
+                   "side set " << side_set_id
+                               << " is not in the mesh (side sets present: " << side_set_list(mesh)
                                << "); use the id of a boundary side set of one of the bodies");
   KILN_CHECK_INPUT(!mesh.is_gap_side_set(side_set_id), where,
                    "side set " << side_set_id
@@ -82,16 +81,41 @@ ContactSurface::ContactSurface(const Mesh &mesh, const int side_set_id, const st
                    "side set " << side_set_id
                                << " has no faces; a contact surface needs the faces of a body's "
                                   "boundary: check the side set in the mesh");
-  internal::check_boundary_faces(mesh, *set, where);
+  check_boundary_faces(mesh, *set, where);
+  return *set;
+}
+} // namespace internal
 
-  for (int s = 0; s < set->n_sides(); ++s)
-    for (const int n : mesh.face_nodes(set->cells[s], set->faces[s]))
-      nodes_.push_back(n);
+ContactSurface::ContactSurface(const Mesh &mesh, const int side_set_id, const std::string &where)
+    : side_set_id_(side_set_id)
+{
+  take_faces(mesh, internal::contact_side_set(mesh, side_set_id, where), [](int) { return true; });
+}
+
+ContactSurface::ContactSurface(const Mesh &mesh, const int side_set_id, const std::string &where,
+                               const std::vector<int> &cells)
+    : side_set_id_(side_set_id)
+{
+  const SideSet &set = internal::contact_side_set(mesh, side_set_id, where);
+  take_faces(mesh, set,
+             [&](const int s)
+             { return std::binary_search(cells.begin(), cells.end(), set.cells[s]); });
+}
+
+template <typename Keep>
+void ContactSurface::take_faces(const Mesh &mesh, const SideSet &set, const Keep keep)
+{
+  for (int s = 0; s < set.n_sides(); ++s)
+    if (keep(s))
+      for (const int n : mesh.face_nodes(set.cells[s], set.faces[s]))
+        nodes_.push_back(n);
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
-  for (int s = 0; s < set->n_sides(); ++s)
+  for (int s = 0; s < set.n_sides(); ++s)
   {
-    const int c = set->cells[s], f = set->faces[s];
+    if (!keep(s))
+      continue;
+    const int c = set.cells[s], f = set.faces[s];
     face_types_.push_back(mesh.reference_cell(c).face_type(f));
     face_cells_.push_back(c);
     face_sides_.push_back(f);

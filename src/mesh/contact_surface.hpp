@@ -20,6 +20,12 @@ public:
   /// gap the mesh was split at, is empty, lists a face twice, has a face inside the mesh
   /// (shared by two cells) or a face that is not linear (QUAD8, QUAD9, TRI6).
   ContactSurface(const Mesh &mesh, int side_set_id, const std::string &where);
+  /// As above (the same checks, on the whole side set), but with only the side set's faces of
+  /// `cells` (increasing cell ids: a rank's owned cells) and their nodes. A node that also has
+  /// faces of other cells gets its normal and nodal area from this part's faces only: what the
+  /// parts give are summed to the node's owner (doc/contact.md, "Search").
+  ContactSurface(const Mesh &mesh, int side_set_id, const std::string &where,
+                 const std::vector<int> &cells);
 
   int side_set_id() const { return side_set_id_; }
   int n_faces() const { return static_cast<int>(face_types_.size()); }
@@ -59,6 +65,8 @@ public:
   const BoundingBox &face_box(const int f) const { return face_boxes_[f]; }
 
 private:
+  /// Keeps the side set's faces for which `keep(s)` (s: the side in the set) is true.
+  template <typename Keep> void take_faces(const Mesh &mesh, const SideSet &set, Keep keep);
   void update_geometry();
 
   int side_set_id_;

@@ -18,6 +18,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -181,6 +182,43 @@ TEST(ContactSurface, QuadAndTriangleFacesTogether)
     expect_near(surface.normal(j), rotated_z(phi, theta), 1e-14);
   }
   EXPECT_NEAR(total_area, 4.0, 1e-13);
+}
+
+TEST(ContactSurface, PartsOfASurfaceSumToTheWhole)
+{
+  // The top of a 2 x 2 x 2 box in two parts by its cells, as two ranks would own them (and an
+  // empty part): each keeps its faces and their nodes; the nodal areas of the parts sum to
+  // the whole surface's at every node, the normals agree.
+  const Mesh mesh = box("HEX8", 30.0, -20.0);
+  const ContactSurface whole(mesh, 6, pair);
+  std::vector<int> first, second;
+  for (int f = 0; f < whole.n_faces(); ++f)
+    (f < 1 ? first : second).push_back(whole.face_cell(f));
+  std::sort(second.begin(), second.end());
+  const ContactSurface part_1(mesh, 6, pair, first);
+  const ContactSurface part_2(mesh, 6, pair, second);
+  const ContactSurface none(mesh, 6, pair, std::vector<int>{});
+  EXPECT_EQ(part_1.n_faces(), 1);
+  EXPECT_EQ(part_1.n_nodes(), 4);
+  EXPECT_EQ(part_2.n_faces(), 3);
+  EXPECT_EQ(part_2.n_nodes(), 8);
+  EXPECT_EQ(none.n_faces(), 0);
+  EXPECT_EQ(none.n_nodes(), 0);
+  for (int j = 0; j < whole.n_nodes(); ++j)
+  {
+    const int node = whole.nodes()[j];
+    double area = 0.0;
+    for (const ContactSurface *part : {&part_1, &part_2})
+      if (const int k = part->surface_node(node); k >= 0)
+      {
+        area += part->nodal_area(k);
+        expect_near(part->normal(k), whole.normal(j), 1e-14);
+      }
+    EXPECT_NEAR(area, whole.nodal_area(j), 1e-14) << "node " << node;
+  }
+  // The checks are on the whole side set, whatever the part.
+  EXPECT_THAT(kiln_test::input_error_message([&] { ContactSurface(mesh, 10, pair, first); }),
+              HasSubstr("side set 10 is not on the boundary"));
 }
 
 TEST(ContactSurface, MovedSurface)
