@@ -74,6 +74,20 @@ TEST(FaceSearch, NonMatchingFlatSurfacesByHand)
   EXPECT_EQ(search.candidates(far, 100.0).size(), 16u);
 }
 
+TEST(FaceSearch, InTheMovedConfiguration)
+{
+  // The primary surface moved along x by u (ContactSurface::set_displacement): secondary face
+  // (0, 0), x in [0, 0.2] grown by 0.01, meets columns 0 and 1 for u = -0.125 and none for
+  // u = +0.25.
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  ContactSurface primary(mesh, 1, "test: primary");
+  const ContactSurface secondary(mesh, 2, "test: secondary");
+  primary.set_displacement(std::vector<kiln::Point>(primary.n_nodes(), {-0.125, 0.0, 0.0}));
+  EXPECT_THAT(FaceSearch(primary).candidates(secondary.face_box(0), 0.01), ElementsAre(0, 1, 4, 5));
+  primary.set_displacement(std::vector<kiln::Point>(primary.n_nodes(), {0.25, 0.0, 0.0}));
+  EXPECT_TRUE(FaceSearch(primary).candidates(secondary.face_box(0), 0.01).empty());
+}
+
 TEST(FaceSearch, NonMatchingFlatSurfacesAsAllPairs)
 {
   const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
