@@ -10,10 +10,12 @@
 # REPEAT.
 #
 # Compiles benchmarks/least_norm_qp.cpp with src/physics/mechanics/least_norm_shift.cpp into
-# ${BUILD:-/tmp/least_norm_qp-build} (mpicxx -O2; Teuchos and LAPACK, as packages/install.sh
+# ${BUILD:-/tmp/least_norm_qp-build} (mpicxx -O2; Teuchos, ROL and LAPACK: trilinos-all-dev, as packages/install.sh
 # installs them) and runs it on the unit test's problems, the QPs that Truchas' contact-1 and
-# contact-2 solve (benchmarks/least_norm_qp/*.qp, written by kiln while running them) and
-# random ones with k up to 50.
+# contact-2 solve (benchmarks/least_norm_qp/*.qp: the arguments of least_norm_shift() in
+# pairs_held_shut.cpp, printed by a temporary patch that is not in Kiln while kiln ran
+# inputs/truchas/contact-1.xml and -2.xml on one rank; one QP per time step) and random ones
+# with k up to 50.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
