@@ -57,21 +57,24 @@ struct Qp
   std::vector<double> M, b, A, h;
 };
 
+/// c^T M c + 2 b^T c.
+double objective(const Qp &qp, const std::vector<double> &c)
+{
+  double f = 0.0;
+  for (int i = 0; i < qp.k; ++i)
+  {
+    f += 2.0 * qp.b[i] * c[i];
+    for (int j = 0; j < qp.k; ++j)
+      f += c[i] * qp.M[i + qp.k * j] * c[j];
+  }
+  return f;
+}
+
 class QuadraticObjective final : public ROL::StdObjective<double>
 {
 public:
   explicit QuadraticObjective(const Qp &qp) : qp_(qp) {}
-  double value(const std::vector<double> &x, double &) override
-  {
-    double f = 0.0;
-    for (int i = 0; i < qp_.k; ++i)
-    {
-      f += 2.0 * qp_.b[i] * x[i];
-      for (int j = 0; j < qp_.k; ++j)
-        f += x[i] * qp_.M[i + qp_.k * j] * x[j];
-    }
-    return f;
-  }
+  double value(const std::vector<double> &x, double &) override { return objective(qp_, x); }
   void gradient(std::vector<double> &g, const std::vector<double> &x, double &) override
   {
     for (int i = 0; i < qp_.k; ++i)
@@ -287,18 +290,6 @@ bool solve_with_rol_in_time(const Qp &qp, const RolSolver &solver, const double 
   return ended;
 }
 
-double objective(const Qp &qp, const std::vector<double> &c)
-{
-  double f = 0.0;
-  for (int i = 0; i < qp.k; ++i)
-  {
-    f += 2.0 * qp.b[i] * c[i];
-    for (int j = 0; j < qp.k; ++j)
-      f += c[i] * qp.M[i + qp.k * j] * c[j];
-  }
-  return f;
-}
-
 double row_times(const Qp &qp, const int i, const std::vector<double> &c)
 {
   double s = 0.0;
@@ -315,7 +306,7 @@ struct Kkt
 /// The KKT residual of c: the rows active to 1e-9 (relative), their least-squares multipliers.
 Kkt kkt(const Qp &qp, const std::vector<double> &c)
 {
-  Kkt r;
+  Kkt result;
   std::vector<int> active;
   double scale = 0.0;
   for (const double v : c)
@@ -323,7 +314,7 @@ Kkt kkt(const Qp &qp, const std::vector<double> &c)
   for (int i = 0; i < qp.m; ++i)
   {
     const double s = row_times(qp, i, c) - qp.h[i];
-    r.infeasible = std::max(r.infeasible, -s);
+    result.infeasible = std::max(result.infeasible, -s);
     if (s <= 1e-9 * std::max(1.0, scale))
       active.push_back(i);
   }
@@ -351,20 +342,16 @@ Kkt kkt(const Qp &qp, const std::vector<double> &c)
     lapack.GELSS(qp.k, w, 1, AT.data(), qp.k, rhs.data(), rows, sv.data(), 1e-12, &rank,
                  work.data(), -1, nullptr, &info);
     work.resize(static_cast<std::size_t>(work[0]));
-    for (int r = 0; r < w; ++r)
-      for (int j = 0; j < qp.k; ++j)
-        AT[j + static_cast<std::size_t>(qp.k) * r] =
-            qp.A[static_cast<std::size_t>(active[r]) * qp.k + j];
     lapack.GELSS(qp.k, w, 1, AT.data(), qp.k, rhs.data(), rows, sv.data(), 1e-12, &rank,
                  work.data(), static_cast<int>(work.size()), nullptr, &info);
-    r.smallest_mu = *std::min_element(rhs.begin(), rhs.begin() + w);
+    result.smallest_mu = *std::min_element(rhs.begin(), rhs.begin() + w);
     for (int i = 0; i < qp.k; ++i)
       for (int r2 = 0; r2 < w; ++r2)
         grad[i] -= qp.A[static_cast<std::size_t>(active[r2]) * qp.k + i] * rhs[r2];
   }
   for (const double v : grad)
-    r.stationarity = std::max(r.stationarity, std::abs(v));
-  return r;
+    result.stationarity = std::max(result.stationarity, std::abs(v));
+  return result;
 }
 
 /// Microseconds per call of f (best of 3 runs of `repeat` calls).

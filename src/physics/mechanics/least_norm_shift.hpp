@@ -22,8 +22,8 @@ namespace kiln
 /// tolerance 1e-14, the problem scaled to order 1 (ROL's tolerances are absolute), are
 /// iterative and end at a tolerance, not at the solution: 3e-5 to 0.17 off on contact-1/-2's
 /// QPs (the tests ask 1e-10), 60 to 100,000 times slower (this: 3 us on those QPs), and the
-/// trust region never ends on 11 of the 16 problems (degenerate rows, as on a gap between free
-/// bodies, among them).
+/// trust region does not converge on 12 of the 16 problems (it hangs inside an iteration on
+/// most; degenerate rows, as on a gap between free bodies, among them).
 std::vector<double> least_norm_shift(int k, const std::vector<double> &M,
                                      const std::vector<double> &b, int m,
                                      const std::vector<double> &A, const std::vector<double> &h);
