@@ -21,7 +21,7 @@ namespace kiln
 /// ROL's TypeG Augmented Lagrangian and TypeB Trust Region with its polyhedral projection, every
 /// tolerance 1e-14, the problem scaled to order 1 (ROL's tolerances are absolute), are
 /// iterative and end at a tolerance, not at the solution: 3e-5 to 0.17 off on contact-1/-2's
-/// QPs (the tests ask 1e-10), 60 to 100,000 times slower (this: 3 us on those QPs), and the
+/// QPs (the tests ask 1e-10), 60 to 1,000,000 times slower (this: 3 us on those QPs), and the
 /// trust region does not converge on 12 of the 16 problems (it hangs inside an iteration on
 /// most; degenerate rows, as on a gap between free bodies, among them).
 std::vector<double> least_norm_shift(int k, const std::vector<double> &M,
