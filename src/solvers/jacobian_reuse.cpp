@@ -70,6 +70,9 @@ bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::
   if (!enabled_)
     return false;
   pending_ = problem.jacobian_dependencies(x);
+  pending_preconditioner_.clear();
+  if (within_solve_ && pending_.empty())
+    pending_preconditioner_ = problem.preconditioner_dependencies(x);
   const int same_here = !pending_.empty() && &J == matrix_ && pending_ == dependencies_ ? 1 : 0;
   int same = 0;
   Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, same_here, Teuchos::outArg(same));
@@ -88,7 +91,9 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   ++counts_.jacobians_evaluated;
   if (!restored_.empty() && restore(J, smooth))
     return;
-  if (enabled_ && tolerance_ > 0.0 && same_matrix)
+  const bool begun = solve_begun_;
+  solve_begun_ = false;
+  if (enabled_ && tolerance_ > 0.0 && same_matrix && !dependencies_.empty())
   {
     const int serves_here = serves(version_dependencies_, dependencies_, smooth) ? 1 : 0;
     int served = 0;
@@ -96,8 +101,27 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
     if (served == 1)
       return;
   }
+  if (enabled_ && within_solve_ && same_matrix && dependencies_.empty() && !begun &&
+      serves_within_solve(J))
+    return;
   version_dependencies_ = dependencies_;
+  version_preconditioner_ = std::move(pending_preconditioner_);
+  pending_preconditioner_.clear();
+  version_failed_solves_ = failed_solves_ ? failed_solves_() : 0;
   ++version_;
+}
+
+bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J) const
+{
+  // The failure count is the same on every rank (a Krylov solve's status is global).
+  if (failed_solves_ && failed_solves_() != version_failed_solves_)
+    return false;
+  const int here =
+      !pending_preconditioner_.empty() && pending_preconditioner_ == version_preconditioner_ ? 1
+                                                                                             : 0;
+  int everywhere = 0;
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, here, Teuchos::outArg(everywhere));
+  return everywhere == 1;
 }
 
 namespace

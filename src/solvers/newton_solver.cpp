@@ -90,6 +90,16 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "on as many ranks goes on to the last bit as the uninterrupted run. 0: build one for "
         "every new Jacobian [-], must be >= 0",
         nonnegative_double_validator());
+  p.set("Keep Preconditioner Within Solve", true,
+        "with Reuse, for a Jacobian that varies with the state (viscoplastic flow, a modulus "
+        "or conductivity that depends on T): the later Newton iterations of a solve (a time "
+        "step) keep the preconditioner built at its first, while the time-derivative "
+        "coefficient, the constraints and the contact decision are unchanged and no linear "
+        "solve fell short of its tolerance (then the next iteration builds one). The Jacobian "
+        "is still evaluated at every iteration (Newton converges as with the consistent "
+        "tangent); the Krylov solver sees it with the first iteration's preconditioner (its "
+        "finest level reads the new matrix; doc/solvers.md): fewer set-ups, the answer the "
+        "same to the Newton tolerance. false: a preconditioner for every new Jacobian [-]");
   p.set("Adaptive Linear Tolerance", true,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "
         "||F_k||, is below s max(Absolute Tolerance, Relative Tolerance ||F(x0)||) / ||F_k||, "
@@ -331,7 +341,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
     s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
-      p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance")));
+      p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
+      p.get<bool>("Keep Preconditioner Within Solve")));
+  s.reuse->set_failed_solves([guess = s.starting_guess] { return guess->unconverged; });
   const bool preconditioner_given =
       params.isSublist(linear_name) &&
       given_in_input(params.sublist(linear_name), "Preconditioner Type");
@@ -384,6 +396,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   if (!s.pins.is_null()) // the start without a part in the free motions
     s.pins->project(*Extraction::getTpetraVector(x0));
   s.group->setX(NOX::Thyra::Vector(x0));
+  s.reuse->begin_solve();
   Result result;
   // A StepFailure (a model's local solve, on every rank alike): the solve ends unconverged, x
   // as it was; a Jacobian it interrupted is not kept.
