@@ -5,6 +5,7 @@
 #include <NOX_Solver_Generic.H>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace kiln
@@ -33,11 +34,18 @@ Teuchos::ParameterList &newton_linear_solver(Teuchos::ParameterList &nox)
 }
 } // namespace
 
-double LinearTolerance::operator()(const double target, const double residual_norm) const
+double LinearTolerance::operator()(const double target, const double residual_norm,
+                                   const double previous_norm) const
 {
   if (!(residual_norm > 0.0) || !(target > 0.0))
     return floor;
-  return std::clamp(safety * target / residual_norm, floor, std::max(floor, ceiling));
+  double eta = safety * target / residual_norm;
+  if (rate > 0.0 && previous_norm > 0.0 && std::isfinite(previous_norm))
+  {
+    const double ratio = residual_norm / previous_norm;
+    eta = std::max(eta, rate * ratio * ratio);
+  }
+  return std::clamp(eta, floor, std::max(floor, ceiling));
 }
 
 double belos_convergence_tolerance(const Teuchos::ParameterList &stratimikos)
@@ -65,14 +73,18 @@ AdaptiveLinearTolerance::AdaptiveLinearTolerance(const LinearTolerance rule,
 {
 }
 
-void AdaptiveLinearTolerance::set_target(const double target)
+void AdaptiveLinearTolerance::set_target(const double target, const bool varying)
 {
   target_ = target;
+  varying_ = varying;
+  previous_norm_ = 0.0;
 }
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  linear_solver_.set("Tolerance", rule_(target_, residual_norm));
+  linear_solver_.set("Tolerance",
+                     rule_(target_, residual_norm, varying_ ? previous_norm_ : 0.0));
+  previous_norm_ = residual_norm;
 }
 
 Teuchos::RCP<NOX::Observer> AdaptiveLinearTolerance::observer()

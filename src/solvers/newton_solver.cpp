@@ -116,6 +116,17 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "then about as accurate as that test: 1e-9 instead of 1e-12 on a uniform state; 0: "
         "every solve to the Belos tolerance) [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
+  p.set("Adaptive Linear Tolerance Rate", 0.01,
+        "with Adaptive Linear Tolerance, for a Jacobian that varies with the state "
+        "(viscoplastic flow, a modulus or conductivity that depends on T): from the second "
+        "Newton iteration of a solve on, the Krylov solve may also stop at this times "
+        "(||F_k|| / ||F_k-1||)^2 relative to ||F_k||, this times the residual Newton's "
+        "quadratic convergence predicts for the next iteration (Eisenstat and Walker's second "
+        "choice): the early iterations are not solved far beyond what their Newton step is "
+        "worth, the last one still to the Newton target with the Safety above "
+        "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
+        "contact set is not affected. 0: not used [-], from 0 to 1",
+        double_range_validator(0.0, 1.0));
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
         positive_int_validator());
@@ -339,6 +350,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   {
     s.adaptive.floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
     s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
+    s.adaptive.rate = p.get<double>("Adaptive Linear Tolerance Rate");
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
@@ -460,7 +472,8 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     internal::use_relative_residual_measure(*nox, s.adaptive.floor);
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
-    adaptive->set_target(result.tolerance);
+    // A Jacobian that varies with the state: no dependencies to keep it by.
+    adaptive->set_target(result.tolerance, s.problem->jacobian_dependencies(x).empty());
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
