@@ -93,6 +93,8 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
     return;
   const bool begun = solve_begun_;
   solve_begun_ = false;
+  const double last_norm = jacobian_residual_norm_;
+  jacobian_residual_norm_ = residual_norm_;
   if (enabled_ && tolerance_ > 0.0 && same_matrix && !dependencies_.empty())
   {
     const int serves_here = serves(version_dependencies_, dependencies_, smooth) ? 1 : 0;
@@ -102,7 +104,7 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
       return;
   }
   if (enabled_ && within_solve_ && same_matrix && dependencies_.empty() && !begun &&
-      serves_within_solve(J))
+      serves_within_solve(J, last_norm))
     return;
   version_dependencies_ = dependencies_;
   version_preconditioner_ = std::move(pending_preconditioner_);
@@ -111,10 +113,15 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   ++version_;
 }
 
-bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J) const
+bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J,
+                                        const double last_norm) const
 {
-  // The failure count is the same on every rank (a Krylov solve's status is global).
+  // The failure count and the norms are the same on every rank (global quantities).
   if (failed_solves_ && failed_solves_() != version_failed_solves_)
+    return false;
+  // Newton far from its quadratic regime (||F|| not halved): the tangent moves too much for
+  // an older preconditioner.
+  if (!(residual_norm_ <= 0.5 * last_norm))
     return false;
   const int here =
       !pending_preconditioner_.empty() && pending_preconditioner_ == version_preconditioner_ ? 1

@@ -38,6 +38,11 @@ public:
 
   /// A Newton solve begins: its first Jacobian begins a new version if it varies with x.
   void begin_solve() { solve_begun_ = true; }
+  /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
+  /// A preconditioner kept within a solve is given up at the next Jacobian unless the last
+  /// Newton iteration at least halved ||F|| (the F evaluated before each Jacobian is that at
+  /// its x).
+  void residual_evaluated(double norm) { residual_norm_ = norm; }
   /// The count of linear solves that stopped short of their tolerance (the same on every
   /// rank): a preconditioner kept within a solve is given up at the next Jacobian once it
   /// grew since that preconditioner's version began.
@@ -106,8 +111,9 @@ private:
   bool restore(const NonlinearProblem::Matrix &J, std::size_t smooth);
 
   /// Whether the preconditioner of a varying Jacobian serves J within the solve (the
-  /// version's preconditioner dependencies equal, no failed linear solve since; collective).
-  bool serves_within_solve(const NonlinearProblem::Matrix &J) const;
+  /// version's preconditioner dependencies equal, no failed linear solve since, ||F||
+  /// halved by the last Newton iteration; collective).
+  bool serves_within_solve(const NonlinearProblem::Matrix &J, double last_norm) const;
 
   bool enabled_;
   double tolerance_;
@@ -116,6 +122,8 @@ private:
   std::vector<double> pending_preconditioner_; ///< of the last can_keep(), varying J only
   std::vector<double> version_preconditioner_; ///< those of the version's first Jacobian
   int version_failed_solves_ = 0;              ///< failed_solves_() then
+  double residual_norm_ = 0.0;                 ///< of the last residual_evaluated()
+  double jacobian_residual_norm_ = 0.0;        ///< residual_norm_ at the last evaluated()
   std::function<int()> failed_solves_;
   std::uint64_t version_ = 0;
   const NonlinearProblem::Matrix *matrix_ = nullptr; ///< the last evaluated

@@ -40,7 +40,8 @@ double LinearTolerance::operator()(const double target, const double residual_no
   if (!(residual_norm > 0.0) || !(target > 0.0))
     return floor;
   double eta = safety * target / residual_norm;
-  if (rate > 0.0 && previous_norm > 0.0 && std::isfinite(previous_norm))
+  // Only while ||F|| falls: a residual that grew says nothing of the next one.
+  if (rate > 0.0 && previous_norm > residual_norm && std::isfinite(previous_norm))
   {
     const double ratio = residual_norm / previous_norm;
     eta = std::max(eta, rate * ratio * ratio);
@@ -82,8 +83,7 @@ void AdaptiveLinearTolerance::set_target(const double target, const bool varying
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  linear_solver_.set("Tolerance",
-                     rule_(target_, residual_norm, varying_ ? previous_norm_ : 0.0));
+  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying_ ? previous_norm_ : 0.0));
   previous_norm_ = residual_norm;
 }
 

@@ -26,11 +26,11 @@ struct LinearTolerance
   /// Fraction of the Newton target left for the Krylov residual (Solver/"Adaptive Linear
   /// Tolerance Safety"; 0: always the floor).
   double safety = 0.0;
-  /// For a Jacobian that varies with the state, from the second Newton iteration on: eta_k
-  /// is at least rate (||F_k|| / ||F_{k-1}||)^2 (Solver/"Adaptive Linear Tolerance Rate";
-  /// 0: not used). Newton with the consistent tangent converges quadratically, so its next
-  /// residual is about ||F_k|| (||F_k|| / ||F_{k-1}||)^2: the Krylov residual is `rate` times
-  /// that, and the iterations keep their order (Eisenstat and Walker's second choice).
+  /// For a Jacobian that varies with the state, from the second Newton iteration on, while
+  /// ||F|| falls: eta_k is at least rate (||F_k|| / ||F_{k-1}||)^2 (Solver/"Adaptive Linear
+  /// Tolerance Rate"; 0: not used). Newton with the consistent tangent converges quadratically, so
+  /// its next residual is about ||F_k|| (||F_k|| / ||F_{k-1}||)^2: the Krylov residual is `rate`
+  /// times that, and the iterations keep their order (Eisenstat and Walker's second choice).
   double rate = 0.0;
   /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||;
   /// `previous_norm`: ||F_{k-1}|| (0 at the first iteration or for a constant Jacobian).

@@ -473,7 +473,8 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
     // A Jacobian that varies with the state: no dependencies to keep it by.
-    adaptive->set_target(result.tolerance, s.problem->jacobian_dependencies(x).empty());
+    adaptive->set_target(result.tolerance,
+                         s.adaptive.rate > 0.0 && s.problem->jacobian_dependencies(x).empty());
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.

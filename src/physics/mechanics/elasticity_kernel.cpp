@@ -182,8 +182,8 @@ void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisp
 template <int N, bool exact>
 void ElasticityKernel::assemble_general(const ElementValues &fe,
                                         const std::vector<PointResponse> &responses,
-                                        const Point &body_force, const int u_slot,
-                                        const int T_slot, LocalSystem &local) const
+                                        const Point &body_force, const int u_slot, const int T_slot,
+                                        LocalSystem &local) const
 {
   const int n = exact ? N : fe.n_shape();
   const int n_q = exact ? N : fe.n_qpoints();
@@ -228,8 +228,8 @@ void ElasticityKernel::assemble_general(const ElementValues &fe,
       for (int k = 0; k < 3; ++k)
         for (int e = 0; e < 3; ++e)
           for (int l = 0; l < 3; ++l)
-            C[d][k][e][l] = r.tangent[voigt_index[d][k]][voigt_index[e][l]] *
-                            (e == l ? JxW : 0.5 * JxW);
+            C[d][k][e][l] =
+                r.tangent[voigt_index[d][k]][voigt_index[e][l]] * (e == l ? JxW : 0.5 * JxW);
     for (int j = 0; j < n; ++j)
     {
       const Point &g = grad_phi[j];
