@@ -89,13 +89,13 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   pending_.clear();
   smooth_ = smooth;
   ++counts_.jacobians_evaluated;
-  if (!restored_.empty() && restore(J, smooth))
-    return;
   const bool begun = solve_begun_;
   solve_begun_ = false;
   const double last_norm = jacobian_residual_norm_;
   jacobian_residual_norm_ = residual_norm_;
-  if (enabled_ && tolerance_ > 0.0 && same_matrix && !dependencies_.empty())
+  if (!restored_.empty() && restore(J, smooth))
+    return;
+  if (enabled_ && tolerance_ > 0.0 && same_matrix)
   {
     const int serves_here = serves(version_dependencies_, dependencies_, smooth) ? 1 : 0;
     int served = 0;
@@ -103,8 +103,8 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
     if (served == 1)
       return;
   }
-  if (enabled_ && within_solve_ && same_matrix && dependencies_.empty() && !begun &&
-      serves_within_solve(J, last_norm))
+  // Every condition but the dependencies' is the same on every rank; those are reduced.
+  if (enabled_ && within_solve_ && same_matrix && !begun && serves_within_solve(J, last_norm))
     return;
   version_dependencies_ = dependencies_;
   version_preconditioner_ = std::move(pending_preconditioner_);
@@ -123,9 +123,12 @@ bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J,
   // an older preconditioner.
   if (!(residual_norm_ <= 0.5 * last_norm))
     return false;
-  const int here =
-      !pending_preconditioner_.empty() && pending_preconditioner_ == version_preconditioner_ ? 1
-                                                                                             : 0;
+  // A Jacobian that varies (no dependencies of its own) whose preconditioner dependencies
+  // are those of the version's first.
+  const int here = dependencies_.empty() && !pending_preconditioner_.empty() &&
+                           pending_preconditioner_ == version_preconditioner_
+                       ? 1
+                       : 0;
   int everywhere = 0;
   Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, here, Teuchos::outArg(everywhere));
   return everywhere == 1;
