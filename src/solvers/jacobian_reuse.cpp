@@ -67,9 +67,17 @@ Thyra::DefaultPreconditioner<double> &default_preconditioner(Thyra::Precondition
 bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                              const NonlinearProblem::Matrix &J)
 {
-  if (!enabled_)
-    return false;
   pending_ = problem.jacobian_dependencies(x);
+  // Whether the Jacobian varies, alike on every rank (a rank without dependencies counts).
+  int constant_here = pending_.empty() ? 0 : 1;
+  int constant = 0;
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, constant_here, Teuchos::outArg(constant));
+  varying_ = constant == 0;
+  if (!enabled_)
+  {
+    pending_.clear();
+    return false;
+  }
   pending_preconditioner_.clear();
   if (within_solve_ && pending_.empty())
     pending_preconditioner_ = problem.preconditioner_dependencies(x);

@@ -36,6 +36,9 @@ public:
   {
   }
 
+  /// Whether the Jacobian of the last can_keep() varies with x (no dependencies on some
+  /// rank; the same answer on every rank), with or without Reuse.
+  bool varying() const { return varying_; }
   /// A Newton solve begins: its first Jacobian begins a new version if it varies with x.
   void begin_solve() { solve_begun_ = true; }
   /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
@@ -119,6 +122,7 @@ private:
   double tolerance_;
   bool within_solve_;
   bool solve_begun_ = false;
+  bool varying_ = false;
   std::vector<double> pending_preconditioner_; ///< of the last can_keep(), varying J only
   std::vector<double> version_preconditioner_; ///< those of the version's first Jacobian
   int version_failed_solves_ = 0;              ///< failed_solves_() then

@@ -74,16 +74,17 @@ AdaptiveLinearTolerance::AdaptiveLinearTolerance(const LinearTolerance rule,
 {
 }
 
-void AdaptiveLinearTolerance::set_target(const double target, const bool varying)
+void AdaptiveLinearTolerance::set_target(const double target, std::function<bool()> varying)
 {
   target_ = target;
-  varying_ = varying;
+  varying_ = std::move(varying);
   previous_norm_ = 0.0;
 }
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying_ ? previous_norm_ : 0.0));
+  const bool varying = previous_norm_ > 0.0 && varying_ && varying_();
+  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying ? previous_norm_ : 0.0));
   previous_norm_ = residual_norm;
 }
 

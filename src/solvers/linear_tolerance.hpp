@@ -6,6 +6,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include <functional>
+
 namespace NOX
 {
 class Observer;
@@ -50,8 +52,10 @@ class AdaptiveLinearTolerance
 public:
   AdaptiveLinearTolerance(LinearTolerance rule, Teuchos::ParameterList &linear_solver);
   /// The Newton test's ||F|| to reach in this solve: max(absolute, relative ||F(x0)||).
-  /// `varying`: the Jacobian varies with the state (the rule's `rate` applies).
-  void set_target(double target, bool varying = false);
+  /// `varying`: whether the Jacobian varies with the state (the rule's `rate` applies), asked
+  /// at each update() from the second Newton iteration on (the first Jacobian of the solve
+  /// has then been evaluated); null: never.
+  void set_target(double target, std::function<bool()> varying = {});
   /// Sets the Tolerance in the NOX linear solver list from the current residual norm (and
   /// the last one, for a varying Jacobian).
   void update(double residual_norm);
@@ -62,7 +66,7 @@ private:
   LinearTolerance rule_;
   Teuchos::ParameterList &linear_solver_;
   double target_ = 0.0;
-  bool varying_ = false;
+  std::function<bool()> varying_;
   double previous_norm_ = 0.0; ///< ||F_{k-1}|| of this solve (0 before its first iteration)
 };
 

@@ -472,9 +472,12 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     internal::use_relative_residual_measure(*nox, s.adaptive.floor);
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
-    // A Jacobian that varies with the state: no dependencies to keep it by.
-    adaptive->set_target(result.tolerance,
-                         s.adaptive.rate > 0.0 && s.problem->jacobian_dependencies(x).empty());
+    // A Jacobian that varies with the state (no dependencies to keep it by), as the solve's
+    // first Jacobian found it.
+    if (s.adaptive.rate > 0.0)
+      adaptive->set_target(result.tolerance, [reuse = s.reuse] { return reuse->varying(); });
+    else
+      adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
