@@ -7,6 +7,10 @@
 # plastic strain increment 2.8e-4 in the step, every point flowing; "Maximum Plastic Strain
 # Increment" 1 so that the step is not cut).
 # usage: benchmarks/viscoplastic_box.sh [NP] [N...]     (default: 1  16 32)
+# KILN=path/to/kiln (default build/src/app/kiln); KILN_SOLVER_XML=file.xml adds the
+# <ParameterList name="Solver"> block in that file to both decks (a variant to compare, e.g.
+# "Keep Preconditioner Within Solve" false); KILN_MODELS="powerlaw" runs only the
+# viscoplastic deck (no ratio).
 # Prints per mesh and material: Newton and Krylov iterations of the step, the step's time
 # (the sum of kiln --timers' assembly (residual, Jacobian), preconditioner set-up and NOX's
 # linear solves: the equilibrium at t = 0, unloaded, takes no iteration, so they are the
@@ -25,6 +29,8 @@ deck() { # N MODEL(elastic|powerlaw) FILE
   if [ "$2" = powerlaw ]; then
     model='<ParameterList name="Model"><Parameter name="Type" type="string" value="Power Law"/><Parameter name="Power Law A" type="double" value="1e-7"/><Parameter name="Power Law n" type="double" value="0.5"/></ParameterList>'
   fi
+  local solver=""
+  if [ -n "${KILN_SOLVER_XML:-}" ]; then solver=$(tr -d '\n' < "$KILN_SOLVER_XML"); fi
   cat > "$3" <<XML
 <ParameterList name="Kiln">
   <Parameter name="Physics" type="string" value="Elasticity"/>
@@ -61,6 +67,7 @@ deck() { # N MODEL(elastic|powerlaw) FILE
         <Parameter name="Traction Expressions" type="Array(string)" value="{4e6*t, 0, 0}"/></ParameterList>
     </ParameterList>
   </ParameterList>
+  $solver
   <ParameterList name="Time Stepping">
     <Parameter name="Method" type="string" value="Backward Euler"/>
     <Parameter name="Initial Step" type="double" value="1"/>
@@ -82,7 +89,7 @@ printf "%4s %-11s %7s %7s %9s %9s %9s %9s %9s %7s\n" N material Newton linear st
   asm_jac_s prec_s krylov_s ratio
 for n in ${sizes[@]}; do
   elastic_step=""
-  for model in elastic powerlaw; do
+  for model in ${KILN_MODELS:-elastic powerlaw}; do
     deck "$n" "$model" "$work/box-$n-$model.xml"
     log=$work/box-$n-$model.log
     mpirun -np "$np" "$kiln" --timers "$work/box-$n-$model.xml" > "$log" 2>&1 ||
@@ -98,7 +105,11 @@ for n in ${sizes[@]}; do
     # step's.
     step=$(echo "${res:-0} + ${jac:-0} + ${prec:-0} + ${krylov:-0}" | bc -l)
     ratio=""
-    if [ "$model" = elastic ]; then elastic_step=$step; else ratio=$(echo "$step / $elastic_step" | bc -l); fi
+    if [ "$model" = elastic ]; then
+      elastic_step=$step
+    elif [ -n "$elastic_step" ]; then
+      ratio=$(echo "$step / $elastic_step" | bc -l)
+    fi
     printf "%4s %-11s %7s %7s %9.3f %9.3f %9.3f %9.3f %9.3f %7s\n" "$n" "$model" "$newton" \
       "$linear" "$step" "${res:-0}" "${jac:-0}" "${prec:-0}" "${krylov:-0}" \
       "${ratio:+$(printf %.2f "$ratio")}"

@@ -55,6 +55,14 @@ public:
   {
     return false;
   }
+  /// Optional, for a problem whose Jacobian varies with x (jacobian_dependencies() empty):
+  /// what a preconditioner of its Jacobian depends on beyond values that change smoothly
+  /// with x (for Kiln's problems the time-derivative coefficient, the constraints and the
+  /// contact decision; not a constitutive tangent). While this is the same on every rank as
+  /// at the first Jacobian of a Newton solve, the later Jacobians of that solve are
+  /// evaluated anew but may keep the first one's preconditioner (Solver/"Keep
+  /// Preconditioner Within Solve"). Collective. Default: empty (never kept).
+  virtual std::vector<double> preconditioner_dependencies(const Vector & /*x*/) { return {}; }
   /// Called instead of evaluate(x, nullptr, J) when the solver keeps the Jacobian it holds
   /// (the dependencies at x are those of its last evaluation). Collective. Default: nothing.
   virtual void jacobian_kept(const Vector & /*x*/) {}

@@ -281,6 +281,11 @@ std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
 {
   if (!terms_->constant_jacobian())
     return {};
+  return preconditioner_dependencies(x);
+}
+
+std::vector<double> CoupledProblem::preconditioner_dependencies(const Vector &x)
+{
   std::vector<double> d{fields_->a(), constraints_.holds_temperature() ? 1.0 : 0.0};
   if (!interfaces_.empty())
     decide(x);

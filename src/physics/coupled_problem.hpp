@@ -77,6 +77,9 @@ public:
   /// whether the temperature is held (freeze_temperature()) and the contact decision's
   /// (InterfaceStrategy::jacobian_dependencies()); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
+  /// a, whether the temperature is held and the contact decision's, whatever the terms (the
+  /// dependencies above of a problem with varying terms: viscoplastic flow, E(T), k(T)).
+  std::vector<double> preconditioner_dependencies(const Vector &x) override;
   /// a, the first of the dependencies.
   std::size_t smooth_dependencies() const override { return 1; }
   /// With terms whose Jacobians are all constant: J at x with a = smooth[0], the contact

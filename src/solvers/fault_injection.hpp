@@ -43,6 +43,10 @@ public:
   {
     return problem_->jacobian_dependencies(x);
   }
+  std::vector<double> preconditioner_dependencies(const Vector &x) override
+  {
+    return problem_->preconditioner_dependencies(x);
+  }
   std::size_t smooth_dependencies() const override { return problem_->smooth_dependencies(); }
   bool jacobian_with(const std::vector<double> &smooth, const Vector &x, Matrix &J) override
   {

@@ -67,9 +67,20 @@ Thyra::DefaultPreconditioner<double> &default_preconditioner(Thyra::Precondition
 bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                              const NonlinearProblem::Matrix &J)
 {
-  if (!enabled_)
-    return false;
   pending_ = problem.jacobian_dependencies(x);
+  // Whether the Jacobian varies, alike on every rank (a rank without dependencies counts).
+  int constant_here = pending_.empty() ? 0 : 1;
+  int constant = 0;
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, constant_here, Teuchos::outArg(constant));
+  varying_ = constant == 0;
+  if (!enabled_)
+  {
+    pending_.clear();
+    return false;
+  }
+  pending_preconditioner_.clear();
+  if (within_solve_ && pending_.empty())
+    pending_preconditioner_ = problem.preconditioner_dependencies(x);
   const int same_here = !pending_.empty() && &J == matrix_ && pending_ == dependencies_ ? 1 : 0;
   int same = 0;
   Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, same_here, Teuchos::outArg(same));
@@ -86,6 +97,10 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   pending_.clear();
   smooth_ = smooth;
   ++counts_.jacobians_evaluated;
+  const bool begun = solve_begun_;
+  solve_begun_ = false;
+  const double last_norm = jacobian_residual_norm_;
+  jacobian_residual_norm_ = residual_norm_;
   if (!restored_.empty() && restore(J, smooth))
     return;
   if (enabled_ && tolerance_ > 0.0 && same_matrix)
@@ -96,8 +111,35 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
     if (served == 1)
       return;
   }
+  // Every condition but the dependencies' is the same on every rank; those are reduced.
+  if (enabled_ && within_solve_ && same_matrix && !begun && serves_within_solve(J, last_norm))
+    return;
   version_dependencies_ = dependencies_;
+  version_preconditioner_ = std::move(pending_preconditioner_);
+  pending_preconditioner_.clear();
+  version_failed_solves_ = failed_solves_ ? failed_solves_() : 0;
   ++version_;
+}
+
+bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J,
+                                        const double last_norm) const
+{
+  // The failure count and the norms are the same on every rank (global quantities).
+  if (failed_solves_ && failed_solves_() != version_failed_solves_)
+    return false;
+  // Newton far from its quadratic regime (||F|| not halved): the tangent moves too much for
+  // an older preconditioner.
+  if (!(residual_norm_ <= 0.5 * last_norm))
+    return false;
+  // A Jacobian that varies (no dependencies of its own) whose preconditioner dependencies
+  // are those of the version's first.
+  const int here = dependencies_.empty() && !pending_preconditioner_.empty() &&
+                           pending_preconditioner_ == version_preconditioner_
+                       ? 1
+                       : 0;
+  int everywhere = 0;
+  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, here, Teuchos::outArg(everywhere));
+  return everywhere == 1;
 }
 
 namespace

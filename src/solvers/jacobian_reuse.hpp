@@ -27,10 +27,29 @@ public:
   /// smooth dependencies (NonlinearProblem::smooth_dependencies) are each within a factor
   /// 1 + tolerance of those it was built for (same sign), the others equal
   /// (Solver/"Preconditioner Reuse Tolerance").
-  explicit JacobianReuse(bool enabled, double tolerance = 0.0)
-      : enabled_(enabled), tolerance_(tolerance)
+  /// `within_solve` (Solver/"Keep Preconditioner Within Solve"): for a Jacobian that varies
+  /// with x (no jacobian dependencies), the later Jacobians of a Newton solve keep the
+  /// preconditioner of its first while the problem's preconditioner_dependencies() are those
+  /// of the first and no linear solve since failed (failed_solves()).
+  explicit JacobianReuse(bool enabled, double tolerance = 0.0, bool within_solve = false)
+      : enabled_(enabled), tolerance_(tolerance), within_solve_(within_solve)
   {
   }
+
+  /// Whether the Jacobian of the last can_keep() varies with x (no dependencies on some
+  /// rank; the same answer on every rank), with or without Reuse.
+  bool varying() const { return varying_; }
+  /// A Newton solve begins: its first Jacobian begins a new version if it varies with x.
+  void begin_solve() { solve_begun_ = true; }
+  /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
+  /// A preconditioner kept within a solve is given up at the next Jacobian unless the last
+  /// Newton iteration at least halved ||F|| (the F evaluated before each Jacobian is that at
+  /// its x).
+  void residual_evaluated(double norm) { residual_norm_ = norm; }
+  /// The count of linear solves that stopped short of their tolerance (the same on every
+  /// rank): a preconditioner kept within a solve is given up at the next Jacobian once it
+  /// grew since that preconditioner's version began.
+  void set_failed_solves(std::function<int()> count) { failed_solves_ = std::move(count); }
 
   /// Whether J still holds the problem's Jacobian at x (x as the problem sees it): its
   /// dependencies are non-empty and equal to those of J's last evaluation, on every rank.
@@ -94,8 +113,22 @@ private:
   /// restore_origin() at the first evaluated(): whether it took (on every rank).
   bool restore(const NonlinearProblem::Matrix &J, std::size_t smooth);
 
+  /// Whether the preconditioner of a varying Jacobian serves J within the solve (the
+  /// version's preconditioner dependencies equal, no failed linear solve since, ||F||
+  /// halved by the last Newton iteration; collective).
+  bool serves_within_solve(const NonlinearProblem::Matrix &J, double last_norm) const;
+
   bool enabled_;
   double tolerance_;
+  bool within_solve_;
+  bool solve_begun_ = false;
+  bool varying_ = false;
+  std::vector<double> pending_preconditioner_; ///< of the last can_keep(), varying J only
+  std::vector<double> version_preconditioner_; ///< those of the version's first Jacobian
+  int version_failed_solves_ = 0;              ///< failed_solves_() then
+  double residual_norm_ = 0.0;                 ///< of the last residual_evaluated()
+  double jacobian_residual_norm_ = 0.0;        ///< residual_norm_ at the last evaluated()
+  std::function<int()> failed_solves_;
   std::uint64_t version_ = 0;
   const NonlinearProblem::Matrix *matrix_ = nullptr; ///< the last evaluated
   std::vector<double> dependencies_;                 ///< of its last evaluation

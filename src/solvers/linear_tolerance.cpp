@@ -5,6 +5,7 @@
 #include <NOX_Solver_Generic.H>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace kiln
@@ -33,11 +34,19 @@ Teuchos::ParameterList &newton_linear_solver(Teuchos::ParameterList &nox)
 }
 } // namespace
 
-double LinearTolerance::operator()(const double target, const double residual_norm) const
+double LinearTolerance::operator()(const double target, const double residual_norm,
+                                   const double previous_norm) const
 {
   if (!(residual_norm > 0.0) || !(target > 0.0))
     return floor;
-  return std::clamp(safety * target / residual_norm, floor, std::max(floor, ceiling));
+  double eta = safety * target / residual_norm;
+  // Only while ||F|| falls: a residual that grew says nothing of the next one.
+  if (rate > 0.0 && previous_norm > residual_norm && std::isfinite(previous_norm))
+  {
+    const double ratio = residual_norm / previous_norm;
+    eta = std::max(eta, rate * ratio * ratio);
+  }
+  return std::clamp(eta, floor, std::max(floor, ceiling));
 }
 
 double belos_convergence_tolerance(const Teuchos::ParameterList &stratimikos)
@@ -65,14 +74,18 @@ AdaptiveLinearTolerance::AdaptiveLinearTolerance(const LinearTolerance rule,
 {
 }
 
-void AdaptiveLinearTolerance::set_target(const double target)
+void AdaptiveLinearTolerance::set_target(const double target, std::function<bool()> varying)
 {
   target_ = target;
+  varying_ = std::move(varying);
+  previous_norm_ = 0.0;
 }
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  linear_solver_.set("Tolerance", rule_(target_, residual_norm));
+  const bool varying = previous_norm_ > 0.0 && varying_ && varying_();
+  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying ? previous_norm_ : 0.0));
+  previous_norm_ = residual_norm;
 }
 
 Teuchos::RCP<NOX::Observer> AdaptiveLinearTolerance::observer()

@@ -6,6 +6,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include <functional>
+
 namespace NOX
 {
 class Observer;
@@ -26,8 +28,15 @@ struct LinearTolerance
   /// Fraction of the Newton target left for the Krylov residual (Solver/"Adaptive Linear
   /// Tolerance Safety"; 0: always the floor).
   double safety = 0.0;
-  /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||.
-  double operator()(double target, double residual_norm) const;
+  /// For a Jacobian that varies with the state, from the second Newton iteration on, while
+  /// ||F|| falls: eta_k is at least rate (||F_k|| / ||F_{k-1}||)^2 (Solver/"Adaptive Linear
+  /// Tolerance Rate"; 0: not used). Newton with the consistent tangent converges quadratically, so
+  /// its next residual is about ||F_k|| (||F_k|| / ||F_{k-1}||)^2: the Krylov residual is `rate`
+  /// times that, and the iterations keep their order (Eisenstat and Walker's second choice).
+  double rate = 0.0;
+  /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||;
+  /// `previous_norm`: ||F_{k-1}|| (0 at the first iteration or for a constant Jacobian).
+  double operator()(double target, double residual_norm, double previous_norm = 0.0) const;
 };
 
 /// The Krylov tolerance of the Belos solver chosen in a Stratimikos list ("Convergence
@@ -43,8 +52,12 @@ class AdaptiveLinearTolerance
 public:
   AdaptiveLinearTolerance(LinearTolerance rule, Teuchos::ParameterList &linear_solver);
   /// The Newton test's ||F|| to reach in this solve: max(absolute, relative ||F(x0)||).
-  void set_target(double target);
-  /// Sets the Tolerance in the NOX linear solver list from the current residual norm.
+  /// `varying`: whether the Jacobian varies with the state (the rule's `rate` applies), asked
+  /// at each update() from the second Newton iteration on (the first Jacobian of the solve
+  /// has then been evaluated); null: never.
+  void set_target(double target, std::function<bool()> varying = {});
+  /// Sets the Tolerance in the NOX linear solver list from the current residual norm (and
+  /// the last one, for a varying Jacobian).
   void update(double residual_norm);
   /// The observer to register in NOX's "Solver Options"/"Observer".
   Teuchos::RCP<NOX::Observer> observer();
@@ -53,6 +66,8 @@ private:
   LinearTolerance rule_;
   Teuchos::ParameterList &linear_solver_;
   double target_ = 0.0;
+  std::function<bool()> varying_;
+  double previous_norm_ = 0.0; ///< ||F_{k-1}|| of this solve (0 before its first iteration)
 };
 
 /// Prepares the NOX list's Direction/Newton/Linear Solver for the adapted tolerance: the

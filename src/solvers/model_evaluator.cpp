@@ -139,6 +139,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in_args,
     f->elementWiseMultiply(1.0, *scale_, *f, 0.0);
   if (!f.is_null() && !pins_.is_null())
     pins_->residual(*f);
+  if (!f.is_null())
+    reuse_->residual_evaluated(f->norm2());
 }
 } // namespace internal
 } // namespace kiln

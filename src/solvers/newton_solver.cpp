@@ -90,6 +90,16 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "on as many ranks goes on to the last bit as the uninterrupted run. 0: build one for "
         "every new Jacobian [-], must be >= 0",
         nonnegative_double_validator());
+  p.set("Keep Preconditioner Within Solve", true,
+        "with Reuse, for a Jacobian that varies with the state (viscoplastic flow, a modulus "
+        "or conductivity that depends on T): the later Newton iterations of a solve (a time "
+        "step) keep the preconditioner built at its first, while the time-derivative "
+        "coefficient, the constraints and the contact decision are unchanged and no linear "
+        "solve fell short of its tolerance (then the next iteration builds one). The Jacobian "
+        "is still evaluated at every iteration (Newton converges as with the consistent "
+        "tangent); the Krylov solver sees it with the first iteration's preconditioner (its "
+        "finest level reads the new matrix; doc/solvers.md): fewer set-ups, the answer the "
+        "same to the Newton tolerance. false: a preconditioner for every new Jacobian [-]");
   p.set("Adaptive Linear Tolerance", true,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "
         "||F_k||, is below s max(Absolute Tolerance, Relative Tolerance ||F(x0)||) / ||F_k||, "
@@ -105,6 +115,17 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "residual may keep (0.1 stops at a tenth of what the Newton test asks, the answer "
         "then about as accurate as that test: 1e-9 instead of 1e-12 on a uniform state; 0: "
         "every solve to the Belos tolerance) [-], from 0 to 1",
+        double_range_validator(0.0, 1.0));
+  p.set("Adaptive Linear Tolerance Rate", 0.01,
+        "with Adaptive Linear Tolerance, for a Jacobian that varies with the state "
+        "(viscoplastic flow, a modulus or conductivity that depends on T): from the second "
+        "Newton iteration of a solve on, the Krylov solve may also stop at this times "
+        "(||F_k|| / ||F_k-1||)^2 relative to ||F_k||, this times the residual Newton's "
+        "quadratic convergence predicts for the next iteration (Eisenstat and Walker's second "
+        "choice): the early iterations are not solved far beyond what their Newton step is "
+        "worth, the last one still to the Newton target with the Safety above "
+        "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
+        "contact set is not affected. 0: not used [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
@@ -329,9 +350,12 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   {
     s.adaptive.floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
     s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
+    s.adaptive.rate = p.get<double>("Adaptive Linear Tolerance Rate");
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
-      p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance")));
+      p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
+      p.get<bool>("Keep Preconditioner Within Solve")));
+  s.reuse->set_failed_solves([guess = s.starting_guess] { return guess->unconverged; });
   const bool preconditioner_given =
       params.isSublist(linear_name) &&
       given_in_input(params.sublist(linear_name), "Preconditioner Type");
@@ -384,6 +408,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   if (!s.pins.is_null()) // the start without a part in the free motions
     s.pins->project(*Extraction::getTpetraVector(x0));
   s.group->setX(NOX::Thyra::Vector(x0));
+  s.reuse->begin_solve();
   Result result;
   // A StepFailure (a model's local solve, on every rank alike): the solve ends unconverged, x
   // as it was; a Jacobian it interrupted is not kept.
@@ -447,7 +472,12 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     internal::use_relative_residual_measure(*nox, s.adaptive.floor);
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
-    adaptive->set_target(result.tolerance);
+    // A Jacobian that varies with the state (no dependencies to keep it by), as the solve's
+    // first Jacobian found it.
+    if (s.adaptive.rate > 0.0)
+      adaptive->set_target(result.tolerance, [reuse = s.reuse] { return reuse->varying(); });
+    else
+      adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.

@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "physics/materials/linear_elastic_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kiln
@@ -163,70 +164,118 @@ void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisp
 {
   std::vector<PointResponse> responses;
   evaluate_points(fe, u, T, history, responses, nullptr);
-  const int n = fe.n_shape();
+  if (fe.type() == CellType::hex8)
+    assemble_general<hex8_n_nodes, true>(fe, responses, body_force, u_slot, T_slot, local);
+  else if (fe.n_shape() <= hex8_n_nodes)
+    assemble_general<hex8_n_nodes, false>(fe, responses, body_force, u_slot, T_slot, local);
+  else
+    assemble_general<max_cell_nodes, false>(fe, responses, body_force, u_slot, T_slot, local);
+}
+
+/// The general path's terms from the points' responses, with per-cell buffers of capacity
+/// N >= fe.n_shape() (compile-time loop bounds with `exact`, as assemble<N, exact>). At a
+/// point, with the tangent as a fourth-order C_dkel = ∂σ_dk/∂(∇u)_el = tangent[dk][el] w_el
+/// (w = 1 on the diagonal, 1/2 off it: ε_el = ((∇u)_el + (∇u)_le)/2),
+///   H_j[d][k][e]            = Σ_l C_dkel ∂_l φ_j JxW
+///   dR_{i,d}/du_{j,e}      += Σ_k ∂_k φ_i H_j[d][k][e]
+/// accumulated in the cell's buffers and added to `local` once.
+template <int N, bool exact>
+void ElasticityKernel::assemble_general(const ElementValues &fe,
+                                        const std::vector<PointResponse> &responses,
+                                        const Point &body_force, const int u_slot, const int T_slot,
+                                        LocalSystem &local) const
+{
+  const int n = exact ? N : fe.n_shape();
+  const int n_q = exact ? N : fe.n_qpoints();
   const bool jacobian = local.has_jacobian();
   const bool coupled = T_slot >= 0 && jacobian;
-  // ∂σ_I/∂u_{j,e} at a point: C B, B_{I,(j,e)} = ∂ε_I/∂u_{j,e} (tensor shear strains).
-  std::vector<Voigt> dstress(static_cast<std::size_t>(3 * n));
-  for (int q = 0; q < fe.n_qpoints(); ++q)
+  std::array<Point, N> residual{};
+  // K[i][d][j][e] = dR_{i,d}/du_{j,e}; KT[i][d][j] = dR_{i,d}/dT_j (coupled only).
+  using Row = std::array<Point, N>;
+  std::array<std::array<Row, 3>, N> K;
+  std::array<std::array<std::array<double, N>, 3>, N> KT;
+  if (jacobian)
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d)
+        std::fill(K[i][d].begin(), K[i][d].begin() + n, Point{});
+  if (coupled)
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d)
+        std::fill(KT[i][d].begin(), KT[i][d].begin() + n, 0.0);
+  std::array<std::array<Tensor, 3>, N> H; // H[j][d][k][e]
+  for (int q = 0; q < n_q; ++q)
   {
     const double JxW = fe.JxW(q);
+    const double *phi = fe.shapes(q);
+    const Point *grad_phi = fe.grads(q);
     const PointResponse &r = responses[q];
-    if (jacobian)
-      for (int j = 0; j < n; ++j)
-      {
-        const Point &g = fe.grad(j, q);
-        for (int e = 0; e < 3; ++e)
-        {
-          // ∂ε_dk/∂u_{j,e} = (δ_de g_k + δ_ke g_d) / 2.
-          Voigt B{};
-          for (int d = 0; d < 3; ++d)
-            for (int k = d; k < 3; ++k)
-              B[voigt_index[d][k]] = d == k ? (d == e ? g[d] : 0.0)
-                                            : 0.5 * ((d == e ? g[k] : 0.0) + (k == e ? g[d] : 0.0));
-          Voigt &column = dstress[3 * j + e];
-          for (int I = 0; I < 6; ++I)
-          {
-            double value = 0.0;
-            for (int J = 0; J < 6; ++J)
-              value += r.tangent[I][J] * B[J];
-            column[I] = value;
-          }
-        }
-      }
     for (int i = 0; i < n; ++i)
     {
-      const Point &g_i = fe.grad(i, q);
-      const double phi_i = fe.shape(i, q);
+      const Point &g = grad_phi[i];
       for (int d = 0; d < 3; ++d)
       {
-        double value = -body_force[d] * phi_i;
+        double value = -body_force[d] * phi[i];
         for (int k = 0; k < 3; ++k)
-          value += r.stress[voigt_index[d][k]] * g_i[k];
-        local.residual(u_slot + d, i) += value * JxW;
-        if (!jacobian)
-          continue;
+          value += r.stress[voigt_index[d][k]] * g[k];
+        residual[i][d] += value * JxW;
+      }
+    }
+    if (!jacobian)
+      continue;
+    // C_dkel JxW.
+    double C[3][3][3][3];
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k)
+        for (int e = 0; e < 3; ++e)
+          for (int l = 0; l < 3; ++l)
+            C[d][k][e][l] =
+                r.tangent[voigt_index[d][k]][voigt_index[e][l]] * (e == l ? JxW : 0.5 * JxW);
+    for (int j = 0; j < n; ++j)
+    {
+      const Point &g = grad_phi[j];
+      for (int d = 0; d < 3; ++d)
+        for (int k = 0; k < 3; ++k)
+          for (int e = 0; e < 3; ++e)
+            H[j][d][k][e] = C[d][k][e][0] * g[0] + C[d][k][e][1] * g[1] + C[d][k][e][2] * g[2];
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      const Point &g = grad_phi[i];
+      for (int d = 0; d < 3; ++d)
+      {
+        Row &K_id = K[i][d];
         for (int j = 0; j < n; ++j)
         {
+          const Tensor &H_jd = H[j][d];
           for (int e = 0; e < 3; ++e)
-          {
-            const Voigt &column = dstress[3 * j + e];
-            double K = 0.0;
-            for (int k = 0; k < 3; ++k)
-              K += column[voigt_index[d][k]] * g_i[k];
-            local.jacobian(u_slot + d, i, u_slot + e, j) += K * JxW;
-          }
-          if (coupled)
-          {
-            double K = 0.0;
-            for (int k = 0; k < 3; ++k)
-              K += r.stress_temperature_derivative[voigt_index[d][k]] * g_i[k];
-            local.jacobian(u_slot + d, i, T_slot, j) += K * fe.shape(j, q) * JxW;
-          }
+            K_id[j][e] += g[0] * H_jd[0][e] + g[1] * H_jd[1][e] + g[2] * H_jd[2][e];
+        }
+        if (coupled)
+        {
+          double s = 0.0;
+          for (int k = 0; k < 3; ++k)
+            s += r.stress_temperature_derivative[voigt_index[d][k]] * g[k];
+          s *= JxW;
+          for (int j = 0; j < n; ++j)
+            KT[i][d][j] += s * phi[j];
         }
       }
     }
   }
+  for (int i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d)
+    {
+      local.residual(u_slot + d, i) += residual[i][d];
+      if (!jacobian)
+        continue;
+      for (int j = 0; j < n; ++j)
+      {
+        for (int e = 0; e < 3; ++e)
+          local.jacobian(u_slot + d, i, u_slot + e, j) += K[i][d][j][e];
+        if (coupled)
+          local.jacobian(u_slot + d, i, T_slot, j) += KT[i][d][j];
+      }
+    }
 }
 
 ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementValues &fe,

@@ -142,5 +142,8 @@ private:
   void assemble_general(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
                         const PointHistory &history, const Point &body_force, int u_slot,
                         int T_slot, LocalSystem &local) const;
+  template <int N, bool exact>
+  void assemble_general(const ElementValues &fe, const std::vector<PointResponse> &responses,
+                        const Point &body_force, int u_slot, int T_slot, LocalSystem &local) const;
 };
 } // namespace kiln

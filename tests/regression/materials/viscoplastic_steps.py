@@ -15,6 +15,12 @@ usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
                 bar at a von Mises stress of 85 MPa) likewise.
   elastic       the same bar, linear elastic (no Model), under a traction growing in time:
                 the Jacobian is constant and kept in every step after the first.
+  reuse         the power-law bar of `newton` (MueLu and the Direct preconditioner), with
+                Solver/"Keep Preconditioner Within Solve" and "Adaptive Linear Tolerance Rate"
+                at their defaults against both off: one preconditioner per Newton solve (kept
+                for its later iterations) against one per iteration, the same Newton
+                iterations in every step, Newton still quadratic, and the displacements and
+                plastic strains at the end equal to 1e-9 relative.
 """
 import re
 import sys
@@ -83,6 +89,15 @@ def newton_per_step(log):
     return [int(n) for n in re.findall(r"^step \d+:.*Newton (\d+) \(", log, re.M)]
 
 
+def verbose_deck(body, solver=""):
+    return replace(body, '<ParameterList name="Time Stepping">',
+                   '<ParameterList name="Solver">' + solver +
+                   '<ParameterList name="Nonlinear Solver">'
+                   '<ParameterList name="Printing"><Parameter name="Output Information" '
+                   'type="int" value="3"/></ParameterList></ParameterList></ParameterList>'
+                   '<ParameterList name="Time Stepping">')
+
+
 if case == "step_control":
     log = run(text, "steps")
     cuts = re.findall(r"plastic strain increment ([0-9.e+-]+) > \"Maximum Plastic Strain "
@@ -104,12 +119,46 @@ if case == "step_control":
         fail(f"plastic strain at 3 s {plastic[-1]:.9g}, expected just below {3 * RATE:.9g}")
     print(f"{len(names) - 1} steps, one cut (1 s -> {cuts[0][1]} s), largest increment "
           f"{increments.max():.4g} <= {TOLERANCE}, plastic strain at 3 s {plastic[-1]:.4g}")
+elif case == "reuse":
+    off = ('<Parameter name="Keep Preconditioner Within Solve" type="bool" value="false"/>'
+           '<Parameter name="Adaptive Linear Tolerance Rate" type="double" value="0"/>')
+    for preconditioner in ("MueLu", "Direct"):
+        linear = ('<ParameterList name="Linear Solver"><Parameter name="Preconditioner Type" '
+                  f'type="string" value="{preconditioner}"/></ParameterList>')
+        fields = {}
+        counts = {}
+        for variant, solver in (("default", linear), ("off", linear + off)):
+            name = f"reuse-{preconditioner}-{variant}"
+            log = run(verbose_deck(text, solver), name)
+            quadratic(log)
+            counts[variant] = (newton_per_step(log), summary(log, "Newton iterations"),
+                               summary(log, "preconditioners built in this run"),
+                               summary(log, "preconditioners kept in this run"),
+                               summary(log, "linear iterations"))
+            with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
+                last = sorted(h5["steps"].keys())[-1]
+                fields[variant] = [h5["steps"][last][f][...] for f in
+                                   ("displacement", "plastic_strain")]
+        steps, newton, built, kept, linear_its = counts["default"]
+        solves = sum(1 for n in steps if n > 0) + 1  # and the equilibrium at t = 0
+        if counts["off"][0] != steps:
+            fail(f"{preconditioner}: Newton iterations per step {steps} against "
+                 f"{counts['off'][0]} with both off")
+        if built > solves or built + kept != newton or kept < newton - solves:
+            fail(f"{preconditioner}: {built} preconditioners built, {kept} kept for {newton} "
+                 f"Newton iterations in {solves} solves")
+        if counts["off"][2] != counts["off"][1] or counts["off"][3] != 0:
+            fail(f"{preconditioner}, both off: {counts['off'][2]} built, {counts['off'][3]} "
+                 f"kept for {counts['off'][1]} Newton iterations")
+        for a, b, what in zip(fields["default"], fields["off"], ("displacement", "plastic strain")):
+            error = np.max(np.abs(a - b)) / np.max(np.abs(b))
+            if not error <= 1e-9:
+                fail(f"{preconditioner}: {what} differs by {error:.3g} relative")
+        print(f"{preconditioner}: Newton {steps}; preconditioners built {built}, kept {kept} "
+              f"(off: built {counts['off'][2]}); linear iterations {linear_its} (off: "
+              f"{counts['off'][4]})")
 elif case == "newton":
-    verbose = replace(text, '<ParameterList name="Time Stepping">',
-                      '<ParameterList name="Solver"><ParameterList name="Nonlinear Solver">'
-                      '<ParameterList name="Printing"><Parameter name="Output Information" '
-                      'type="int" value="3"/></ParameterList></ParameterList></ParameterList>'
-                      '<ParameterList name="Time Stepping">')
+    verbose = verbose_deck(text)
     mts = replace(verbose, '''      <Parameter name="Type" type="string" value="Power Law"/>
       <Parameter name="Power Law A" type="double" value="1e-7"/>
       <Parameter name="Power Law n" type="double" value="0.5"/>

@@ -37,6 +37,29 @@ TEST(LinearTolerance, SafetyZeroIsAlwaysTheFloor)
   EXPECT_DOUBLE_EQ(rule(1e-8, 1e-9), 1e-10);
 }
 
+/// Adaptive Linear Tolerance Rate: with the last ||F||, eta_k is at least rate times the
+/// square of the last reduction (the residual quadratic convergence predicts), clamped.
+TEST(LinearTolerance, RateFollowsTheLastReductionSquared)
+{
+  LinearTolerance rule;
+  rule.safety = 0.001;
+  rule.rate = 0.01;
+  // ||F|| 1.2e5 -> 1.4e4: 0.01 (1.4e4 / 1.2e5)^2 = 1.36e-4, above 0.001 1e-3 / 1.4e4.
+  EXPECT_DOUBLE_EQ(rule(1e-3, 1.4e4, 1.2e5), 0.01 * (1.4e4 / 1.2e5) * (1.4e4 / 1.2e5));
+  // Without a last norm (the first iteration, a constant Jacobian): the safety rule, here
+  // the floor.
+  EXPECT_DOUBLE_EQ(rule(1e-3, 1.4e4), 1e-10);
+  // Near the end the safety rule is the looser one.
+  EXPECT_DOUBLE_EQ(rule(1e-3, 1e-2, 1e2), 0.001 * 1e-3 / 1e-2);
+  // A residual that did not fall: the safety rule.
+  EXPECT_DOUBLE_EQ(rule(1e-3, 10.0, 1.0), 0.001 * 1e-3 / 10.0);
+  EXPECT_DOUBLE_EQ(rule(1e-2, 1.0, 1.0), 1e-5);
+  // rate 0: the safety rule whatever the last norm.
+  rule.rate = 0.0;
+  EXPECT_DOUBLE_EQ(rule(1e-3, 1.4e4, 1.2e5), 1e-10);
+  EXPECT_DOUBLE_EQ(rule(1e-3, 1e-2, 1e2), 0.001 * 1e-3 / 1e-2);
+}
+
 TEST(LinearTolerance, FloorIsTheChosenBelosSolversTolerance)
 {
   Teuchos::ParameterList p;

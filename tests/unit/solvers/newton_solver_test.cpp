@@ -151,6 +151,19 @@ public:
   }
 
   std::vector<double> jacobian_dependencies(const Vector & /*x*/) override { return dependencies; }
+  std::vector<double> preconditioner_dependencies(const Vector & /*x*/) override
+  {
+    ++preconditioner_dependency_calls;
+    // The discrete dependency of a varying Jacobian changes (on every rank) at the call
+    // `change_at`, within a solve.
+    if (preconditioner_dependency_calls == change_at)
+      preconditioner_deps.push_back(1.0);
+    return preconditioner_deps;
+  }
+  /// What preconditioner_dependencies() answers, the calls, and the call at which it changes.
+  std::vector<double> preconditioner_deps;
+  int preconditioner_dependency_calls = 0;
+  int change_at = -1;
   std::size_t smooth_dependencies() const override { return smooth; }
   /// The coefficient of a term shift (u - u*) of the interior rows.
   double shift = 0.0;
@@ -414,6 +427,38 @@ TEST_F(NewtonSolverTest, AdaptiveLinearToleranceStopsAtTheNewtonTarget)
     }
     previous_iterations = adapted.linear_iterations;
   }
+}
+
+/// Adaptive Linear Tolerance Rate: on the nonlinear problem (its Jacobian varies) the Krylov
+/// solves after the first stop at rate times the square of the last reduction: fewer Krylov
+/// iterations, the same Newton iterations and tolerance, the same solution to it.
+TEST_F(NewtonSolverTest, AdaptiveLinearToleranceRateSavesKrylovIterationsOfANonlinearSolve)
+{
+  const auto run = [&](const double rate, NonlinearProblem::Vector &x)
+  {
+    auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 12, 3));
+    Teuchos::ParameterList p = solver_parameters();
+    p.set("Absolute Tolerance", 1e-8);
+    p.set("Relative Tolerance", 1e-8);
+    p.set("Adaptive Linear Tolerance Rate", rate);
+    p.sublist("Linear Solver").set("Preconditioner Type", "MueLu");
+    NewtonSolver solver(p, problem, quiet());
+    x = NonlinearProblem::Vector(problem->solution_map());
+    const NewtonSolver::Result r = solver.solve(x);
+    x.update(-1.0, problem->exact_solution(), 1.0);
+    return r;
+  };
+  NonlinearProblem::Vector error_off, error_on;
+  const NewtonSolver::Result off = run(0.0, error_off);
+  const NewtonSolver::Result on = run(0.01, error_on);
+  ASSERT_TRUE(off.converged);
+  ASSERT_TRUE(on.converged);
+  ASSERT_GE(off.newton_iterations, 3);
+  EXPECT_EQ(on.newton_iterations, off.newton_iterations);
+  EXPECT_LE(on.final_residual_norm, on.tolerance);
+  EXPECT_LT(on.linear_iterations, off.linear_iterations);
+  EXPECT_LT(error_on.normInf(), 1e-7);
+  EXPECT_LT(error_off.normInf(), 1e-7);
 }
 
 TEST_F(NewtonSolverTest, Ifpack2PreconditionerCanBeChosen)
@@ -835,6 +880,109 @@ TEST_F(JacobianReuseTest, RestartBuildsThePreconditionerTheRunKept)
     EXPECT_TRUE(without.preconditioner_origin().empty()) << off;
     EXPECT_EQ(problem->jacobians_with, 2) << off;
   }
+}
+
+/// Keep Preconditioner Within Solve: a Jacobian that varies with x (no jacobian
+/// dependencies) is evaluated at every Newton iteration, and keeps the preconditioner of the
+/// solve's first while the preconditioner dependencies are unchanged; a new solve builds one.
+class KeepPreconditionerWithinSolveTest : public NewtonSolverTest
+{
+protected:
+  RCP<NonlinearDiffusion> problem = Teuchos::rcp(new NonlinearDiffusion(comm, 9, 3));
+  NewtonSolver::Result solve_with(NewtonSolver &solver)
+  {
+    NonlinearProblem::Vector x(problem->solution_map());
+    const NewtonSolver::Result r = solver.solve(x);
+    x.update(-1.0, problem->exact_solution(), 1.0);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LT(x.normInf(), 1e-8);
+    return r;
+  }
+  Teuchos::ParameterList parameters(const bool keep, const char *preconditioner = "MueLu")
+  {
+    Teuchos::ParameterList p = solver_parameters();
+    p.set("Keep Preconditioner Within Solve", keep);
+    p.sublist("Linear Solver").set("Preconditioner Type", preconditioner);
+    return p;
+  }
+};
+
+TEST_F(KeepPreconditionerWithinSolveTest, OnePreconditionerPerSolveOnceNewtonConverges)
+{
+  problem->preconditioner_deps = {2.0};
+  for (const char *preconditioner : {"MueLu", "Direct"})
+  {
+    NewtonSolver solver(parameters(true, preconditioner), problem, quiet());
+    for (int solve = 0; solve < 2; ++solve)
+    {
+      problem->residual_norms.clear();
+      const NewtonSolver::Result r = solve_with(solver);
+      ASSERT_GE(r.newton_iterations, 4) << preconditioner;
+      EXPECT_EQ(r.jacobians_evaluated, r.newton_iterations) << preconditioner;
+      EXPECT_EQ(r.jacobians_kept, 0) << preconditioner;
+      // From u = 0 the first Newton step raises ||F|| (43 -> 131): the second iteration
+      // builds anew (the guard: ||F|| not halved); from then on ||F|| falls fast and the
+      // second iteration's preconditioner serves the rest of the solve.
+      ASSERT_GT(problem->residual_norms.at(1), problem->residual_norms.at(0));
+      EXPECT_EQ(r.preconditioners_built, 2) << preconditioner;
+      EXPECT_EQ(r.preconditioners_kept, r.newton_iterations - 2) << preconditioner;
+    }
+  }
+}
+
+TEST_F(KeepPreconditionerWithinSolveTest, OnePerIterationWhenOffOrWithoutDependencies)
+{
+  problem->preconditioner_deps = {2.0};
+  NewtonSolver off(parameters(false), problem, quiet());
+  NewtonSolver::Result r = solve_with(off);
+  EXPECT_EQ(r.preconditioners_built, r.newton_iterations);
+  EXPECT_EQ(r.preconditioners_kept, 0);
+  // Reuse false turns it off too.
+  Teuchos::ParameterList no_reuse = parameters(true);
+  no_reuse.set("Reuse", false);
+  NewtonSolver without_reuse(no_reuse, problem, quiet());
+  r = solve_with(without_reuse);
+  EXPECT_EQ(r.preconditioners_built, r.newton_iterations);
+  // A problem that names no preconditioner dependencies (the default): never kept.
+  problem->preconditioner_deps.clear();
+  NewtonSolver none(parameters(true), problem, quiet());
+  r = solve_with(none);
+  EXPECT_EQ(r.preconditioners_built, r.newton_iterations);
+}
+
+TEST_F(KeepPreconditionerWithinSolveTest, BuiltAnewWhenTheDependenciesChangeWithinTheSolve)
+{
+  problem->preconditioner_deps = {2.0};
+  problem->change_at = 4; // at the fourth Jacobian of the solve
+  NewtonSolver solver(parameters(true), problem, quiet());
+  const NewtonSolver::Result r = solve_with(solver);
+  ASSERT_GE(r.newton_iterations, 5);
+  // Built at the first, the second (||F|| rose: OnePreconditionerPerSolveOnceNewtonConverges)
+  // and the fourth Jacobian.
+  EXPECT_EQ(r.preconditioners_built, 3);
+  EXPECT_EQ(r.preconditioners_kept, r.newton_iterations - 3);
+}
+
+TEST_F(KeepPreconditionerWithinSolveTest, BuiltAnewAfterALinearSolveFellShort)
+{
+  problem->preconditioner_deps = {2.0};
+  Teuchos::ParameterList p = parameters(true);
+  // Two GMRES iterations: every solve falls short of 1e-10, so no kept preconditioner
+  // survives one; Newton still converges (more slowly), each iteration building anew.
+  Teuchos::ParameterList &gmres = p.sublist("Linear Solver")
+                                      .sublist("Linear Solver Types")
+                                      .sublist("Belos")
+                                      .sublist("Solver Types")
+                                      .sublist("Block GMRES");
+  gmres.set("Maximum Iterations", 2);
+  p.set("Maximum Iterations", 60);
+  NewtonSolver solver(p, problem, quiet());
+  NonlinearProblem::Vector x(problem->solution_map());
+  const NewtonSolver::Result r = solver.solve(x);
+  ASSERT_GT(r.linear_failures, 1);
+  // Built at the first iteration and after each failed solve but the last one's.
+  EXPECT_GE(r.preconditioners_built, r.linear_failures);
+  EXPECT_LE(r.preconditioners_built, r.linear_failures + 1);
 }
 
 TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyChanges)
