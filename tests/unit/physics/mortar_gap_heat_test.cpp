@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace
@@ -124,6 +125,50 @@ void move_body_2(kiln::Mesh &mesh, const Point &shift)
 /// Compares the Jacobian of every cell with central differences at a state with the secondary
 /// nodes near 450 K, the primary ones near 350 K and small displacements; returns the largest
 /// T-u entry seen (to tell open from closed). Also checks that each cell's residual sums to 0.
+/// Compares the Jacobian of `cell` (local nodes at X, the first n_secondary on the secondary
+/// face) with central differences at a state with the secondary nodes near 450 K, the primary
+/// ones near 350 K and small displacements (`seed` varies them); checks that its temperature
+/// rows sum to 0. Returns the largest T-u entry (to tell open from closed).
+double check_cell(const MortarGapHeat &heat, const MortarGapCell &cell, const std::vector<Point> &X,
+                  const int n_secondary, int seed)
+{
+  const int n = static_cast<int>(X.size());
+  std::vector<double> state(n * n_fields);
+  for (int a = 0; a < n; ++a)
+  {
+    ++seed;
+    state[a * n_fields] = (a < n_secondary ? 450.0 : 350.0) + 7.0 * std::sin(1.3 * seed);
+    for (int d = 0; d < 3; ++d)
+      state[a * n_fields + 1 + d] = 1e-4 * std::cos(0.7 * seed + d);
+  }
+  LocalSystem local(n, n_fields);
+  const std::vector<double> R = cell_residual(heat, cell, X, state, true, &local);
+  double sum = 0.0, scale = 0.0;
+  for (int a = 0; a < n; ++a)
+  {
+    sum += R[a * n_fields];
+    scale += std::abs(R[a * n_fields]);
+  }
+  const std::string name =
+      "cell " + std::to_string(cell.secondary_face) + "/" + std::to_string(cell.primary_face);
+  EXPECT_GT(scale, 0.0) << name;
+  EXPECT_LE(std::abs(sum), 1e-13 * scale) << name;
+
+  const auto residual = [&](const std::vector<double> &s)
+  { return cell_residual(heat, cell, X, s, false); };
+  const auto eps = [](const int column) { return column % n_fields == 0 ? 1e-3 : 1e-7; };
+  const kiln_test::Dense fd = kiln_test::finite_difference_jacobian(residual, state, eps);
+  const kiln_test::Dense J = kiln_test::local_jacobian(local);
+  EXPECT_LE(kiln_test::max_difference(J, fd), 1e-7 * kiln_test::max_abs(J)) << name;
+  double max_Tu = 0.0;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n * n_fields; ++c)
+      if (c % n_fields != 0)
+        max_Tu = std::max(max_Tu, std::abs(J[r * n_fields][c]));
+  return max_Tu;
+}
+
+/// check_cell on every cell of a pairing; the largest T-u entry.
 double check_cells(const kiln::Mesh &mesh, const Pairing &pairing, const MortarGapHeat &heat)
 {
   EXPECT_FALSE(pairing.cells.empty());
@@ -131,42 +176,11 @@ double check_cells(const kiln::Mesh &mesh, const Pairing &pairing, const MortarG
   int seed = 0;
   for (const MortarGapCell &cell : pairing.cells)
   {
-    const std::vector<Point> X = cell_positions(mesh, pairing, cell);
-    const int n = static_cast<int>(X.size());
     const int n_secondary =
         static_cast<int>(pairing.secondary.face_nodes(cell.secondary_face).size());
-    std::vector<double> state(n * n_fields);
-    for (int a = 0; a < n; ++a)
-    {
-      ++seed;
-      state[a * n_fields] = (a < n_secondary ? 450.0 : 350.0) + 7.0 * std::sin(1.3 * seed);
-      for (int d = 0; d < 3; ++d)
-        state[a * n_fields + 1 + d] = 1e-4 * std::cos(0.7 * seed + d);
-    }
-    LocalSystem local(n, n_fields);
-    const std::vector<double> R = cell_residual(heat, cell, X, state, true, &local);
-    double sum = 0.0, scale = 0.0;
-    for (int a = 0; a < n; ++a)
-    {
-      sum += R[a * n_fields];
-      scale += std::abs(R[a * n_fields]);
-    }
-    EXPECT_GT(scale, 0.0);
-    EXPECT_LE(std::abs(sum), 1e-13 * scale)
-        << "cell " << cell.secondary_face << "/" << cell.primary_face;
-
-    const auto residual = [&](const std::vector<double> &s)
-    { return cell_residual(heat, cell, X, s, false); };
-    const auto eps = [](const int column) { return column % n_fields == 0 ? 1e-3 : 1e-7; };
-    const kiln_test::Dense fd = kiln_test::finite_difference_jacobian(residual, state, eps);
-    const kiln_test::Dense J = kiln_test::local_jacobian(local);
-    const double J_scale = kiln_test::max_abs(J);
-    EXPECT_LE(kiln_test::max_difference(J, fd), 1e-7 * J_scale)
-        << "cell " << cell.secondary_face << "/" << cell.primary_face;
-    for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n * n_fields; ++c)
-        if (c % n_fields != 0)
-          max_Tu = std::max(max_Tu, std::abs(J[r * n_fields][c]));
+    max_Tu = std::max(
+        max_Tu, check_cell(heat, cell, cell_positions(mesh, pairing, cell), n_secondary, seed));
+    seed += 8;
   }
   return max_Tu;
 }
@@ -237,6 +251,32 @@ TEST(MortarGapHeat, JacobianPartlyCovered)
   }
   EXPECT_GT(partly, 0);
   EXPECT_GT(check_cells(mesh, pairing, all_terms()), 1.0);
+}
+
+TEST(MortarGapHeat, JacobianTriangleAgainstQuadrilateral)
+{
+  // A TRI3 secondary face (facing -z, 1 cm up, tilted a little) over a QUAD4 primary face
+  // (facing +z) that covers part of it, and the other way round.
+  const std::vector<Point> tri{{0.1, 0.1, 0.01}, {0.9, 0.3, 0.012}, {0.4, 1.2, 0.011}};
+  const std::vector<Point> tri_down{tri[0], tri[2], tri[1]};
+  const std::vector<Point> quad{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<Point> quad_down{
+      {0.2, -0.1, 0.01}, {0.2, 0.8, 0.01}, {1.1, 0.8, 0.01}, {1.1, -0.1, 0.01}};
+  const std::vector<Point> tri_up{{0.0, 0.0, 0.0}, {0.9, 0.1, 0.0}, {0.3, 0.9, 0.0}};
+  const MortarGapHeat heat = all_terms();
+  const auto check = [&](const kiln::CellType type_s, const std::vector<Point> &x_s,
+                         const kiln::CellType type_m, const std::vector<Point> &x_m)
+  {
+    const kiln::MortarSegments segments({type_s, x_s}, {type_m, x_m});
+    ASSERT_FALSE(segments.empty());
+    const Point &n = segments.normal();
+    const MortarGapCell cell{0, 0, type_s, type_m, Point{-n[0], -n[1], -n[2]}, segments.points()};
+    std::vector<Point> X = x_s;
+    X.insert(X.end(), x_m.begin(), x_m.end());
+    EXPECT_GT(check_cell(heat, cell, X, static_cast<int>(x_s.size()), 3), 1.0);
+  };
+  check(kiln::CellType::tri3, tri_down, kiln::CellType::quad4, quad);
+  check(kiln::CellType::quad4, quad_down, kiln::CellType::tri3, tri_up);
 }
 
 /// The heat from the secondary to the primary side summed over the cells, and the sum of the
