@@ -46,6 +46,12 @@ Teuchos::ParameterList MortarGapHeat::valid_parameters()
 
 namespace
 {
+/// Whether k_gas is other than the constant 0 (the default: no gas term).
+bool has_gas(const TemperatureFunction &k_gas)
+{
+  return !(k_gas.is_constant() && k_gas.value(0.0) == 0.0);
+}
+
 MortarGapHeat::Parameters read_parameters(const Teuchos::ParameterList &p, const std::string &where)
 {
   MortarGapHeat::Parameters r;
@@ -55,7 +61,7 @@ MortarGapHeat::Parameters read_parameters(const Teuchos::ParameterList &p, const
   r.jump_distance = p.get<double>("Jump Distance");
   r.primary_emissivity = p.get<double>("Primary Emissivity");
   r.secondary_emissivity = p.get<double>("Secondary Emissivity");
-  const bool gas = !(r.gas_conductivity.is_constant() && r.gas_conductivity.value(0.0) == 0.0);
+  const bool gas = has_gas(r.gas_conductivity);
   std::ostringstream jump;
   jump << where << "/\"Jump Distance\" = " << r.jump_distance;
   KILN_CHECK_INPUT(!gas || r.jump_distance > 0.0, jump.str(),
@@ -82,7 +88,7 @@ MortarGapHeat::MortarGapHeat(const Teuchos::ParameterList &validated_params,
 }
 
 MortarGapHeat::MortarGapHeat(const Parameters &p)
-    : p_(p), gas_(!(p.gas_conductivity.is_constant() && p.gas_conductivity.value(0.0) == 0.0)),
+    : p_(p), gas_(has_gas(p.gas_conductivity)),
       sigma_eps_(stefan_boltzmann *
                  effective_emissivity(p.secondary_emissivity, p.primary_emissivity))
 {
