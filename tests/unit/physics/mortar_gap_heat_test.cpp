@@ -165,7 +165,7 @@ double check_cell(const MortarGapHeat &heat, const MortarGapCell &cell, const st
   const auto eps = [](const int column) { return column % n_fields == 0 ? 1e-3 : 1e-7; };
   const kiln_test::Dense fd = kiln_test::finite_difference_jacobian(residual, state, eps);
   const kiln_test::Dense J = kiln_test::local_jacobian(local);
-  EXPECT_LE(kiln_test::max_difference(J, fd), 1e-7 * kiln_test::max_abs(J)) << name;
+  EXPECT_LE(kiln_test::max_difference(J, fd), 1e-8 * kiln_test::max_abs(J)) << name;
   double max_Tu = 0.0;
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n * n_fields; ++c)
