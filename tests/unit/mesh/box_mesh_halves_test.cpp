@@ -148,6 +148,38 @@ TEST(BoxMeshHalves, Tetrahedra)
   expect_on_plane(mesh, 20, 0, 0.0, {-1, 0, 0}, L * L);
 }
 
+TEST(BoxMeshHalves, CountsOfEveryCellType)
+{
+  for (const std::string type :
+       {"HEX8", "TETRA4", "WEDGE6", "PYRAMID5", "HEX20", "HEX27", "TETRA10", "MIXED"})
+  {
+    SCOPED_TRACE(type);
+    const kiln::BoxMeshGenerator generator(halves(0.0, type), "test/Box");
+    const Mesh mesh = generator.generate();
+    EXPECT_EQ(generator.n_nodes(), mesh.n_nodes());
+    EXPECT_EQ(generator.n_cells(), mesh.n_cells());
+    const std::set<int> one = nodes_of_block(mesh, 1);
+    for (const int block : mesh.block_ids())
+    {
+      if (block == 1)
+        continue;
+      for (const int n : nodes_of_block(mesh, block))
+        EXPECT_EQ(one.count(n), 0u) << "node " << n << " in blocks 1 and " << block;
+    }
+    // The cut faces cover the whole section on both sides (ContactSurface: linear faces).
+    if (type.find('1') == std::string::npos && type.find('2') == std::string::npos)
+    {
+      expect_on_plane(mesh, 10, 0, 0.0, {1, 0, 0}, L * L);
+      expect_on_plane(mesh, 20, 0, 0.0, {-1, 0, 0}, L * L);
+    }
+    else
+    {
+      EXPECT_GT(mesh.find_side_set(10)->n_sides(), 0);
+      EXPECT_GT(mesh.find_side_set(20)->n_sides(), 0);
+    }
+  }
+}
+
 TEST(BoxMeshHalves, OneMeshByDefault)
 {
   Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
