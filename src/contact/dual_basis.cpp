@@ -80,6 +80,11 @@ void DualBasis::values(const Point &xi, double *psi) const
 {
   std::array<double, max_cell_nodes> N{};
   FiniteElement::of(type_).values(xi, N.data());
+  values_from_shape(N.data(), psi);
+}
+
+void DualBasis::values_from_shape(const double *N, double *psi) const
+{
   for (int i = 0; i < n_shape_; ++i)
   {
     psi[i] = 0.0;

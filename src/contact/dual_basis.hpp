@@ -22,6 +22,9 @@ public:
   double coefficient(const int i, const int j) const { return A_[i * n_shape_ + j]; }
   /// psi_i(xi), i < n_shape(), into `psi`.
   void values(const Point &xi, double *psi) const;
+  /// psi_i from the face's standard shape values N_j at a point (FiniteElement::values), when
+  /// the caller has them already.
+  void values_from_shape(const double *N, double *psi) const;
 
 private:
   CellType type_;

@@ -40,10 +40,17 @@ MortarFaceIntegrals::MortarFaceIntegrals(const MortarFace &secondary,
     const Point normal{-outward[0], -outward[1], -outward[2]};
     for (const MortarPoint &q : segments[p].points())
     {
-      dual.values(q.xi_s, psi.data());
       fe_s.values(q.xi_s, N.data());
       fe_m.values(q.xi_m, N_m.data());
-      const Point x_s = face_point(secondary, q.xi_s), x_m = face_point(primaries[p], q.xi_m);
+      dual.values_from_shape(N.data(), psi.data());
+      // The faces' points at xi_s and xi_m (face_point's sums, with the values at hand).
+      Point x_s{0, 0, 0}, x_m{0, 0, 0};
+      for (int j = 0; j < n; ++j)
+        for (int d = 0; d < 3; ++d)
+          x_s[d] += N[j] * secondary.x[j][d];
+      for (int k = 0; k < n_primary_[p]; ++k)
+        for (int d = 0; d < 3; ++d)
+          x_m[d] += N_m[k] * primaries[p].x[k][d];
       const double gap = gap_opening(normal, x_m, x_s);
       for (int i = 0; i < n; ++i)
       {
