@@ -12,10 +12,12 @@
 #include "contact/mortar_segments.hpp"
 #include "elements/finite_element.hpp"
 #include "support/tensors.hpp"
+#include "support/two_body_mesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -444,6 +446,58 @@ TEST(MortarFaceIntegrals, NodesDownToTheMultiplierThreshold)
       const int j = k * (l.nx_s + 1) + l.nx_s;
       const double integral_N = (k == 0 || k == l.ny_s ? 0.5 : 1.0) * 0.2 / (2.0 * l.ny_s);
       EXPECT_NEAR(a.D[j][j] / integral_N, c * c, 1e-9 * c * c) << "node " << j;
+    }
+  }
+}
+
+TEST(MortarSegments, PointsOfDistortedAndWarpedFacesLieOnTheNormalLine)
+{
+  // The points' reference coordinates (in closed form on the auxiliary plane, polished by
+  // Newton) on strongly distorted, warped (non-planar) and near-parallelogram QUAD4 and on TRI3
+  // primary faces, in a general orientation: each point's positions on the two faces differ
+  // along the segments' normal only, and lie inside both faces (no shape value below 0).
+  const auto place = [](const Point &p)
+  { return kiln_test::rotated(p, 37.0, -23.0); }; // a general orientation
+  const std::vector<Point> xs = {place({0, 0, 0.1}), place({0, 1, 0.1}), place({1, 1.1, 0.1}),
+                                 place({1.05, 0, 0.1})};
+  const MortarFace secondary{CellType::quad4, xs};
+  const std::vector<std::vector<Point>> primaries = {
+      // a kite-like distorted quadrilateral
+      {place({-0.2, -0.1, 0}), place({1.3, 0.1, 0}), place({0.9, 0.7, 0}), place({0.1, 1.2, 0})},
+      // warped: one corner 0.05 off the plane of the others
+      {place({-0.1, -0.2, 0}), place({1.2, -0.1, 0.05}), place({1.1, 1.2, 0}),
+       place({-0.2, 1.1, 0})},
+      // a parallelogram up to 1e-9 (the quadratic's leading coefficient nearly 0)
+      {place({-0.3, -0.2, 0}), place({0.9, -0.2, 0}), place({1.3, 1.2, 0}),
+       place({0.1, 1.2 + 1e-9, 0})}};
+  const std::vector<Point> triangle = {place({-0.4, -0.3, 0}), place({1.8, 0.2, 0}),
+                                       place({0.3, 1.6, 0})};
+  std::vector<MortarFace> faces;
+  for (const std::vector<Point> &x : primaries)
+    faces.push_back({CellType::quad4, x});
+  faces.push_back({CellType::tri3, triangle});
+  for (const MortarFace &primary : faces)
+  {
+    const kiln::MortarSegments segments(secondary, primary);
+    ASSERT_FALSE(segments.empty());
+    const Point &n = segments.normal();
+    const kiln::FiniteElement &fe_s = kiln::FiniteElement::of(secondary.type);
+    const kiln::FiniteElement &fe_m = kiln::FiniteElement::of(primary.type);
+    for (const kiln::MortarPoint &q : segments.points())
+    {
+      const Point x_s = kiln::face_point(secondary, q.xi_s),
+                  x_m = kiln::face_point(primary, q.xi_m);
+      Point d{x_s[0] - x_m[0], x_s[1] - x_m[1], x_s[2] - x_m[2]};
+      const double along = kiln::dot(d, n);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(d[k], along * n[k], 1e-14) << "off the normal line";
+      std::array<double, kiln::max_cell_nodes> N{};
+      fe_s.values(q.xi_s, N.data());
+      for (int i = 0; i < fe_s.n_shape(); ++i)
+        EXPECT_GE(N[i], -1e-14);
+      fe_m.values(q.xi_m, N.data());
+      for (int i = 0; i < fe_m.n_shape(); ++i)
+        EXPECT_GE(N[i], -1e-14);
     }
   }
 }
