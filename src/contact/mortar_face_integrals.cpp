@@ -22,13 +22,18 @@ MortarFaceIntegrals::MortarFaceIntegrals(const MortarFace &secondary,
     M_.emplace_back(static_cast<std::size_t>(n * n_primary_.back()), 0.0);
   }
   std::vector<MortarSegments> segments;
-  std::vector<MortarPoint> covered;
+  segments.reserve(primaries.size());
+  std::size_t n_points = 0;
   for (const MortarFace &primary : primaries)
   {
     segments.emplace_back(secondary, primary);
     covered_area_ += segments.back().area();
-    covered.insert(covered.end(), segments.back().points().begin(), segments.back().points().end());
+    n_points += segments.back().points().size();
   }
+  std::vector<MortarPoint> covered;
+  covered.reserve(n_points);
+  for (const MortarSegments &segment : segments)
+    covered.insert(covered.end(), segment.points().begin(), segment.points().end());
   if (covered.empty())
     return;
   const DualBasis dual(secondary.type, covered);

@@ -16,13 +16,17 @@ namespace internal
 std::vector<Point2> clip_polygon(const std::vector<Point2> &subject,
                                  const std::vector<Point2> &window)
 {
-  std::vector<Point2> out = subject;
+  // Two buffers swapped edge by edge (a convex window adds at most one vertex per edge).
+  std::vector<Point2> out, in;
+  out.reserve(subject.size() + window.size());
+  in.reserve(subject.size() + window.size());
+  out = subject;
   for (std::size_t e = 0; e < window.size() && out.size() >= 3; ++e)
   {
     const Point2 a = window[e], b = window[(e + 1) % window.size()];
     const auto inside = [&](const Point2 &p)
     { return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]); };
-    const std::vector<Point2> in = std::move(out);
+    std::swap(in, out);
     out.clear();
     for (std::size_t i = 0; i < in.size(); ++i)
     {
@@ -232,6 +236,7 @@ MortarSegments::MortarSegments(const MortarFace &secondary, const MortarFace &pr
     return Point{centre[0] + p[0] * t1[0] + p[1] * t2[0], centre[1] + p[0] * t1[1] + p[1] * t2[1],
                  centre[2] + p[0] * t1[2] + p[1] * t2[2]};
   };
+  polygon_.reserve(overlap.size());
   for (const Point2 &p : overlap)
     polygon_.push_back(in_space(p));
   const auto plane_map = [&](const MortarFace &face)
@@ -258,6 +263,7 @@ MortarSegments::MortarSegments(const MortarFace &secondary, const MortarFace &pr
   };
   const PlaneMap secondary_map = plane_map(secondary), primary_map = plane_map(primary);
   static const Quadrature rule = quadrature::triangle_degree5();
+  points_.reserve(overlap.size() * static_cast<std::size_t>(rule.size()));
   for (std::size_t k = 0; k < overlap.size(); ++k)
   {
     const Point2 p = overlap[k], q = overlap[(k + 1) % overlap.size()];
