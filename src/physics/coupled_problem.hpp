@@ -13,6 +13,7 @@
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
 #include "physics/residual_terms.hpp"
+#include "physics/state_output.hpp"
 #include "physics/state_summary.hpp"
 #include "solvers/solver_hints.hpp"
 
@@ -127,7 +128,8 @@ public:
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;
 
-  // The state at x, for output and tests (collective).
+  // The state at x, for output and tests (collective): the state prepared at x (and with
+  // interfaces decided), then its values from StateOutput.
   /// Physical values of the owned nodes (DofManager::owned_nodes() order), with the
   /// prescribed values of the last set time where constrained.
   std::vector<double> node_temperatures(const Vector &x);
@@ -141,7 +143,7 @@ public:
   /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap. A node where gaps
   /// cross shows its pair of the first gap (Mesh::gap_side_sets order). pair_traction and
   /// pair_active: the same per pair of Mesh::gap_pairs (NaN for a gap without interface).
-  using ContactOutput = InterfaceStrategy::NodeValues;
+  using ContactOutput = StateOutput::ContactOutput;
   ContactOutput contact_output(const Vector &x);
   /// The heat across the gap at x per pair of Mesh::gap_pairs, on every rank: what the gap
   /// faces of the pair's gap carry from its node a to side b (negative: heat flows from b to
@@ -183,6 +185,8 @@ private:
   /// the twins of its gap nodes.
   void add_local(const std::vector<int> &nodes, LocalSystem &local);
   void distribute_and_add(const std::vector<int> &nodes, LocalSystem &local);
+  /// The output quantities of the state the fields hold (after prepare() or decide()).
+  StateOutput output() const;
 
   const Mesh &mesh_;
   const DofManager &dofs_;
@@ -210,12 +214,6 @@ private:
   Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
   std::unique_ptr<QuadratureState> quadrature_state_; ///< null: no model with state
-  /// Calls `visit` on each owned cell (owned order) with its kernel, values, nodal T and u
-  /// at x, and its output history (BlockElasticityKernel::output_history).
-  using CellVisitor = std::function<void(const ElasticityKernel &, const ElementValues &,
-                                         const std::vector<double> &, const std::vector<Point> &,
-                                         const ElasticityKernel::PointHistory &)>;
-  void for_each_owned_cell(const Vector &x, const CellVisitor &visit);
   /// The time of the last accepted step (NaN before one): Δt of the next.
   double accepted_time_ = std::numeric_limits<double>::quiet_NaN();
 };
