@@ -393,12 +393,23 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
   accepted_time_ = time;
   if (quadrature_state_)
     quadrature_state_->commit();
+  if (models_read_old_temperature())
+    fields_->set_accepted(x);
   if (interfaces_.empty())
     return;
   decide(x);
   for (const auto &strategy : interfaces_)
     strategy->step_accepted(time);
   check_open_gap(time);
+}
+
+bool CoupledProblem::models_read_old_temperature() const
+{
+  if (!thermal_ || !mechanics_)
+    return false; // without a temperature T_old = T = T_ref
+  const auto &kernels = mechanics_->block_elasticity().kernels();
+  return std::any_of(kernels.begin(), kernels.end(),
+                     [](const ElasticityKernel &kernel) { return kernel.general(); });
 }
 
 void CoupledProblem::step_rejected()
@@ -463,6 +474,8 @@ int CoupledProblem::resume(const double time, const Vector &x)
   // starts there (without it the first step after a restart would have dt = 0, no flow).
   accepted_time_ = time;
   constraints_.set_time(time);
+  if (models_read_old_temperature())
+    fields_->set_accepted(x);
   if (interfaces_.empty())
     return 0;
   decide(x);

@@ -92,7 +92,9 @@ public:
   /// Keeps the past temperatures if a heat kernel reads them (NodalFields::keep_history).
   void set_time_history(const std::vector<double> &weights,
                         const std::vector<const Vector *> &past) override;
-  /// Commits the quadrature-point state (QuadratureState::commit), then the interfaces' hooks.
+  /// Commits the quadrature-point state (QuadratureState::commit), keeps the temperatures of
+  /// x for the models' T at t_n (NodalFields::set_accepted, if a model reads it), then the
+  /// interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
   /// Restores the quadrature-point state (QuadratureState::restore).
   void step_rejected() override;
@@ -121,8 +123,9 @@ public:
   /// equilibrium solve of the displacement at fixed temperature; with nullptr, releases it.
   void freeze_temperature(const Vector *x);
   /// A run goes on from the saved state x (a checkpoint) at `time`: the contact monitor
-  /// starts from its active set, and `time` is the last accepted step's (the constitutive
-  /// models' next time step starts there). Returns the pairs in contact. Collective.
+  /// starts from its active set, and `time` and x are the last accepted step's (the
+  /// constitutive models' next time step starts there, from its temperature). Returns the
+  /// pairs in contact. Collective.
   int resume(double time, const Vector &x);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
@@ -166,6 +169,9 @@ private:
   /// With contact, at an accepted state: a RunError if the pairs not in contact leave a body
   /// free that the set-up counted as held by them (the result would be arbitrary). Collective.
   void check_open_gap(double time);
+  /// Whether a constitutive model gets T at t_n (PointInput::temperature_old): a temperature
+  /// and a block on the general path of the elasticity kernel.
+  bool models_read_old_temperature() const;
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With interfaces: the assembled rows at x and their decisions, unless taken at x already.
