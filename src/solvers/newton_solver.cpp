@@ -356,6 +356,8 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
       p.get<bool>("Keep Preconditioner Within Solve")));
   s.reuse->set_failed_solves([guess = s.starting_guess] { return guess->unconverged; });
+  if (s.adaptive.floor > 0.0 && s.adaptive.rate > 0.0) // solve(): its target asks varying()
+    s.reuse->track_varying();
   const bool preconditioner_given =
       params.isSublist(linear_name) &&
       given_in_input(params.sublist(linear_name), "Preconditioner Type");
