@@ -130,16 +130,21 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 
 CoupledProblem::~CoupledProblem() = default;
 
-void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
-                                        const std::string &where)
+std::vector<FreeMotions::HeldDirection> CoupledProblem::held_directions(const bool all) const
 {
   std::vector<FreeMotions::HeldDirection> held;
   for (const auto &strategy : interfaces_)
   {
-    const auto h = strategy->held_directions(true);
+    const auto h = strategy->held_directions(all);
     held.insert(held.end(), h.begin(), h.end());
   }
-  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held);
+  return held;
+}
+
+void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
+                                        const std::string &where)
+{
+  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held_directions(true));
   minimum_norm_ =
       !interfaces_.empty() && mechanics.get<std::string>("Free Motions") == "Minimum Norm";
   const FreeMotions &free = *free_;
@@ -449,13 +454,7 @@ void CoupledProblem::to_minimum_norm(Vector &x)
 
 void CoupledProblem::check_open_gap(const double time)
 {
-  std::vector<FreeMotions::HeldDirection> held;
-  for (const auto &strategy : interfaces_)
-  {
-    const auto h = strategy->held_directions(false);
-    held.insert(held.end(), h.begin(), h.end());
-  }
-  const std::string free = free_->more_free_with(held);
+  const std::string free = free_->more_free_with(held_directions(false));
   if (free.empty())
     return;
   std::ostringstream message;

@@ -163,6 +163,9 @@ public:
   const NodalConstraints &constraints() const { return constraints_; }
 
 private:
+  /// The directions the interfaces hold on this rank (InterfaceStrategy::held_directions):
+  /// with `all`, every one their pairs can hold; else those of the last decision.
+  std::vector<FreeMotions::HeldDirection> held_directions(bool all) const;
   /// The free rigid motions (FreeMotions): an InputError naming them unless Mechanics/"Free
   /// Motions" is "Minimum Norm", which keeps them for the solver. Collective.
   void check_free_motions(const Teuchos::ParameterList &mechanics, const std::string &where);
