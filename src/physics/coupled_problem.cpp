@@ -15,7 +15,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace kiln
@@ -131,16 +130,21 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
 
 CoupledProblem::~CoupledProblem() = default;
 
-void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
-                                        const std::string &where)
+std::vector<FreeMotions::HeldDirection> CoupledProblem::held_directions(const bool all) const
 {
   std::vector<FreeMotions::HeldDirection> held;
   for (const auto &strategy : interfaces_)
   {
-    const auto h = strategy->held_directions(true);
+    const auto h = strategy->held_directions(all);
     held.insert(held.end(), h.begin(), h.end());
   }
-  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held);
+  return held;
+}
+
+void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
+                                        const std::string &where)
+{
+  free_ = std::make_unique<FreeMotions>(mesh_, dofs_, constraints_, held_directions(true));
   minimum_norm_ =
       !interfaces_.empty() && mechanics.get<std::string>("Free Motions") == "Minimum Norm";
   const FreeMotions &free = *free_;
@@ -394,12 +398,23 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
   accepted_time_ = time;
   if (quadrature_state_)
     quadrature_state_->commit();
+  if (models_read_old_temperature())
+    fields_->set_accepted(x);
   if (interfaces_.empty())
     return;
   decide(x);
   for (const auto &strategy : interfaces_)
     strategy->step_accepted(time);
   check_open_gap(time);
+}
+
+bool CoupledProblem::models_read_old_temperature() const
+{
+  if (!thermal_ || !mechanics_)
+    return false; // without a temperature T_old = T = T_ref
+  const auto &kernels = mechanics_->block_elasticity().kernels();
+  return std::any_of(kernels.begin(), kernels.end(),
+                     [](const ElasticityKernel &kernel) { return kernel.general(); });
 }
 
 void CoupledProblem::step_rejected()
@@ -439,13 +454,7 @@ void CoupledProblem::to_minimum_norm(Vector &x)
 
 void CoupledProblem::check_open_gap(const double time)
 {
-  std::vector<FreeMotions::HeldDirection> held;
-  for (const auto &strategy : interfaces_)
-  {
-    const auto h = strategy->held_directions(false);
-    held.insert(held.end(), h.begin(), h.end());
-  }
-  const std::string free = free_->more_free_with(held);
+  const std::string free = free_->more_free_with(held_directions(false));
   if (free.empty())
     return;
   std::ostringstream message;
@@ -464,6 +473,8 @@ int CoupledProblem::resume(const double time, const Vector &x)
   // starts there (without it the first step after a restart would have dt = 0, no flow).
   accepted_time_ = time;
   constraints_.set_time(time);
+  if (models_read_old_temperature())
+    fields_->set_accepted(x);
   if (interfaces_.empty())
     return 0;
   decide(x);
@@ -476,62 +487,26 @@ int CoupledProblem::resume(const double time, const Vector &x)
   return active;
 }
 
+StateOutput CoupledProblem::output() const
+{
+  return StateOutput(mesh_, dofs_, slots_, *fields_, thermal_ ? &*thermal_ : nullptr,
+                     mechanics_ ? &*mechanics_ : nullptr, *terms_, interfaces_);
+}
+
 std::vector<double> CoupledProblem::gap_heat_flow(const Vector &x)
 {
-  std::vector<double> flow(mesh_.gap_pairs.size(), std::numeric_limits<double>::quiet_NaN());
-  if (!thermal_ || mesh_.gap_pairs.empty())
-    return flow;
-  prepare(x);
-  // The gap terms' heat rows at the side-a nodes of each face [W], into the face's pairs (a
-  // node where gaps cross is in a pair of each), summed over the ranks.
-  std::map<std::pair<int, int>, int> pair_of; // (gap, node a) -> pair
-  for (std::size_t p = 0; p < mesh_.gap_pairs.size(); ++p)
-    pair_of[{mesh_.gap_pairs[p].gap, mesh_.gap_pairs[p].node_a}] = static_cast<int>(p);
-  std::vector<double> local(flow.size(), 0.0);
-  const std::vector<int> &faces = terms_->evaluated_gap_faces();
-  std::size_t call = 0;
-  terms_->evaluate_gap_faces(*fields_, false,
-                             [&](const std::vector<int> &nodes, LocalSystem &system)
-                             {
-                               const GapFace &face = mesh_.gap_faces[faces[call++]];
-                               const int gap = face.gap;
-                               // The face's side-a nodes come first (any face type).
-                               const int n_side_a = static_cast<int>(face.node_b.size());
-                               for (int i = 0; i < n_side_a; ++i)
-                                 local[pair_of.at({gap, nodes[i]})] += system.residual(slots_.T, i);
-                             });
-  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
-                     static_cast<int>(local.size()), local.data(), flow.data());
-  return flow;
+  if (thermal_ && !mesh_.gap_pairs.empty())
+    prepare(x);
+  return output().gap_heat_flow();
 }
 
 StateSummary CoupledProblem::summary(const Vector &x)
 {
-  StateSummary s;
   if (!interfaces_.empty())
-  {
     decide(x);
-    std::vector<const InterfaceStrategy *> strategies;
-    for (const auto &strategy : interfaces_)
-      strategies.push_back(strategy.get());
-    summarize_contact(strategies, *fields_, *dofs_.owned_dof_map()->getComm(), s);
-  }
   else
     prepare(x);
-  if (thermal_)
-    summarize_temperature(mesh_, dofs_, *fields_, thermal_->conduction(), s);
-  summarize_displacement(dofs_, *fields_, s);
-  // The heat across each gap, for the history's columns per gap (several gaps only).
-  s.gaps.resize(mesh_.gap_side_sets.size());
-  if (thermal_ && mesh_.gap_side_sets.size() > 1)
-  {
-    for (GapFigures &gap : s.gaps)
-      gap.heat_flow = 0.0;
-    const std::vector<double> flow = gap_heat_flow(x);
-    for (std::size_t p = 0; p < flow.size(); ++p)
-      s.gaps[mesh_.gap_pairs[p].gap].heat_flow += flow[p];
-  }
-  return s;
+  return output().summary();
 }
 
 int CoupledProblem::n_pairs() const
@@ -555,111 +530,32 @@ int CoupledProblem::n_active_pairs(const Vector &x)
 
 CoupledProblem::ContactOutput CoupledProblem::contact_output(const Vector &x)
 {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::size_t n_pairs = mesh_.gap_pairs.size();
-  ContactOutput out{std::vector<double>(mesh_.n_nodes(), nan),
-                    std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(n_pairs, nan),
-                    std::vector<double>(n_pairs, nan)};
-  if (interfaces_.empty())
-    return out;
-  decide(x);
-  // The k-th pair of gap g's interface is the k-th pair of gap g in Mesh::gap_pairs.
-  std::vector<std::vector<int>> mesh_pairs(mesh_.gap_side_sets.size());
-  for (std::size_t p = 0; p < n_pairs; ++p)
-    mesh_pairs[mesh_.gap_pairs[p].gap].push_back(static_cast<int>(p));
-  // A node on several gaps shows its pair of the first (the gaps in the input's order).
-  for (const auto &strategy : interfaces_)
-  {
-    const ContactOutput more = strategy->node_values();
-    for (std::size_t n = 0; n < out.traction.size(); ++n)
-      if (std::isnan(out.traction[n]))
-      {
-        out.traction[n] = more.traction[n];
-        out.active[n] = more.active[n];
-      }
-    const std::vector<int> &of_gap = mesh_pairs[strategy->interface().gap()];
-    for (std::size_t k = 0; k < of_gap.size(); ++k)
-    {
-      out.pair_traction[of_gap[k]] = more.pair_traction[k];
-      out.pair_active[of_gap[k]] = more.pair_active[k];
-    }
-  }
-  return out;
+  if (!interfaces_.empty())
+    decide(x);
+  return output().contact_output();
 }
 
 std::vector<double> CoupledProblem::node_temperatures(const Vector &x)
 {
   prepare(x);
-  std::vector<double> T;
-  for (const int n : dofs_.owned_nodes())
-    T.push_back(fields_->T(n));
-  return T;
+  return output().node_temperatures();
 }
 
 std::vector<Point> CoupledProblem::node_displacements(const Vector &x)
 {
   prepare(x);
-  std::vector<Point> u;
-  for (const int n : dofs_.owned_nodes())
-    u.push_back(fields_->u(n));
-  return u;
-}
-
-void CoupledProblem::for_each_owned_cell(const Vector &x, const CellVisitor &visit)
-{
-  KILN_ASSERT(mechanics_, "the cell averages need the displacement");
-  prepare(x);
-  ElementValues fe;
-  std::vector<double> T;
-  std::vector<Point> u;
-  int cell_local = 0;
-  for (const int c : dofs_.owned_cells())
-  {
-    T.clear();
-    u.clear();
-    for (const int n : mesh_.cell_nodes(c))
-    {
-      T.push_back(fields_->T(n));
-      u.push_back(fields_->u(n));
-    }
-    fe.reinit(mesh_, c);
-    visit(mechanics_->block_elasticity().of_cell(c), fe, T, u,
-          mechanics_->block_elasticity().output_history(cell_local++));
-  }
+  return output().node_displacements();
 }
 
 std::vector<ElasticityKernel::CellAverages> CoupledProblem::cell_averages(const Vector &x)
 {
-  std::vector<ElasticityKernel::CellAverages> result;
-  for_each_owned_cell(x,
-                      [&result](const ElasticityKernel &kernel, const ElementValues &fe,
-                                const std::vector<double> &T, const std::vector<Point> &u,
-                                const ElasticityKernel::PointHistory &history)
-                      {
-                        if (!kernel.general())
-                        {
-                          result.push_back(kernel.cell_averages(fe, u, T));
-                          return;
-                        }
-                        // The general path: σ, ε and ε_th from the model's points.
-                        const ElasticityKernel::PointAverages points =
-                            kernel.point_averages(fe, u, T, history);
-                        ElasticityKernel::CellAverages averages{};
-                        averages.stress = points.stress;
-                        averages.strain = points.strain;
-                        averages.thermal_strain = points.thermal_strain;
-                        result.push_back(averages);
-                      });
-  return result;
+  prepare(x);
+  return output().cell_averages();
 }
 
 std::vector<ElasticityKernel::PointAverages> CoupledProblem::point_averages(const Vector &x)
 {
-  std::vector<ElasticityKernel::PointAverages> result;
-  for_each_owned_cell(x, [&result](const ElasticityKernel &kernel, const ElementValues &fe,
-                                   const std::vector<double> &T, const std::vector<Point> &u,
-                                   const ElasticityKernel::PointHistory &history)
-                      { result.push_back(kernel.point_averages(fe, u, T, history)); });
-  return result;
+  prepare(x);
+  return output().point_averages();
 }
 } // namespace kiln

@@ -13,6 +13,7 @@
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "physics/nodal_fields.hpp"
 #include "physics/residual_terms.hpp"
+#include "physics/state_output.hpp"
 #include "physics/state_summary.hpp"
 #include "solvers/solver_hints.hpp"
 
@@ -91,7 +92,9 @@ public:
   /// Keeps the past temperatures if a heat kernel reads them (NodalFields::keep_history).
   void set_time_history(const std::vector<double> &weights,
                         const std::vector<const Vector *> &past) override;
-  /// Commits the quadrature-point state (QuadratureState::commit), then the interfaces' hooks.
+  /// Commits the quadrature-point state (QuadratureState::commit), keeps the temperatures of
+  /// x for the models' T at t_n (NodalFields::set_accepted, if a model reads it), then the
+  /// interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
   /// Restores the quadrature-point state (QuadratureState::restore).
   void step_rejected() override;
@@ -120,14 +123,16 @@ public:
   /// equilibrium solve of the displacement at fixed temperature; with nullptr, releases it.
   void freeze_temperature(const Vector *x);
   /// A run goes on from the saved state x (a checkpoint) at `time`: the contact monitor
-  /// starts from its active set, and `time` is the last accepted step's (the constitutive
-  /// models' next time step starts there). Returns the pairs in contact. Collective.
+  /// starts from its active set, and `time` and x are the last accepted step's (the
+  /// constitutive models' next time step starts there, from its temperature). Returns the
+  /// pairs in contact. Collective.
   int resume(double time, const Vector &x);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;
 
-  // The state at x, for output and tests (collective).
+  // The state at x, for output and tests (collective): the state prepared at x (and with
+  // interfaces decided), then its values from StateOutput.
   /// Physical values of the owned nodes (DofManager::owned_nodes() order), with the
   /// prescribed values of the last set time where constrained.
   std::vector<double> node_temperatures(const Vector &x);
@@ -141,7 +146,7 @@ public:
   /// in compression) [Pa] and 1/0 for pairs in contact; NaN off the gap. A node where gaps
   /// cross shows its pair of the first gap (Mesh::gap_side_sets order). pair_traction and
   /// pair_active: the same per pair of Mesh::gap_pairs (NaN for a gap without interface).
-  using ContactOutput = InterfaceStrategy::NodeValues;
+  using ContactOutput = StateOutput::ContactOutput;
   ContactOutput contact_output(const Vector &x);
   /// The heat across the gap at x per pair of Mesh::gap_pairs, on every rank: what the gap
   /// faces of the pair's gap carry from its node a to side b (negative: heat flows from b to
@@ -158,12 +163,18 @@ public:
   const NodalConstraints &constraints() const { return constraints_; }
 
 private:
+  /// The directions the interfaces hold on this rank (InterfaceStrategy::held_directions):
+  /// with `all`, every one their pairs can hold; else those of the last decision.
+  std::vector<FreeMotions::HeldDirection> held_directions(bool all) const;
   /// The free rigid motions (FreeMotions): an InputError naming them unless Mechanics/"Free
   /// Motions" is "Minimum Norm", which keeps them for the solver. Collective.
   void check_free_motions(const Teuchos::ParameterList &mechanics, const std::string &where);
   /// With contact, at an accepted state: a RunError if the pairs not in contact leave a body
   /// free that the set-up counted as held by them (the result would be arbitrary). Collective.
   void check_open_gap(double time);
+  /// Whether a constitutive model gets T at t_n (PointInput::temperature_old): a temperature
+  /// and a block on the general path of the elasticity kernel.
+  bool models_read_old_temperature() const;
   /// x into the overlap and the nodal fields at x~.
   void prepare(const Vector &x);
   /// With interfaces: the assembled rows at x and their decisions, unless taken at x already.
@@ -183,6 +194,8 @@ private:
   /// the twins of its gap nodes.
   void add_local(const std::vector<int> &nodes, LocalSystem &local);
   void distribute_and_add(const std::vector<int> &nodes, LocalSystem &local);
+  /// The output quantities of the state the fields hold (after prepare() or decide()).
+  StateOutput output() const;
 
   const Mesh &mesh_;
   const DofManager &dofs_;
@@ -210,12 +223,6 @@ private:
   Teuchos::RCP<const Tpetra::MultiVector<double>> free_motions_; ///< Minimum Norm's
   std::vector<std::string> free_motion_names_;
   std::unique_ptr<QuadratureState> quadrature_state_; ///< null: no model with state
-  /// Calls `visit` on each owned cell (owned order) with its kernel, values, nodal T and u
-  /// at x, and its output history (BlockElasticityKernel::output_history).
-  using CellVisitor = std::function<void(const ElasticityKernel &, const ElementValues &,
-                                         const std::vector<double> &, const std::vector<Point> &,
-                                         const ElasticityKernel::PointHistory &)>;
-  void for_each_owned_cell(const Vector &x, const CellVisitor &visit);
   /// The time of the last accepted step (NaN before one): Δt of the next.
   double accepted_time_ = std::numeric_limits<double>::quiet_NaN();
 };

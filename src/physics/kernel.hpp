@@ -27,11 +27,15 @@ struct FieldSlots
 /// cell node; n = 0 in a steady solve or where no kernel asked for them
 /// (NodalFields::keep_history). A kernel that differentiates a nonlinear function of T in
 /// time (the enthalpy) takes dH/dt = a H(T) + Σ_k weights[k] H(T_past[k]).
+/// T_old: the temperatures of the last accepted state (t_n; NodalFields::set_accepted), one
+/// per cell node, for the constitutive models' PointInput::temperature_old; null before an
+/// accepted state or without a kernel that reads it.
 struct TemperatureHistory
 {
   int n = 0;
   std::array<double, 2> weights{};        ///< [1/s]
   std::array<const double *, 2> T_past{}; ///< [K], n_shape() values each
+  const double *T_old = nullptr;          ///< [K], n_shape() values
 };
 
 /// One cell: its shape functions and the nodal fields (constrained unknowns at their

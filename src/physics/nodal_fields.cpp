@@ -53,6 +53,20 @@ void NodalFields::set_time_history(const std::vector<double> &weights,
   weights_ = weights;
 }
 
+void NodalFields::set_accepted(const Vector &x)
+{
+  if (T_slot_ < 0)
+    return;
+  if (past_overlap_.is_null())
+    past_overlap_ = assembler_.make_overlap_vector();
+  assembler_.gather(x, *past_overlap_);
+  const auto values = past_overlap_->getData();
+  const auto &overlap_nodes = dofs_.overlap_nodes();
+  T_accepted_.resize(overlap_nodes.size());
+  for (std::size_t i = 0; i < overlap_nodes.size(); ++i)
+    T_accepted_[i] = constraints_.temperature(overlap_nodes[i], values.getRawPtr() + F_ * i);
+}
+
 void NodalFields::update(const Vector &x_overlap)
 {
   const auto x = x_overlap.getData();

@@ -39,6 +39,16 @@ public:
   double past_weight(const int k) const { return weights_[k]; }
   double T_past(const int k, const int node) const { return T_past_[k][overlap_index_[node]]; }
 
+  /// The state x (owned) was accepted (a step's end, the initial state, a checkpoint's):
+  /// its temperatures at every overlap node, with the prescribed values of the constraints'
+  /// time, are T at t_n for the steps that follow (the constitutive models'
+  /// PointInput::temperature_old). Kept until the next call; set_time_derivative() keeps
+  /// them. Without a temperature nothing is kept. Collective.
+  void set_accepted(const Vector &x);
+  /// Whether set_accepted() has been called with a temperature.
+  bool has_accepted() const { return !T_accepted_.empty(); }
+  double T_accepted(const int node) const { return T_accepted_[overlap_index_[node]]; }
+
   /// The fields at x (overlap values).
   void update(const Vector &x_overlap);
   /// The position of a mesh node among the overlap nodes, or -1.
@@ -65,5 +75,6 @@ private:
   std::vector<double> weights_;             ///< of the past states kept
   std::vector<std::vector<double>> T_past_; ///< per past state, per overlap node
   Teuchos::RCP<Vector> past_overlap_;       ///< a past state's overlap values (scratch)
+  std::vector<double> T_accepted_;          ///< per overlap node (empty: none accepted)
 };
 } // namespace kiln

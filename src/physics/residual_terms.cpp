@@ -133,6 +133,7 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
   std::vector<int> nodes;
   std::array<double, max_cell_nodes> T{}, T_dot{};
   std::array<std::array<double, max_cell_nodes>, 2> T_past{};
+  std::array<double, max_cell_nodes> T_old{};
   std::array<Point, max_cell_nodes> u{};
   TemperatureHistory history;
   history.n = fields.n_past();
@@ -141,6 +142,8 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
     history.weights[k] = fields.past_weight(k);
     history.T_past[k] = T_past[k].data();
   }
+  if (fields.has_accepted())
+    history.T_old = T_old.data();
   int cell_local = -1;
   for (const int c : dofs_.owned_cells())
   {
@@ -155,6 +158,8 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
       u[i] = fields.u(nodes[i]);
       for (int k = 0; k < history.n; ++k)
         T_past[k][i] = fields.T_past(k, nodes[i]);
+      if (history.T_old != nullptr)
+        T_old[i] = fields.T_accepted(nodes[i]);
     }
     const CellState state{fe,
                           {T.data(), n},

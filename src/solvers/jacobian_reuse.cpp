@@ -67,6 +67,13 @@ Thyra::DefaultPreconditioner<double> &default_preconditioner(Thyra::Precondition
 bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                              const NonlinearProblem::Matrix &J)
 {
+  // Reuse off: false on every rank alike; the dependencies and their reduction only serve
+  // varying(), if it is asked.
+  if (!enabled_ && !track_varying_)
+  {
+    pending_.clear();
+    return false;
+  }
   pending_ = problem.jacobian_dependencies(x);
   // Whether the Jacobian varies, alike on every rank (a rank without dependencies counts).
   int constant_here = pending_.empty() ? 0 : 1;
@@ -81,9 +88,11 @@ bool JacobianReuse::can_keep(NonlinearProblem &problem, const NonlinearProblem::
   pending_preconditioner_.clear();
   if (within_solve_ && pending_.empty())
     pending_preconditioner_ = problem.preconditioner_dependencies(x);
+  // A varying Jacobian is not kept: false on every rank (some rank has no dependencies).
   const int same_here = !pending_.empty() && &J == matrix_ && pending_ == dependencies_ ? 1 : 0;
   int same = 0;
-  Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, same_here, Teuchos::outArg(same));
+  if (!varying_)
+    Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, same_here, Teuchos::outArg(same));
   if (same == 1)
     ++counts_.jacobians_kept;
   return same == 1;

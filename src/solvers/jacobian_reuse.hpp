@@ -37,8 +37,12 @@ public:
   }
 
   /// Whether the Jacobian of the last can_keep() varies with x (no dependencies on some
-  /// rank; the same answer on every rank), with or without Reuse.
+  /// rank; the same answer on every rank): with Reuse, or with track_varying().
   bool varying() const { return varying_; }
+  /// varying() is asked (Solver/"Adaptive Linear Tolerance Rate" > 0): can_keep() finds it
+  /// with Reuse off too. Without it and without Reuse, can_keep() is false on every rank
+  /// without asking the problem or the other ranks. Call alike on every rank.
+  void track_varying() { track_varying_ = true; }
   /// A Newton solve begins: its first Jacobian begins a new version if it varies with x.
   void begin_solve() { solve_begun_ = true; }
   /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
@@ -52,8 +56,9 @@ public:
   void set_failed_solves(std::function<int()> count) { failed_solves_ = std::move(count); }
 
   /// Whether J still holds the problem's Jacobian at x (x as the problem sees it): its
-  /// dependencies are non-empty and equal to those of J's last evaluation, on every rank.
-  /// Collective. If not, the caller evaluates J and then calls evaluated(J).
+  /// dependencies are non-empty and equal to those of J's last evaluation, on every rank
+  /// (never with Reuse off). Collective (no communication with Reuse off unless
+  /// track_varying()). If not, the caller evaluates J and then calls evaluated(J).
   bool can_keep(NonlinearProblem &problem, const NonlinearProblem::Vector &x,
                 const NonlinearProblem::Matrix &J);
   /// J now holds the Jacobian of the state of the last can_keep(), whose first `smooth`
@@ -122,6 +127,7 @@ private:
   double tolerance_;
   bool within_solve_;
   bool solve_begun_ = false;
+  bool track_varying_ = false;
   bool varying_ = false;
   std::vector<double> pending_preconditioner_; ///< of the last can_keep(), varying J only
   std::vector<double> version_preconditioner_; ///< those of the version's first Jacobian

@@ -356,6 +356,8 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
       p.get<bool>("Keep Preconditioner Within Solve")));
   s.reuse->set_failed_solves([guess = s.starting_guess] { return guess->unconverged; });
+  if (s.adaptive.floor > 0.0 && s.adaptive.rate > 0.0) // solve(): its target asks varying()
+    s.reuse->track_varying();
   const bool preconditioner_given =
       params.isSublist(linear_name) &&
       given_in_input(params.sublist(linear_name), "Preconditioner Type");
@@ -392,6 +394,20 @@ void NewtonSolver::restore_preconditioner_origin(std::vector<double> record)
   impl_->reuse->restore_origin(std::move(record));
 }
 
+namespace
+{
+/// The Jacobians and preconditioners of a solve, evaluated, built or kept: the counts `after`
+/// it less those `before`.
+void set_reuse_counts(const internal::JacobianReuse::Counts &before,
+                      const internal::JacobianReuse::Counts &after, NewtonSolver::Result &result)
+{
+  result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
+  result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
+  result.preconditioners_built = after.preconditioners_built - before.preconditioners_built;
+  result.preconditioners_kept = after.preconditioners_kept - before.preconditioners_kept;
+}
+} // namespace
+
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
                                          const NonlinearProblem::Vector *first_step)
 {
@@ -419,11 +435,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     s.group->setX(NOX::Thyra::Vector(x0));
     result.converged = false;
     result.step_failure = e.what();
-    const internal::JacobianReuse::Counts &after = s.reuse->counts();
-    result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
-    result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
-    result.preconditioners_built = after.preconditioners_built - before.preconditioners_built;
-    result.preconditioners_kept = after.preconditioners_kept - before.preconditioners_kept;
+    set_reuse_counts(before, s.reuse->counts(), result);
     return result;
   };
   try
@@ -527,11 +539,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
   result.linear_failures = s.starting_guess->unconverged - unconverged_before;
-  const internal::JacobianReuse::Counts &after = s.reuse->counts();
-  result.jacobians_evaluated = after.jacobians_evaluated - before.jacobians_evaluated;
-  result.jacobians_kept = after.jacobians_kept - before.jacobians_kept;
-  result.preconditioners_built = after.preconditioners_built - before.preconditioners_built;
-  result.preconditioners_kept = after.preconditioners_kept - before.preconditioners_kept;
+  set_reuse_counts(before, s.reuse->counts(), result);
   return result;
 }
 } // namespace kiln

@@ -17,10 +17,12 @@ using VoigtMatrix = std::array<std::array<double, 6>, 6>;
 /// What a model reads at one quadrature point, at the end of the step (time t_{n+1}).
 struct PointInput
 {
-  Voigt strain{};               ///< total strain ε = sym ∇u at t_{n+1} [-]
-  double temperature = 0.0;     ///< T at t_{n+1} [K]
-  double temperature_old = 0.0; ///< T at t_n (the last accepted step) [K]
-  double time_step = 0.0;       ///< Δt = t_{n+1} − t_n [s] (0: a steady or first solve)
+  Voigt strain{};           ///< total strain ε = sym ∇u at t_{n+1} [-]
+  double temperature = 0.0; ///< T at t_{n+1} [K]
+  /// T at t_n, the last accepted state (the step's start) [K]; T itself where there is none
+  /// (Δt = 0: the initial equilibrium, output, the contact pressure of the gap conductance).
+  double temperature_old = 0.0;
+  double time_step = 0.0; ///< Δt = t_{n+1} − t_n [s] (0: a steady or first solve)
 };
 
 /// What a model returns at one quadrature point.

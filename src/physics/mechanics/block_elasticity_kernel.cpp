@@ -54,7 +54,10 @@ void BlockElasticityKernel::evaluate(const CellState &state, LocalSystem &local)
     kernel.evaluate(state, local);
     return;
   }
-  kernel.evaluate(state.fe, state.u, state.T, history(state.cell_local), kernel.body_force(),
-                  state.slots.u, state.slots.T, local);
+  ElasticityKernel::PointHistory point_history = history(state.cell_local);
+  if (state.history.T_old != nullptr) // T at t_n (else T itself: no accepted state yet)
+    point_history.T_old = {state.history.T_old, state.T.size()};
+  kernel.evaluate(state.fe, state.u, state.T, point_history, kernel.body_force(), state.slots.u,
+                  state.slots.T, local);
 }
 } // namespace kiln

@@ -1,10 +1,12 @@
 #include "physics/mechanics/displacement_condition.hpp"
 
 #include "base/errors.hpp"
+#include "mesh/side_set_nodes.hpp"
 
 #include <Teuchos_Array.hpp>
 
 #include <algorithm>
+#include <vector>
 
 namespace kiln
 {
@@ -52,11 +54,15 @@ void DisplacementCondition::add_constraints(const Mesh &mesh, NodalConstraints &
   for (const int id : side_sets())
   {
     const SideSet &set = *mesh.find_side_set(id);
-    std::vector<char> seen(mesh.n_nodes(), 0);
+    // Each node once, in the order the faces reach it; `seen` per node of the set (its
+    // position among side_set_nodes()), not per mesh node.
+    const std::vector<int> nodes = side_set_nodes(mesh, set);
+    std::vector<char> seen(nodes.size(), 0);
     for (int s = 0; s < set.n_sides(); ++s)
       for (const int node : mesh.face_nodes(set.cells[s], set.faces[s]))
       {
-        if (seen[node]++)
+        const auto k = std::lower_bound(nodes.begin(), nodes.end(), node) - nodes.begin();
+        if (seen[k]++)
           continue;
         const int value = values.at(node);
         for (const int c : components_)

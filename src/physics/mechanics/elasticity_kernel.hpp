@@ -51,8 +51,9 @@ public:
   ElasticityKernel(std::shared_ptr<const ConstitutiveModel> model, const Point &body_force);
 
   /// The general path's inputs beyond the cell's u and T: the temperature at t_n at the nodes
-  /// (empty: T itself), Δt [s], and the cell's state at t_n and t_{n+1}, n_state() doubles per
-  /// point, point after point (QuadratureState::old(c, 0), current(c, 0); null if no state).
+  /// (the last accepted state's, CellState::history.T_old; empty: T itself), Δt [s], and the cell's
+  /// state at t_n and t_{n+1}, n_state() doubles per point, point after point
+  /// (QuadratureState::old(c, 0), current(c, 0); null if no state).
   struct PointHistory
   {
     Span<const double> T_old{nullptr, 0};

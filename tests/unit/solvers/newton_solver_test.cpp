@@ -150,7 +150,12 @@ public:
     return u;
   }
 
-  std::vector<double> jacobian_dependencies(const Vector & /*x*/) override { return dependencies; }
+  std::vector<double> jacobian_dependencies(const Vector & /*x*/) override
+  {
+    ++jacobian_dependency_calls;
+    return dependencies;
+  }
+  int jacobian_dependency_calls = 0;
   std::vector<double> preconditioner_dependencies(const Vector & /*x*/) override
   {
     ++preconditioner_dependency_calls;
@@ -759,6 +764,30 @@ TEST_F(JacobianReuseTest, NeverKeptWithReuseOff)
   EXPECT_EQ(second.jacobians_evaluated, second.newton_iterations);
   EXPECT_EQ(second.preconditioners_built, second.newton_iterations);
   EXPECT_EQ(problem->jacobians_kept, 0);
+}
+
+/// With Reuse off, a Jacobian is never kept on any rank: the problem's dependencies are asked
+/// (and reduced over the ranks) only when Adaptive Linear Tolerance Rate needs to know
+/// whether the Jacobian varies.
+TEST_F(JacobianReuseTest, ReuseOffAsksNoDependenciesUnlessTheToleranceRateNeedsThem)
+{
+  problem->dependencies = {1.0};
+  Teuchos::ParameterList p = solver_parameters();
+  p.set("Reuse", false);
+  p.set("Adaptive Linear Tolerance Rate", 0.0);
+  {
+    NewtonSolver solver(p, problem, quiet());
+    const NewtonSolver::Result r = solve_once(solver);
+    EXPECT_EQ(r.jacobians_evaluated, r.newton_iterations);
+    EXPECT_EQ(problem->jacobian_dependency_calls, 0);
+  }
+  p.set("Adaptive Linear Tolerance Rate", 0.01);
+  problem->jacobian_dependency_calls = 0;
+  NewtonSolver solver(p, problem, quiet());
+  const NewtonSolver::Result r = solve_once(solver);
+  EXPECT_EQ(r.jacobians_evaluated, r.newton_iterations);
+  EXPECT_EQ(r.jacobians_kept, 0);
+  EXPECT_EQ(problem->jacobian_dependency_calls, r.jacobians_evaluated);
 }
 
 /// Solver/"Preconditioner Reuse Tolerance": a Jacobian whose smooth coefficient changed is
