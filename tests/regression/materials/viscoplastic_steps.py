@@ -21,6 +21,12 @@ usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
                 for its later iterations) against one per iteration, the same Newton
                 iterations in every step, Newton still quadratic, and the displacements and
                 plastic strains at the end equal to 1e-9 relative.
+  across        the same bar with the Solver's defaults against Solver/"Keep Preconditioner
+                Across Steps" (fewer preconditioners built: the first solve's serves the
+                later steps until a repeated step changes dt; the same Newton iterations),
+                Time Stepping/"Extrapolated Newton Start" (no more Newton iterations in any
+                step, fewer in all) and both; Newton still quadratic, the displacements and
+                plastic strains at the end equal to 1e-9 relative, MueLu and Direct.
 """
 import re
 import sys
@@ -68,10 +74,11 @@ def summary(log, what):
     return int(m.group(1))
 
 
-def quadratic(log):
+def quadratic(log, floor=0.0):
     """The NOX log's |F| of every Newton solve; fails unless each |F_k+1| / |F_0| is at most
     max(10 (|F_k| / |F_0|)^2, 1e-11) from the first iteration on (quadratic convergence, down to
-    round-off). Returns the norms of each solve."""
+    round-off), or |F_k+1| <= floor (a solve that starts from a predictor begins far below the
+    |F| its round-off is relative to). Returns the norms of each solve."""
     solves = []
     for m in re.finditer(r"^\|\|F\|\| = ([0-9.e+-]+)\s+step = ([0-9.e+-]+)", log, re.M):
         if float(m.group(2)) == 0.0:
@@ -80,7 +87,7 @@ def quadratic(log):
     for norms in solves:
         r = [f / norms[0] for f in norms] if norms[0] > 0 else []
         for k in range(1, len(r) - 1):
-            if r[k + 1] > max(10 * r[k] ** 2, 1e-11):
+            if r[k + 1] > max(10 * r[k] ** 2, 1e-11) and norms[k + 1] > floor:
                 fail(f"Newton does not converge quadratically: |F| {norms}", log)
     return solves
 
@@ -157,6 +164,54 @@ elif case == "reuse":
         print(f"{preconditioner}: Newton {steps}; preconditioners built {built}, kept {kept} "
               f"(off: built {counts['off'][2]}); linear iterations {linear_its} (off: "
               f"{counts['off'][4]})")
+elif case == "across":
+    across = '<Parameter name="Keep Preconditioner Across Steps" type="bool" value="true"/>'
+    predictor = '<Parameter name="Extrapolated Newton Start" type="bool" value="true"/>'
+    for preconditioner in ("MueLu", "Direct"):
+        linear = ('<ParameterList name="Linear Solver"><Parameter name="Preconditioner Type" '
+                  f'type="string" value="{preconditioner}"/></ParameterList>')
+        runs = {}
+        for variant, solver, stepping in (("default", linear, ""), ("across", linear + across, ""),
+                                          ("predictor", linear, predictor),
+                                          ("both", linear + across, predictor)):
+            name = f"across-{preconditioner}-{variant}"
+            body = verbose_deck(text, solver)
+            if stepping:
+                body = replace(body, '<Parameter name="Method" type="string" '
+                               'value="Backward Euler"/>', '<Parameter name="Method" '
+                               'type="string" value="Backward Euler"/>' + stepping)
+            log = run(body, name)
+            # Round-off: a tenth of the Newton target (Absolute Tolerance 1e-8).
+            quadratic(log, 1e-9)
+            with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
+                last = sorted(h5["steps"].keys())[-1]
+                fields = [h5["steps"][last][f][...] for f in ("displacement", "plastic_strain")]
+            runs[variant] = dict(steps=newton_per_step(log),
+                                 newton=summary(log, "Newton iterations"),
+                                 built=summary(log, "preconditioners built in this run"),
+                                 linear=summary(log, "linear iterations"), fields=fields)
+        ref = runs["default"]
+        for variant, got in runs.items():
+            for a, b, what in zip(got["fields"], ref["fields"], ("displacement", "plastic strain")):
+                error = np.max(np.abs(a - b)) / np.max(np.abs(b))
+                if not error <= 1e-9:
+                    fail(f"{preconditioner} {variant}: {what} differs by {error:.3g} relative")
+            print(f"{preconditioner} {variant}: Newton {got['steps']} ({got['newton']}), "
+                  f"preconditioners built {got['built']}, linear iterations {got['linear']}")
+        for variant in ("across", "both"):
+            if not runs[variant]["built"] < ref["built"]:
+                fail(f"{preconditioner} {variant}: {runs[variant]['built']} preconditioners "
+                     f"built, not fewer than {ref['built']}")
+        if runs["across"]["steps"] != ref["steps"]:
+            fail(f"{preconditioner}: Newton iterations per step {runs['across']['steps']} "
+                 f"with the preconditioner kept across steps, {ref['steps']} without")
+        for variant in ("predictor", "both"):
+            steps = runs[variant]["steps"]
+            if len(steps) != len(ref["steps"]) or \
+                    any(a > b for a, b in zip(steps, ref["steps"])) or \
+                    not runs[variant]["newton"] < ref["newton"]:
+                fail(f"{preconditioner} {variant}: Newton iterations per step {steps}, "
+                     f"without the predictor {ref['steps']}")
 elif case == "newton":
     verbose = verbose_deck(text)
     mts = replace(verbose, '''      <Parameter name="Type" type="string" value="Power Law"/>
