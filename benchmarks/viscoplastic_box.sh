@@ -15,7 +15,8 @@
 # usage: benchmarks/viscoplastic_box.sh [NP] [N...]     (default: 1  16 32)
 # KILN=path/to/kiln (default build/src/app/kiln); KILN_SOLVER_XML=file.xml adds the
 # <ParameterList name="Solver"> block in that file to both decks (a variant to compare, e.g.
-# "Keep Preconditioner Within Solve" false); KILN_MODELS="powerlaw" runs only the
+# "Keep Preconditioner Within Solve" false); KILN_STEPPING='<Parameter .../>' adds parameters
+# to both decks' Time Stepping (e.g. "Extrapolated Newton Start"); KILN_MODELS="powerlaw" runs only the
 # viscoplastic deck (no ratio).
 # Prints per mesh and material: Newton and Krylov iterations of the step, the step's time
 # (the sum of kiln --timers' assembly (residual, Jacobian), preconditioner set-up and NOX's
@@ -80,6 +81,7 @@ deck() { # N MODEL(elastic|powerlaw) FILE; $end_time: the end time [s]
     <Parameter name="Initial Step" type="double" value="1"/>
     <Parameter name="Maximum Step" type="double" value="1"/>
     <Parameter name="Maximum Plastic Strain Increment" type="double" value="1"/>
+    ${KILN_STEPPING:-}
   </ParameterList>
   <ParameterList name="Output">
     <Parameter name="File Base" type="string" value="$work/out-$1-$2"/>
