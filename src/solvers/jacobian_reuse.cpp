@@ -9,7 +9,6 @@
 #include <Thyra_LinearOpBase.hpp>
 
 #include <algorithm>
-
 #include <stdexcept>
 
 namespace kiln
@@ -115,12 +114,6 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   // Every condition but the dependencies' is the same on every rank; those are reduced.
   if (enabled_ && within_solve_ && same_matrix && !begun && serves_within_solve(J, last_norm))
     return;
-  std::cerr << "DBG begun same_matrix " << same_matrix << " stale " << stale_ << " failed "
-            << (failed_solves_ ? failed_solves_() : -1) << "/" << version_failed_solves_ << " deps "
-            << dependencies_.size() << " pend "
-            << (pending_preconditioner_.empty() ? -1.0 : pending_preconditioner_[0]) << " ver "
-            << (version_preconditioner_.empty() ? -1.0 : version_preconditioner_[0]) << " smooth "
-            << smooth_ << "\n";
   // The first Jacobian of a solve, with the preconditioner of the solve before (not stale).
   if (enabled_ && within_solve_ && across_steps_ && same_matrix && begun && !stale_ &&
       serves_within_solve(J, last_norm, /*first_of_solve=*/true))
