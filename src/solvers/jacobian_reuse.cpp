@@ -123,6 +123,11 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   // Every condition but the dependencies' is the same on every rank; those are reduced.
   if (enabled_ && within_solve_ && same_matrix && !begun && serves_within_solve(J, last_norm))
     return;
+  // The first Jacobian of a solve, with the preconditioner of the solve before (not stale).
+  if (enabled_ && within_solve_ && across_steps_ && same_matrix && begun && !stale_ &&
+      serves_within_solve(J, last_norm, /*first_of_solve=*/true))
+    return;
+  solve_began_version_ = true;
   version_dependencies_ = dependencies_;
   version_preconditioner_ = std::move(pending_preconditioner_);
   pending_preconditioner_.clear();
@@ -130,22 +135,45 @@ void JacobianReuse::evaluated(const NonlinearProblem::Matrix &J, const std::size
   ++version_;
 }
 
-bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J,
-                                        const double last_norm) const
+void JacobianReuse::end_solve(const bool converged, const int newton_iterations,
+                              const int linear_iterations)
+{
+  if (!across_steps_)
+    return;
+  if (!converged)
+  {
+    stale_ = true;
+    return;
+  }
+  if (newton_iterations <= 0)
+    return;
+  const double per_iteration = static_cast<double>(linear_iterations) / newton_iterations;
+  if (solve_began_version_)
+  {
+    fresh_krylov_ = per_iteration;
+    stale_ = false;
+  }
+  else if (per_iteration > staleness_ * std::max(fresh_krylov_, 1.0))
+    stale_ = true;
+}
+
+bool JacobianReuse::serves_within_solve(const NonlinearProblem::Matrix &J, const double last_norm,
+                                        const bool first_of_solve) const
 {
   // The failure count and the norms are the same on every rank (global quantities).
   if (failed_solves_ && failed_solves_() != version_failed_solves_)
     return false;
   // Newton far from its quadratic regime (||F|| not halved): the tangent moves too much for
   // an older preconditioner.
-  if (!(residual_norm_ <= 0.5 * last_norm))
+  if (!first_of_solve && !(residual_norm_ <= 0.5 * last_norm))
     return false;
   // A Jacobian that varies (no dependencies of its own) whose preconditioner dependencies
-  // are those of the version's first.
-  const int here = dependencies_.empty() && !pending_preconditioner_.empty() &&
-                           pending_preconditioner_ == version_preconditioner_
-                       ? 1
-                       : 0;
+  // are those of the version's first; with the preconditioner kept across steps, the smooth
+  // ones (a) within the Preconditioner Reuse Tolerance of them (a solve does not change them).
+  const bool same = across_steps_
+                        ? serves(version_preconditioner_, pending_preconditioner_, smooth_)
+                        : pending_preconditioner_ == version_preconditioner_;
+  const int here = dependencies_.empty() && !pending_preconditioner_.empty() && same ? 1 : 0;
   int everywhere = 0;
   Teuchos::reduceAll(*J.getComm(), Teuchos::REDUCE_MIN, here, Teuchos::outArg(everywhere));
   return everywhere == 1;

@@ -31,8 +31,17 @@ public:
   /// with x (no jacobian dependencies), the later Jacobians of a Newton solve keep the
   /// preconditioner of its first while the problem's preconditioner_dependencies() are those
   /// of the first and no linear solve since failed (failed_solves()).
-  explicit JacobianReuse(bool enabled, double tolerance = 0.0, bool within_solve = false)
-      : enabled_(enabled), tolerance_(tolerance), within_solve_(within_solve)
+  /// `across_steps` (Solver/"Keep Preconditioner Across Steps", with `within_solve`): the
+  /// first Jacobian of a solve also keeps the preconditioner of the solve before, under the
+  /// same conditions but the ||F|| one, the smooth preconditioner dependencies (a) within a
+  /// factor 1 + `tolerance` of the version's, unless it is stale (end_solve()).
+  /// `staleness` (Solver/"Preconditioner Staleness Factor"): a preconditioner kept across
+  /// steps goes stale once a solve that kept it took more than this times the Krylov
+  /// iterations per Newton iteration of the solve that built it.
+  explicit JacobianReuse(bool enabled, double tolerance = 0.0, bool within_solve = false,
+                         bool across_steps = false, double staleness = 2.0)
+      : enabled_(enabled), tolerance_(tolerance), within_solve_(within_solve),
+        across_steps_(across_steps), staleness_(staleness)
   {
   }
 
@@ -44,7 +53,17 @@ public:
   /// without asking the problem or the other ranks. Call alike on every rank.
   void track_varying() { track_varying_ = true; }
   /// A Newton solve begins: its first Jacobian begins a new version if it varies with x.
-  void begin_solve() { solve_begun_ = true; }
+  void begin_solve()
+  {
+    solve_begun_ = true;
+    solve_began_version_ = false;
+  }
+  /// A Newton solve ended (converged or not) after `newton_iterations` iterations with
+  /// `linear_iterations` Krylov iterations in all (the same on every rank). With
+  /// `across_steps`: an unconverged solve makes the preconditioner stale; a solve that began
+  /// a version sets the fresh Krylov count per Newton iteration; a solve that kept the
+  /// preconditioner throughout makes it stale once its count exceeds `staleness` times that.
+  void end_solve(bool converged, int newton_iterations, int linear_iterations);
   /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
   /// A preconditioner kept within a solve is given up at the next Jacobian unless the last
   /// Newton iteration at least halved ||F|| (the F evaluated before each Jacobian is that at
@@ -121,11 +140,19 @@ private:
   /// Whether the preconditioner of a varying Jacobian serves J within the solve (the
   /// version's preconditioner dependencies equal, no failed linear solve since, ||F||
   /// halved by the last Newton iteration; collective).
-  bool serves_within_solve(const NonlinearProblem::Matrix &J, double last_norm) const;
+  /// `first_of_solve` (across_steps_): the same without the ||F|| condition. With
+  /// across_steps_ the smooth preconditioner dependencies are compared within the tolerance.
+  bool serves_within_solve(const NonlinearProblem::Matrix &J, double last_norm,
+                           bool first_of_solve = false) const;
 
   bool enabled_;
   double tolerance_;
   bool within_solve_;
+  bool across_steps_;
+  double staleness_;
+  bool stale_ = true;                ///< across_steps_: no fresh count yet, or stale
+  double fresh_krylov_ = 0.0;        ///< Krylov per Newton iteration of the version's solve
+  bool solve_began_version_ = false; ///< since begin_solve()
   bool solve_begun_ = false;
   bool track_varying_ = false;
   bool varying_ = false;

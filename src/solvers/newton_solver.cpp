@@ -27,6 +27,7 @@
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearSolverBuilderBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
 
 #include <algorithm>
 #include <iostream>
@@ -100,6 +101,22 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "tangent); the Krylov solver sees it with the first iteration's preconditioner (its "
         "finest level reads the new matrix; doc/solvers.md): fewer set-ups, the answer the "
         "same to the Newton tolerance. false: a preconditioner for every new Jacobian [-]");
+  p.set("Keep Preconditioner Across Steps", false,
+        "with Keep Preconditioner Within Solve, for a Jacobian that varies with the state: the "
+        "first Newton iteration of a solve (a time step) also keeps the preconditioner of the "
+        "solve before, under the same conditions (the constraints and the contact decision "
+        "unchanged, no linear solve short of its tolerance) but that the time-derivative "
+        "coefficient a may be within a factor 1 + Preconditioner Reuse Tolerance of the one "
+        "it was built for, until it is stale: the solve before did not converge, or it took more "
+        "than Preconditioner Staleness Factor times the Krylov iterations per Newton "
+        "iteration of the solve that built it (doc/solvers.md). The answer is the same to the "
+        "Newton tolerance, not to the last bit: a restart builds a new preconditioner at its "
+        "first solve. false: one per solve [-]");
+  p.set("Preconditioner Staleness Factor", 2.0,
+        "with Keep Preconditioner Across Steps: the growth of the Krylov iterations per Newton "
+        "iteration, against the solve that built the preconditioner, that makes it stale (the "
+        "next solve builds one) [-], from 1 to 1000",
+        double_range_validator(1.0, 1000.0));
   p.set("Adaptive Linear Tolerance", true,
         "true: stop the Krylov solve of each Newton iteration once its residual, relative to "
         "||F_k||, is below s max(Absolute Tolerance, Relative Tolerance ||F(x0)||) / ||F_k||, "
@@ -354,7 +371,9 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
-      p.get<bool>("Keep Preconditioner Within Solve")));
+      p.get<bool>("Keep Preconditioner Within Solve"),
+      p.get<bool>("Keep Preconditioner Across Steps"),
+      p.get<double>("Preconditioner Staleness Factor")));
   s.reuse->set_failed_solves([guess = s.starting_guess] { return guess->unconverged; });
   if (s.adaptive.floor > 0.0 && s.adaptive.rate > 0.0) // solve(): its target asks varying()
     s.reuse->track_varying();
@@ -408,8 +427,14 @@ void set_reuse_counts(const internal::JacobianReuse::Counts &before,
 }
 } // namespace
 
+bool NewtonSolver::jacobian_varies() const
+{
+  return impl_->reuse->varying();
+}
+
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
-                                         const NonlinearProblem::Vector *first_step)
+                                         const NonlinearProblem::Vector *first_step,
+                                         const bool start_at_first_step)
 {
   namespace ST = NOX::StatusTest;
   using Extraction = Thyra::TpetraOperatorVectorExtraction<double>;
@@ -436,6 +461,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     result.converged = false;
     result.step_failure = e.what();
     set_reuse_counts(before, s.reuse->counts(), result);
+    s.reuse->end_solve(false, result.newton_iterations, 0);
     return result;
   };
   try
@@ -492,7 +518,25 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       adaptive->set_target(result.tolerance);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
-  if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
+  if (first_step != nullptr && start_at_first_step)
+  {
+    // Newton starts at x + first_step (the tolerance stays that of F(x), set above).
+    RCP<Thyra::VectorBase<double>> x_start = x0->clone_v();
+    Thyra::Vp_V(x_start.ptr(), *s.to_solver(*first_step, 1.0, space));
+    if (!s.pins.is_null())
+      s.pins->project(*Extraction::getTpetraVector(x_start));
+    s.group->setX(NOX::Thyra::Vector(x_start));
+    try // F at the start, as NOX's first iteration expects it (and its observer reads it)
+    {
+      s.group->computeF();
+    }
+    catch (const StepFailure &e)
+    {
+      result.final_residual_norm = std::numeric_limits<double>::quiet_NaN();
+      return failed(e);
+    }
+  }
+  else if (first_step != nullptr) // NOX solves J X = F for X = -dx, in x / c.
     s.starting_guess->set(s.to_solver(*first_step, -1.0, space));
   const RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(s.group, tests, nox);
   ST::StatusType status = ST::Unevaluated;
@@ -540,6 +584,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   result.final_residual_norm = solution.getNormF();
   result.linear_failures = s.starting_guess->unconverged - unconverged_before;
   set_reuse_counts(before, s.reuse->counts(), result);
+  s.reuse->end_solve(result.converged, result.newton_iterations, result.linear_iterations);
   return result;
 }
 } // namespace kiln

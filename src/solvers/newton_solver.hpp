@@ -61,7 +61,14 @@ public:
   /// (the same answer to the Krylov tolerance). A StepFailure in an evaluation ends the solve
   /// unconverged (Result::step_failure), with the kept Jacobian and preconditioner forgotten.
   /// Collective.
-  Result solve(NonlinearProblem::Vector &x, const NonlinearProblem::Vector *first_step = nullptr);
+  /// With `start_at_first_step` (and a first_step), Newton starts at x + first_step instead
+  /// (a predictor), its relative tolerance still that of ||F(x)||, and the Krylov solves
+  /// start from zero.
+  Result solve(NonlinearProblem::Vector &x, const NonlinearProblem::Vector *first_step = nullptr,
+               bool start_at_first_step = false);
+  /// Whether the Jacobian of the last solve varied with the state (a viscoplastic model, a
+  /// property of T: nothing keeps it), as its first Jacobian found it; false before a solve.
+  bool jacobian_varies() const;
   /// "Maximum Iterations" of the input.
   int max_iterations() const;
   /// The linear solver's Preconditioner Type as used ("MueLu", "Block Triangular", ...: the

@@ -184,6 +184,15 @@ Teuchos::ParameterList TimeStepper::valid_parameters()
         "accepted ones before it (quadratic through the last three states, linear after the "
         "first step) where that leaves a smaller linear residual than zero: the same answer "
         "to the Krylov tolerance in fewer iterations (doc/solvers.md). false: from zero [-]");
+  p.set("Extrapolated Newton Start", false,
+        "for a problem whose Jacobian varies with the state (a viscoplastic model, a property "
+        "of T): Newton starts each step after the first at the state extrapolated from the "
+        "accepted ones (as Extrapolated Krylov Start extrapolates), a predictor of the flow "
+        "going on, instead of at the last state; its tolerance stays relative to the residual "
+        "at the last state. The answer is the same to the Newton tolerance, in fewer "
+        "iterations where the state changes smoothly (doc/materials.md, \"Cost of a "
+        "viscoplastic step\"). A problem with a constant Jacobian is not affected. false: "
+        "from the last state [-]");
   return p;
 }
 
@@ -197,7 +206,8 @@ TimeStepper::TimeStepper(const Teuchos::ParameterList &p, const std::string &whe
       absolute_tolerance_(p.get<double>("Absolute Error Tolerance")),
       maximum_plastic_increment_(p.get<double>("Maximum Plastic Strain Increment")),
       maximum_steps_(p.get<int>("Maximum Steps")),
-      extrapolated_start_(p.get<bool>("Extrapolated Krylov Start")), where_(where),
+      extrapolated_start_(p.get<bool>("Extrapolated Krylov Start")),
+      extrapolated_newton_start_(p.get<bool>("Extrapolated Newton Start")), where_(where),
       out_(std::move(out))
 {
   const std::string method = p.get<std::string>("Method");
@@ -363,8 +373,10 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   problem.set_time_history(weights, past);
   Tpetra::deep_copy(x, *state.x);
   // The first Newton step, extrapolated from the accepted states: its Krylov start.
+  // Or, for a Jacobian that varies (Extrapolated Newton Start), Newton's start.
+  const bool predict = extrapolated_newton_start_ && newton.jacobian_varies();
   std::unique_ptr<Vector> first_step;
-  if (extrapolated_start_ && n_past >= 1)
+  if ((extrapolated_start_ || predict) && n_past >= 1)
   {
     const auto w = internal::extrapolation_weights(h, k, k2, n_past >= 2);
     first_step = std::make_unique<Vector>(map);
@@ -372,7 +384,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
     if (n_past >= 2)
       first_step->update(w[2], *state.x_2, 1.0);
   }
-  r = newton.solve(x, first_step.get());
+  r = newton.solve(x, first_step.get(), predict);
 
   if (!r.converged)
   {

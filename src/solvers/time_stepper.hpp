@@ -160,7 +160,8 @@ private:
   double absolute_tolerance_;
   double maximum_plastic_increment_; ///< "Maximum Plastic Strain Increment"
   int maximum_steps_;
-  bool extrapolated_start_; ///< "Extrapolated Krylov Start"
+  bool extrapolated_start_;        ///< "Extrapolated Krylov Start"
+  bool extrapolated_newton_start_; ///< "Extrapolated Newton Start"
   std::string where_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
 };

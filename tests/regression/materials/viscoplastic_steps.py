@@ -21,6 +21,14 @@ usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
                 for its later iterations) against one per iteration, the same Newton
                 iterations in every step, Newton still quadratic, and the displacements and
                 plastic strains at the end equal to 1e-9 relative.
+  across        the same bar with the Solver's defaults against Solver/"Keep Preconditioner
+                Across Steps" (fewer preconditioners built: the first solve's serves the
+                later steps until a repeated step changes dt; the same Newton iterations),
+                Time Stepping/"Extrapolated Newton Start" (no more Newton iterations in any
+                step, fewer in all) and both; Newton still quadratic, the displacements and
+                plastic strains at the end equal to 1e-9 relative, MueLu and Direct. The bar
+                linear elastic (a constant Jacobian) with both: the same counts and
+                displacements to the last bit.
 """
 import re
 import sys
@@ -68,10 +76,11 @@ def summary(log, what):
     return int(m.group(1))
 
 
-def quadratic(log):
+def quadratic(log, floor=0.0):
     """The NOX log's |F| of every Newton solve; fails unless each |F_k+1| / |F_0| is at most
     max(10 (|F_k| / |F_0|)^2, 1e-11) from the first iteration on (quadratic convergence, down to
-    round-off). Returns the norms of each solve."""
+    round-off), or |F_k+1| <= floor (a solve that starts from a predictor begins far below the
+    |F| its round-off is relative to). Returns the norms of each solve."""
     solves = []
     for m in re.finditer(r"^\|\|F\|\| = ([0-9.e+-]+)\s+step = ([0-9.e+-]+)", log, re.M):
         if float(m.group(2)) == 0.0:
@@ -80,7 +89,7 @@ def quadratic(log):
     for norms in solves:
         r = [f / norms[0] for f in norms] if norms[0] > 0 else []
         for k in range(1, len(r) - 1):
-            if r[k + 1] > max(10 * r[k] ** 2, 1e-11):
+            if r[k + 1] > max(10 * r[k] ** 2, 1e-11) and norms[k + 1] > floor:
                 fail(f"Newton does not converge quadratically: |F| {norms}", log)
     return solves
 
@@ -96,6 +105,25 @@ def verbose_deck(body, solver=""):
                    '<ParameterList name="Printing"><Parameter name="Output Information" '
                    'type="int" value="3"/></ParameterList></ParameterList></ParameterList>'
                    '<ParameterList name="Time Stepping">')
+
+
+def elastic_body(body=None):
+    """The bar without the model (linear elastic) under a traction 4e6 t Pa, steps of 0.5 s."""
+    body = text if body is None else body
+    body = body[:body.index('    <ParameterList name="Model">')] + \
+        body[body.index('    </ParameterList>\n  </ParameterList>\n  <ParameterList name="Mechanics">')
+             + len('    </ParameterList>\n'):]
+    body = replace(body, '<Parameter name="Traction" type="Array(double)" value="{4e6, 0, 0}"/>',
+                   '<Parameter name="Traction Expressions" type="Array(string)" '
+                   'value="{4e6*t, 0, 0}"/>')
+    body = replace(body, '<Parameter name="Initial Step" type="double" value="1"/>',
+                   '<Parameter name="Initial Step" type="double" value="0.5"/>')
+    body = replace(body, '<Parameter name="Maximum Step" type="double" value="1"/>',
+                   '<Parameter name="Maximum Step" type="double" value="0.5"/>'
+                   '<Parameter name="Growth Factor" type="double" value="1"/>')
+    if "Power Law" in body:
+        fail("the elastic deck still has the model")
+    return body
 
 
 if case == "step_control":
@@ -157,6 +185,79 @@ elif case == "reuse":
         print(f"{preconditioner}: Newton {steps}; preconditioners built {built}, kept {kept} "
               f"(off: built {counts['off'][2]}); linear iterations {linear_its} (off: "
               f"{counts['off'][4]})")
+elif case == "across":
+    across = '<Parameter name="Keep Preconditioner Across Steps" type="bool" value="true"/>'
+    predictor = '<Parameter name="Extrapolated Newton Start" type="bool" value="true"/>'
+    for preconditioner in ("MueLu", "Direct"):
+        linear = ('<ParameterList name="Linear Solver"><Parameter name="Preconditioner Type" '
+                  f'type="string" value="{preconditioner}"/></ParameterList>')
+        runs = {}
+        for variant, solver, stepping in (("default", linear, ""), ("across", linear + across, ""),
+                                          ("predictor", linear, predictor),
+                                          ("both", linear + across, predictor)):
+            name = f"across-{preconditioner}-{variant}"
+            body = verbose_deck(text, solver)
+            if stepping:
+                body = replace(body, '<Parameter name="Method" type="string" '
+                               'value="Backward Euler"/>', '<Parameter name="Method" '
+                               'type="string" value="Backward Euler"/>' + stepping)
+            log = run(body, name)
+            # Round-off: a tenth of the Newton target (Absolute Tolerance 1e-8).
+            quadratic(log, 1e-9)
+            with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
+                last = sorted(h5["steps"].keys())[-1]
+                fields = [h5["steps"][last][f][...] for f in ("displacement", "plastic_strain")]
+            runs[variant] = dict(steps=newton_per_step(log),
+                                 newton=summary(log, "Newton iterations"),
+                                 built=summary(log, "preconditioners built in this run"),
+                                 linear=summary(log, "linear iterations"), fields=fields)
+        ref = runs["default"]
+        for variant, got in runs.items():
+            for a, b, what in zip(got["fields"], ref["fields"], ("displacement", "plastic strain")):
+                error = np.max(np.abs(a - b)) / np.max(np.abs(b))
+                if not error <= 1e-9:
+                    fail(f"{preconditioner} {variant}: {what} differs by {error:.3g} relative")
+            print(f"{preconditioner} {variant}: Newton {got['steps']} ({got['newton']}), "
+                  f"preconditioners built {got['built']}, linear iterations {got['linear']}")
+        for variant in ("across", "both"):
+            if not runs[variant]["built"] < ref["built"]:
+                fail(f"{preconditioner} {variant}: {runs[variant]['built']} preconditioners "
+                     f"built, not fewer than {ref['built']}")
+        if runs["across"]["steps"] != ref["steps"]:
+            fail(f"{preconditioner}: Newton iterations per step {runs['across']['steps']} "
+                 f"with the preconditioner kept across steps, {ref['steps']} without")
+        # A constant (elastic) Jacobian: neither option applies; the same counts, the same
+        # results to the last bit.
+        elastic = {}
+        for variant, solver, stepping in (("default", linear, ""),
+                                          ("both", linear + across, predictor)):
+            name = f"across-{preconditioner}-elastic-{variant}"
+            body = verbose_deck(elastic_body(), solver)
+            if stepping:
+                body = replace(body, '<Parameter name="Method" type="string" '
+                               'value="Backward Euler"/>', '<Parameter name="Method" '
+                               'type="string" value="Backward Euler"/>' + stepping)
+            log = run(body, name)
+            with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
+                last = sorted(h5["steps"].keys())[-1]
+                fields = [h5["steps"][last]["displacement"][...]]
+            elastic[variant] = ([summary(log, what) for what in (
+                "Newton iterations", "linear iterations", "Jacobians assembled in this run",
+                "Jacobians kept in this run", "preconditioners built in this run",
+                "preconditioners kept in this run")], newton_per_step(log), fields)
+        if elastic["both"][:2] != elastic["default"][:2] or \
+                not np.array_equal(elastic["both"][2][0], elastic["default"][2][0]):
+            fail(f"{preconditioner}, elastic: counts {elastic['both'][0]} with both options, "
+                 f"{elastic['default'][0]} without, or other displacements")
+        print(f"{preconditioner} elastic: the same counts with both options "
+              f"{elastic['both'][0]} and displacements")
+        for variant in ("predictor", "both"):
+            steps = runs[variant]["steps"]
+            if len(steps) != len(ref["steps"]) or \
+                    any(a > b for a, b in zip(steps, ref["steps"])) or \
+                    not runs[variant]["newton"] < ref["newton"]:
+                fail(f"{preconditioner} {variant}: Newton iterations per step {steps}, "
+                     f"without the predictor {ref['steps']}")
 elif case == "newton":
     verbose = verbose_deck(text)
     mts = replace(verbose, '''      <Parameter name="Type" type="string" value="Power Law"/>
@@ -188,20 +289,7 @@ elif case == "newton":
         print(f"{name}: Newton iterations per step {iterations}, no Jacobian kept; |F| of each "
               "solve: " + "; ".join(" ".join(f"{f:.3g}" for f in n) for n in solves))
 else:  # elastic
-    body = text[:text.index('    <ParameterList name="Model">')] + \
-        text[text.index('    </ParameterList>\n  </ParameterList>\n  <ParameterList name="Mechanics">')
-             + len('    </ParameterList>\n'):]
-    body = replace(body, '<Parameter name="Traction" type="Array(double)" value="{4e6, 0, 0}"/>',
-                   '<Parameter name="Traction Expressions" type="Array(string)" '
-                   'value="{4e6*t, 0, 0}"/>')
-    body = replace(body, '<Parameter name="Initial Step" type="double" value="1"/>',
-                   '<Parameter name="Initial Step" type="double" value="0.5"/>')
-    body = replace(body, '<Parameter name="Maximum Step" type="double" value="1"/>',
-                   '<Parameter name="Maximum Step" type="double" value="0.5"/>'
-                   '<Parameter name="Growth Factor" type="double" value="1"/>')
-    if "Power Law" in body:
-        fail("the elastic deck still has the model")
-    log = run(body, "elastic")
+    log = run(elastic_body(), "elastic")
     kept = summary(log, "Jacobians kept in this run")
     assembled = summary(log, "Jacobians assembled in this run")
     steps = len(newton_per_step(log))

@@ -1014,6 +1014,135 @@ TEST_F(KeepPreconditionerWithinSolveTest, BuiltAnewAfterALinearSolveFellShort)
   EXPECT_LE(r.preconditioners_built, r.linear_failures + 1);
 }
 
+/// Keep Preconditioner Across Steps: the first Jacobian of a solve also keeps the
+/// preconditioner of the solve before, unless the dependencies changed, the solve before did
+/// not converge, or its Krylov iterations per Newton iteration grew past the staleness
+/// factor times those of the solve that built it.
+class KeepPreconditionerAcrossStepsTest : public KeepPreconditionerWithinSolveTest
+{
+protected:
+  Teuchos::ParameterList across(const bool keep, const double staleness = 2.0,
+                                const char *preconditioner = "MueLu")
+  {
+    Teuchos::ParameterList p = parameters(true, preconditioner);
+    p.set("Keep Preconditioner Across Steps", keep);
+    p.set("Preconditioner Staleness Factor", staleness);
+    return p;
+  }
+  /// A solve from 1% off the solution (Newton converges fast; no iteration builds anew
+  /// within the solve): its preconditioners built, 1 if its first Jacobian built one.
+  NewtonSolver::Result solve_near(NewtonSolver &solver, const double off = 0.01)
+  {
+    NonlinearProblem::Vector x = problem->exact_solution();
+    x.scale(1.0 + off);
+    const NewtonSolver::Result r = solver.solve(x);
+    x.update(-1.0, problem->exact_solution(), 1.0);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LT(x.normInf(), 1e-8);
+    EXPECT_GE(r.newton_iterations, 2);
+    EXPECT_LE(r.preconditioners_built, 1);
+    return r;
+  }
+};
+
+TEST_F(KeepPreconditionerAcrossStepsTest, TheNextSolveKeepsThePreconditioner)
+{
+  problem->preconditioner_deps = {2.0};
+  for (const char *preconditioner : {"MueLu", "Direct"})
+  {
+    NewtonSolver on(across(true, 1000.0, preconditioner), problem, quiet());
+    NewtonSolver off(across(false, 1000.0, preconditioner), problem, quiet());
+    EXPECT_EQ(solve_near(on).preconditioners_built, 1) << preconditioner;
+    EXPECT_EQ(solve_near(off).preconditioners_built, 1) << preconditioner;
+    for (int solve = 0; solve < 2; ++solve)
+    {
+      const NewtonSolver::Result r = solve_near(on);
+      EXPECT_EQ(r.preconditioners_built, 0) << preconditioner;
+      EXPECT_EQ(r.preconditioners_kept, r.newton_iterations) << preconditioner;
+      EXPECT_EQ(r.jacobians_evaluated, r.newton_iterations) << preconditioner;
+      EXPECT_EQ(solve_near(off).preconditioners_built, 1) << preconditioner;
+    }
+    // From u = 0 ||F|| rises in the first iteration: the second builds anew, as within a
+    // solve; the first keeps the last one.
+    const NewtonSolver::Result from_zero = solve_with(on);
+    EXPECT_EQ(from_zero.preconditioners_built, 1) << preconditioner;
+  }
+}
+
+TEST_F(KeepPreconditionerAcrossStepsTest, BuiltAnewWhenTheDependenciesChangeBetweenSolves)
+{
+  problem->preconditioner_deps = {2.0};
+  NewtonSolver solver(across(true, 1000.0), problem, quiet());
+  solve_near(solver);
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 0);
+  problem->preconditioner_deps = {3.0};
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 1);
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 0);
+  // A problem that names no preconditioner dependencies: never kept.
+  problem->preconditioner_deps.clear();
+  for (int solve = 0; solve < 2; ++solve)
+  {
+    NonlinearProblem::Vector x = problem->exact_solution();
+    x.scale(1.01);
+    const NewtonSolver::Result r = solver.solve(x);
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(r.preconditioners_built, r.newton_iterations);
+  }
+}
+
+TEST_F(KeepPreconditionerAcrossStepsTest, BuiltAnewAfterANewtonSolveFailed)
+{
+  problem->preconditioner_deps = {2.0};
+  Teuchos::ParameterList p = across(true, 1000.0);
+  p.set("Maximum Iterations", 3); // too few from u = 0 (at least 4)
+  NewtonSolver solver(p, problem, quiet());
+  solve_near(solver);
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 0);
+  NonlinearProblem::Vector x(problem->solution_map());
+  ASSERT_FALSE(solver.solve(x).converged);
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 1);
+  EXPECT_EQ(solve_near(solver).preconditioners_built, 0);
+}
+
+TEST_F(KeepPreconditionerAcrossStepsTest, BuiltAnewWhenTheKrylovIterationsGrewPastTheFactor)
+{
+  problem->preconditioner_deps = {2.0};
+  // Solves with a growing diagonal term (shift): the Krylov iterations per Newton iteration
+  // with the first solve's preconditioner change. Factor 1 (any growth): the solve after one
+  // that took more than the solve that built the preconditioner builds anew; factor 1000:
+  // never.
+  const std::array<double, 6> shifts{0.0, 1.0, 10.0, 10.0, 3.0, 3.0};
+  for (const double factor : {1.0, 1000.0})
+  {
+    NewtonSolver solver(across(true, factor), problem, quiet());
+    double fresh = 0.0;
+    bool stale = true;
+    int rebuilt = 0;
+    for (int solve = 0; solve < 6; ++solve)
+    {
+      problem->shift = shifts[solve];
+      const NewtonSolver::Result r = solve_near(solver);
+      EXPECT_EQ(r.preconditioners_built, stale ? 1 : 0) << factor << " " << solve;
+      const double per_iteration = static_cast<double>(r.linear_iterations) / r.newton_iterations;
+      if (r.preconditioners_built == 1)
+      {
+        fresh = per_iteration;
+        stale = false;
+        rebuilt += solve > 0 ? 1 : 0;
+      }
+      else
+      {
+        ASSERT_EQ(r.linear_failures, 0) << factor << " " << solve;
+        stale = per_iteration > factor * std::max(fresh, 1.0);
+      }
+    }
+    if (factor == 1.0)
+      EXPECT_GE(rebuilt, 1);
+    else
+      EXPECT_EQ(rebuilt, 0);
+  }
+}
+
 TEST_F(JacobianReuseTest, PreconditionerBuiltAnewWhenOneRanksDiscreteDependencyChanges)
 {
   problem->smooth = 1;
