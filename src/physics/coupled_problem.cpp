@@ -23,7 +23,8 @@ namespace kiln
 CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                                const Teuchos::ParameterList &thermal,
                                const Teuchos::ParameterList &mechanics, const std::string &where,
-                               const MaterialMap *materials)
+                               const MaterialMap *materials,
+                               const std::vector<PairingRows> &pairings)
     : mesh_(mesh), dofs_(dofs), slots_{dofs.layout().slot(Field::T), dofs.layout().slot(Field::ux)},
       constraints_(mesh, dofs)
 {
@@ -54,7 +55,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       pairings_.push_back(
           std::make_unique<ContactInterface>(mesh, dofs, static_cast<int>(g), modulus,
                                              parameters.get<double>("Complementarity Scale")));
-      if (pairings_.back()->n_pairs() == 0)
+      if (pairings_.back()->n_rows() == 0)
       {
         pairings_.pop_back();
         continue;
@@ -62,6 +63,20 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       interfaces_.push_back(interface_kinds().create(parameters.get<std::string>("Kind"),
                                                      *pairings_.back(), dofs, constraints_,
                                                      parameters, where + "/Mechanics/Contact"));
+    }
+  // One interface per pairing of two side sets (rows with weighted partners), after the split
+  // gaps.
+  if (dofs.layout().contact && mechanics_)
+    for (const PairingRows &pairing : pairings)
+    {
+      if (pairing.rows.empty())
+        continue;
+      pairings_.push_back(std::make_unique<ContactInterface>(
+          mesh, dofs, pairing.rows, modulus,
+          pairing.parameters.get<double>("Complementarity Scale"), pairing.name));
+      interfaces_.push_back(interface_kinds().create(
+          pairing.parameters.get<std::string>("Kind"), *pairings_.back(), dofs, constraints_,
+          pairing.parameters, where + "/Mechanics/Contact (" + pairing.name + ")"));
     }
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
@@ -538,7 +553,7 @@ int CoupledProblem::n_pairs() const
 {
   int n = 0;
   for (const auto &pairing : pairings_)
-    n += pairing->n_pairs();
+    n += pairing->n_rows();
   return n;
 }
 
@@ -577,6 +592,8 @@ CoupledProblem::ContactOutput CoupledProblem::contact_output(const Vector &x)
         out.traction[n] = more.traction[n];
         out.active[n] = more.active[n];
       }
+    if (!strategy->interface().split())
+      continue; // a pairing's rows: not in Mesh::gap_pairs
     const std::vector<int> &of_gap = mesh_pairs[strategy->interface().gap()];
     for (std::size_t k = 0; k < of_gap.size(); ++k)
     {

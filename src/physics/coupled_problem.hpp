@@ -4,6 +4,7 @@
 /// stepper.
 #include "contact/contact_interface.hpp"
 #include "contact/interface_strategy.hpp"
+#include "contact/pairing_rows.hpp"
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -46,10 +47,13 @@ public:
   /// `where` names the root in messages ("in.xml: Kiln"). With `materials` (read during
   /// the construction), the mechanics takes each block's material and model (MechanicalPhysics)
   /// and, if a model has state, the problem makes its QuadratureState; the heat equation and the
-  /// scales take `material`.
+  /// scales take `material`. `pairings`: the rows of the pairings of two side sets, each an
+  /// interface of its own Kind besides the split gaps' (the DofManager was built with their
+  /// partner_links()).
   CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                  const Teuchos::ParameterList &thermal, const Teuchos::ParameterList &mechanics,
-                 const std::string &where, const MaterialMap *materials = nullptr);
+                 const std::string &where, const MaterialMap *materials = nullptr,
+                 const std::vector<PairingRows> &pairings = {});
   ~CoupledProblem() override;
 
   Teuchos::RCP<const Map> solution_map() const override { return dofs_.owned_dof_map(); }
@@ -190,7 +194,8 @@ private:
   NodalConstraints constraints_;
   std::optional<ThermalPhysics> thermal_;
   std::optional<MechanicalPhysics> mechanics_;
-  std::vector<std::unique_ptr<ContactInterface>> pairings_; ///< per gap with pairs
+  std::vector<std::unique_ptr<ContactInterface>>
+      pairings_; ///< per gap with pairs, then per pairing
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;

@@ -1,0 +1,312 @@
+// Tests the Jacobian of CoupledProblem::evaluate with a pairing's rows (issue 30, step 1: rows
+// with several weighted partners; doc/contact.md, "Condensation with the dual basis") against
+// central differences of the residual, entry by entry. Two bodies meshed apart
+// (tests/support/two_body_mesh): body 1 on [0, 1]^2 x [-0.2, 0] with 3 x 3 x 1 cells, body 2
+// on [0.125, 1.125] x [0, 1] x 0.2 high with 4 x 2 x 1 cells, its bottom at z = gap + tilt (x -
+// 0.55), rotated; the rows of body 2's bottom (secondary) against body 1's top (primary) from
+// MortarFaceIntegrals (D_jj, w_jk = M_jk / D_jj, g0_j = n_j . (X_j - sum_k w_jk X_k)), so that
+// body 2's last column of faces is half covered and its far nodes have small D_jj. Body 1's
+// bottom held, body 2's top held in x and y. The opening is the mesh's (g0, the rows' initial
+// gap), far from the switch P = c g; x is noise about the reference (temperatures within 0.2 K
+// of T_ref, displacements within 2e-8 m): all rows open (gap 2e-4 m), all closed (gap -1e-4 m:
+// interpenetrating), mixed (tilt 4e-4); kind "Contact" ("Min" and "Fischer-Burmeister") and
+// "Bonded". At np 2 the cells are split at the block x = 0.55, so that both surfaces, and rows
+// and their partners, lie on two ranks.
+// KILN_TEST_NP: 1 2
+#include "base/parameters.hpp"
+#include "contact/interface_parameters.hpp"
+#include "contact/mortar_face_integrals.hpp"
+#include "mesh/contact_surface.hpp"
+#include "physics/coupled_problem.hpp"
+#include "physics/heat/thermal_physics.hpp"
+#include "physics/mechanics/mechanical_physics.hpp"
+#include "support/jacobian_check.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/problem_fixture.hpp"
+#include "support/two_body_mesh.hpp"
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_Tuple.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace kiln_test;
+using kiln::LO;
+using kiln::Point;
+using Vector = kiln::NonlinearProblem::Vector;
+
+constexpr double g0 = 2.0e-4;               ///< the initial gap [m]
+constexpr double phi = 25.0, theta = -15.0; ///< the rotation [degrees]
+constexpr double tolerance = 1.0e-7;        ///< as contact_jacobian_test
+
+/// The rows of the secondary side set 2 against the primary side set 1, by summing each
+/// secondary face's mortar integrals over its nodes; nodes with D_jj below 1e-6 of their
+/// nodal area get none (doc/contact.md, "Dual basis on the covered part").
+std::vector<kiln::ContactRow> mortar_rows(const kiln::Mesh &mesh)
+{
+  const kiln::ContactSurface secondary(mesh, 2, "test"), primary(mesh, 1, "test");
+  const auto corners = [](const kiln::ContactSurface &s, const int f)
+  {
+    std::vector<Point> x;
+    for (const int i : s.face_nodes(f))
+      x.push_back(s.positions()[i]);
+    return x;
+  };
+  std::vector<std::vector<Point>> primary_x;
+  for (int f = 0; f < primary.n_faces(); ++f)
+    primary_x.push_back(corners(primary, f));
+  std::vector<kiln::MortarFace> primaries;
+  for (int f = 0; f < primary.n_faces(); ++f)
+    primaries.push_back({primary.face_type(f), {primary_x[f].data(), 4}});
+  std::vector<double> D(secondary.n_nodes(), 0.0);
+  std::vector<std::map<int, double>> M(secondary.n_nodes());
+  for (int f = 0; f < secondary.n_faces(); ++f)
+  {
+    const std::vector<Point> x = corners(secondary, f);
+    const kiln::MortarFaceIntegrals integrals({secondary.face_type(f), {x.data(), 4}}, primaries);
+    const auto nodes = secondary.face_nodes(f);
+    for (int i = 0; i < integrals.n_shape(); ++i)
+    {
+      D[nodes[i]] += integrals.D(i, i);
+      for (int p = 0; p < primary.n_faces(); ++p)
+        for (int k = 0; k < 4; ++k)
+          if (integrals.M(i, p, k) != 0.0)
+            M[nodes[i]][primary.nodes()[primary.face_nodes(p)[k]]] += integrals.M(i, p, k);
+    }
+  }
+  std::vector<kiln::ContactRow> rows;
+  for (int j = 0; j < secondary.n_nodes(); ++j)
+  {
+    if (D[j] < 1e-6 * secondary.nodal_area(j))
+      continue;
+    kiln::ContactRow row;
+    row.node = secondary.nodes()[j];
+    const Point &out = secondary.normal(j); // out of body 2: from the secondary side
+    row.normal = {-out[0], -out[1], -out[2]};
+    row.area = D[j];
+    Point twin{};
+    for (const auto &[k, m] : M[j])
+    {
+      row.partners.push_back(k);
+      row.weights.push_back(m / D[j]);
+      for (int d = 0; d < 3; ++d)
+        twin[d] += m / D[j] * mesh.coordinates[k][d];
+    }
+    const Point &X = mesh.coordinates[row.node];
+    row.gap0 = kiln::dot(row.normal, Point{X[0] - twin[0], X[1] - twin[1], X[2] - twin[2]});
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// How body 2 is meshed against body 1: its bottom at block z = gap + tilt (x - 0.55) [m].
+struct State
+{
+  double gap = 0.0;
+  double tilt = 0.0;
+};
+
+/// The two bodies, body 2 moved by 0.125 m along x and placed as `state` says (block frame),
+/// then rotated; `block_x` gets each node's x before the rotation.
+kiln::Mesh two_bodies(const State &state, std::vector<double> &block_x)
+{
+  kiln::Mesh mesh = two_flat_bodies({3, 3}, {4, 2}, 1.0);
+  block_x.clear();
+  for (Point &x : mesh.coordinates)
+  {
+    if (x[2] > 0.5)
+    {
+      x[0] += 0.125;
+      x[2] += state.gap + state.tilt * (x[0] - 0.55) - 1.0;
+    }
+    block_x.push_back(x[0]);
+  }
+  rotate(mesh, phi, theta);
+  return mesh;
+}
+
+struct Setup
+{
+  explicit Setup(const State &state)
+      : mesh(two_bodies(state, block_x)), rows(mortar_rows(mesh)),
+        cell_rank(static_cast<std::size_t>(mesh.n_cells()), 0),
+        dofs((split_cells(), mesh), cell_rank, comm, kiln::DofLayout{true, true, true},
+             kiln::partner_links(rows))
+  {
+  }
+  /// At np 2: rank 1 takes the cells whose centre lies beyond block x = 0.55.
+  void split_cells()
+  {
+    if (comm->getSize() < 2)
+      return;
+    for (int c = 0; c < mesh.n_cells(); ++c)
+    {
+      double x = 0.0;
+      for (const int n : mesh.cell_nodes(c))
+        x += block_x[n] / 8.0;
+      cell_rank[c] = x > 0.55 ? 1 : 0;
+    }
+  }
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
+  std::vector<double> block_x;
+  kiln::Mesh mesh;
+  std::vector<kiln::ContactRow> rows;
+  std::vector<int> cell_rank;
+  kiln::DofManager dofs;
+  kiln::Material material = TableMaterial::make();
+};
+
+Teuchos::ParameterList thermal_list()
+{
+  Teuchos::ParameterList thermal;
+  thermal.set("Initial Temperature", TableMaterial::T_ref);
+  Teuchos::ParameterList &held = thermal.sublist("Boundary Conditions").sublist("held");
+  held.set("Type", "Temperature");
+  held.set("Side Sets", ids({3}));
+  held.set("Temperature", constant_function(TableMaterial::T_ref));
+  return thermal;
+}
+
+Teuchos::ParameterList mechanics_list()
+{
+  Teuchos::ParameterList mechanics;
+  Teuchos::ParameterList &bcs = mechanics.sublist("Boundary Conditions");
+  Teuchos::ParameterList &base = bcs.sublist("base");
+  base.set("Type", "Displacement");
+  base.set("Side Sets", ids({3}));
+  base.set("Components", Teuchos::Array<std::string>(Teuchos::tuple<std::string>("x", "y", "z")));
+  Teuchos::ParameterList &top = bcs.sublist("top");
+  top.set("Type", "Displacement");
+  top.set("Side Sets", ids({4}));
+  top.set("Components", Teuchos::Array<std::string>(Teuchos::tuple<std::string>("x", "y")));
+  return mechanics;
+}
+
+/// The pairing's parameters: kind `kind` with `function`, validated as a "Contact" sublist.
+kiln::PairingRows pairing(const std::vector<kiln::ContactRow> &rows, const std::string &kind,
+                          const std::string &function)
+{
+  Teuchos::ParameterList p("Contact");
+  p.set("Enabled", true);
+  p.set("Kind", kind);
+  if (kind == "Contact")
+    p.set("Complementarity Function", function);
+  p.validateParametersAndSetDefaults(kiln::interface_parameters());
+  return {"pair \"test\"", rows, p};
+}
+
+/// Runs one case: J at the state against central differences; returns the error.
+double run_case(const std::string &name, const std::string &kind, const std::string &function,
+                const State &state)
+{
+  Setup s(state);
+  const Teuchos::ParameterList t = kiln::validated(
+      thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  const Teuchos::ParameterList m = kiln::validated(
+      mechanics_list(), kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
+  kiln::CoupledProblem problem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln", nullptr,
+                               {pairing(s.rows, kind, function)});
+  EXPECT_TRUE(problem.has_contact());
+  EXPECT_EQ(problem.n_pairs(), static_cast<int>(s.rows.size()));
+  // The rows: several partners each, weights summing to 1.
+  std::size_t most = 0;
+  for (const kiln::ContactRow &row : s.rows)
+  {
+    double sum = 0.0;
+    for (const double w : row.weights)
+      sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    most = std::max(most, row.partners.size());
+  }
+  EXPECT_GE(most, 4u);
+  if (s.comm->getSize() == 2)
+  {
+    // Rows on both ranks, and rows with partners owned by the other rank.
+    const auto &owner = s.dofs.node_owner();
+    int on_rank[2] = {0, 0}, across = 0;
+    for (const kiln::ContactRow &row : s.rows)
+    {
+      ++on_rank[owner[row.node]];
+      across += std::any_of(row.partners.begin(), row.partners.end(),
+                            [&](const int k) { return owner[k] != owner[row.node]; });
+    }
+    EXPECT_GT(on_rank[0], 0);
+    EXPECT_GT(on_rank[1], 0);
+    EXPECT_GT(across, 0);
+  }
+
+  // The state through x: noise about the reference (the opening is the mesh's, g0).
+  const auto frames = node_frames(problem);
+  Vector x(problem.solution_map());
+  std::mt19937 random(11u);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto &owned = s.dofs.owned_nodes();
+  std::vector<double> T_noise(s.mesh.n_nodes());
+  std::vector<Point> u_noise(s.mesh.n_nodes());
+  for (int n = 0; n < s.mesh.n_nodes(); ++n)
+  {
+    T_noise[n] = 0.2 * unit(random);
+    for (double &v : u_noise[n])
+      v = 2.0e-8 * unit(random);
+  }
+  for (std::size_t i = 0; i < owned.size(); ++i)
+  {
+    const int n = owned[i];
+    const auto c = frame_components(frames[i], u_noise[n]);
+    x.replaceLocalValue(static_cast<LO>(4 * i), TableMaterial::T_ref + T_noise[n]);
+    for (int k = 0; k < 3; ++k)
+      x.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), c[k]);
+  }
+  int n_closed = 0;
+  double closest = 1e300;
+  for (const kiln::ContactRow &row : s.rows)
+  {
+    const double g = row.gap0;
+    n_closed += kind == "Bonded" || g < 0.0;
+    closest = std::min(closest, std::abs(g));
+  }
+  EXPECT_GT(closest, 1e-5) << "a row is too near the switch";
+  const double error = jacobian_error(s.dofs, problem, x, n_closed);
+  if (s.comm->getRank() == 0)
+    std::cout << name << " (np " << s.comm->getSize() << "): " << s.rows.size() << " rows, "
+              << n_closed << " closed, up to " << most << " partners; max |J - J_fd| / row scale "
+              << error << "\n";
+  return error;
+}
+} // namespace
+
+TEST(RowContactJacobian, AllRowsOpen)
+{
+  EXPECT_LT(run_case("open", "Contact", "Min", {g0, 0.0}), tolerance);
+}
+
+TEST(RowContactJacobian, AllRowsClosed)
+{
+  EXPECT_LT(run_case("closed", "Contact", "Min", {-1.0e-4, 0.0}), tolerance);
+}
+
+TEST(RowContactJacobian, SomeRowsClosed)
+{
+  EXPECT_LT(run_case("mixed", "Contact", "Min", {0.0, 4.0e-4}), tolerance);
+}
+
+TEST(RowContactJacobian, FischerBurmeister)
+{
+  EXPECT_LT(run_case("mixed, Fischer-Burmeister", "Contact", "Fischer-Burmeister", {0.0, 4.0e-4}),
+            tolerance);
+}
+
+TEST(RowContactJacobian, Bonded)
+{
+  EXPECT_LT(run_case("bonded", "Bonded", "Min", {0.0, 4.0e-4}), tolerance);
+}
