@@ -35,6 +35,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -113,6 +114,11 @@ struct State
 {
   double gap = 0.0;
   double tilt = 0.0;
+  /// Side set 1 (the partners) held along x and side set 2 (the rows' nodes) along y: the
+  /// partners' held axes are eliminated, the rows' normals lean.
+  bool held_surfaces = false;
+  /// Body 2's top free, "Free Motions" = "Minimum Norm": open rows held shut.
+  bool minimum_norm = false;
 };
 
 /// The two bodies, body 2 moved by 0.125 m along x and placed as `state` says (block frame),
@@ -177,7 +183,7 @@ Teuchos::ParameterList thermal_list()
   return thermal;
 }
 
-Teuchos::ParameterList mechanics_list()
+Teuchos::ParameterList mechanics_list(const State &state)
 {
   Teuchos::ParameterList mechanics;
   Teuchos::ParameterList &bcs = mechanics.sublist("Boundary Conditions");
@@ -185,10 +191,23 @@ Teuchos::ParameterList mechanics_list()
   base.set("Type", "Displacement");
   base.set("Side Sets", ids({3}));
   base.set("Components", Teuchos::Array<std::string>(Teuchos::tuple<std::string>("x", "y", "z")));
-  Teuchos::ParameterList &top = bcs.sublist("top");
-  top.set("Type", "Displacement");
-  top.set("Side Sets", ids({4}));
-  top.set("Components", Teuchos::Array<std::string>(Teuchos::tuple<std::string>("x", "y")));
+  if (state.minimum_norm)
+    mechanics.set("Free Motions", "Minimum Norm");
+  else
+  {
+    Teuchos::ParameterList &top = bcs.sublist("top");
+    top.set("Type", "Displacement");
+    top.set("Side Sets", ids({4}));
+    top.set("Components", Teuchos::Array<std::string>(Teuchos::tuple<std::string>("x", "y")));
+  }
+  if (state.held_surfaces)
+    for (const auto &[id, component] : {std::pair<int, std::string>{1, "x"}, {2, "y"}})
+    {
+      Teuchos::ParameterList &held = bcs.sublist("held " + component);
+      held.set("Type", "Displacement");
+      held.set("Side Sets", ids({id}));
+      held.set("Components", Teuchos::Array<std::string>(1, component));
+    }
   return mechanics;
 }
 
@@ -212,8 +231,9 @@ double run_case(const std::string &name, const std::string &kind, const std::str
   Setup s(state);
   const Teuchos::ParameterList t = kiln::validated(
       thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-  const Teuchos::ParameterList m = kiln::validated(
-      mechanics_list(), kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
+  const Teuchos::ParameterList m =
+      kiln::validated(mechanics_list(state), kiln::MechanicalPhysics::valid_parameters(),
+                      "test.xml", "Kiln/Mechanics");
   kiln::CoupledProblem problem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln", nullptr,
                                {pairing(s.rows, kind, function)});
   EXPECT_TRUE(problem.has_contact());
@@ -276,6 +296,13 @@ double run_case(const std::string &name, const std::string &kind, const std::str
     closest = std::min(closest, std::abs(g));
   }
   EXPECT_GT(closest, 1e-5) << "a row is too near the switch";
+  if (state.minimum_norm)
+  {
+    // Open rows held shut, so that no rigid motion is left free.
+    const int n_active = problem.n_active_pairs(x);
+    EXPECT_GT(n_active, n_closed);
+    n_closed = n_active;
+  }
   const double error = jacobian_error(s.dofs, problem, x, n_closed);
   if (s.comm->getRank() == 0)
     std::cout << name << " (np " << s.comm->getSize() << "): " << s.rows.size() << " rows, "
@@ -309,4 +336,17 @@ TEST(RowContactJacobian, FischerBurmeister)
 TEST(RowContactJacobian, Bonded)
 {
   EXPECT_LT(run_case("bonded", "Bonded", "Min", {0.0, 4.0e-4}), tolerance);
+}
+
+TEST(RowContactJacobian, HeldPartnersAndLeaningNormals)
+{
+  EXPECT_LT(run_case("mixed, surfaces held along x and y", "Contact", "Min", {0.0, 4.0e-4, true}),
+            tolerance);
+  EXPECT_LT(run_case("bonded, surfaces held along x and y", "Bonded", "Min", {0.0, 4.0e-4, true}),
+            tolerance);
+}
+
+TEST(RowContactJacobian, MinimumNormHoldsOpenRowsShut)
+{
+  EXPECT_LT(run_case("open, Minimum Norm", "Contact", "Min", {g0, 0.0, false, true}), tolerance);
 }
