@@ -13,18 +13,22 @@
 // "Bonded". At np 2 the cells are split at the block x = 0.55, so that both surfaces, and rows
 // and their partners, lie on two ranks.
 // KILN_TEST_NP: 1 2
+#include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "contact/interface_parameters.hpp"
 #include "contact/mortar_face_integrals.hpp"
 #include "mesh/contact_surface.hpp"
+#include "mesh/hex_geometry.hpp"
 #include "physics/coupled_problem.hpp"
 #include "physics/heat/thermal_physics.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
+#include "solvers/newton_solver.hpp"
 #include "support/jacobian_check.hpp"
 #include "support/parameter_lists.hpp"
 #include "support/problem_fixture.hpp"
 #include "support/two_body_mesh.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_Tuple.hpp>
 #include <gtest/gtest.h>
@@ -119,9 +123,11 @@ struct State
   bool held_surfaces = false;
   /// Body 2's top free, "Free Motions" = "Minimum Norm": open rows held shut.
   bool minimum_norm = false;
+  /// Body 2's shift along the block x [m].
+  double shift = 0.125;
 };
 
-/// The two bodies, body 2 moved by 0.125 m along x and placed as `state` says (block frame),
+/// The two bodies, body 2 moved along x and placed as `state` says (block frame),
 /// then rotated; `block_x` gets each node's x before the rotation.
 kiln::Mesh two_bodies(const State &state, std::vector<double> &block_x)
 {
@@ -131,7 +137,7 @@ kiln::Mesh two_bodies(const State &state, std::vector<double> &block_x)
   {
     if (x[2] > 0.5)
     {
-      x[0] += 0.125;
+      x[0] += state.shift;
       x[2] += state.gap + state.tilt * (x[0] - 0.55) - 1.0;
     }
     block_x.push_back(x[0]);
@@ -140,9 +146,9 @@ kiln::Mesh two_bodies(const State &state, std::vector<double> &block_x)
   return mesh;
 }
 
-struct Setup
+struct TwoBodies
 {
-  explicit Setup(const State &state)
+  explicit TwoBodies(const State &state)
       : mesh(two_bodies(state, block_x)), rows(mortar_rows(mesh)),
         cell_rank(static_cast<std::size_t>(mesh.n_cells()), 0),
         dofs((split_cells(), mesh), cell_rank, comm, kiln::DofLayout{true, true, true},
@@ -228,7 +234,7 @@ kiln::PairingRows pairing(const std::vector<kiln::ContactRow> &rows, const std::
 double run_case(const std::string &name, const std::string &kind, const std::string &function,
                 const State &state)
 {
-  Setup s(state);
+  TwoBodies s(state);
   const Teuchos::ParameterList t = kiln::validated(
       thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
   const Teuchos::ParameterList m =
@@ -349,4 +355,81 @@ TEST(RowContactJacobian, HeldPartnersAndLeaningNormals)
 TEST(RowContactJacobian, MinimumNormHoldsOpenRowsShut)
 {
   EXPECT_LT(run_case("open, Minimum Norm", "Contact", "Min", {g0, 0.0, false, true}), tolerance);
+}
+
+// The patch test of the rows: body 2 (4 x 2 faces) on body 1 (3 x 3), fully covered, rotated,
+// touching (g0 = 0); body 1's bottom on rollers, a pressure p on body 2's top, the free
+// lateral motions by "Minimum Norm", the temperature held at T_ref. The state is uniaxial,
+// sigma = -p n n in both bodies (free lateral expansion), so every row carries P_j = p and
+// u.n = -p (h + 0.2) / E, h the height above the interface.
+TEST(RowContactJacobian, PatchTestUniformPressure)
+{
+  const State state{0.0, 0.0, false, true, 0.0};
+  TwoBodies s(state);
+  constexpr double p = 1.0e6;
+  Teuchos::ParameterList thermal = thermal_list();
+  thermal.sublist("Boundary Conditions").sublist("held").set("Side Sets", ids({3, 4}));
+  Teuchos::ParameterList mechanics;
+  mechanics.set("Free Motions", "Minimum Norm");
+  Teuchos::ParameterList &bcs = mechanics.sublist("Boundary Conditions");
+  Teuchos::ParameterList &rollers = bcs.sublist("rollers");
+  rollers.set("Type", "Normal Displacement");
+  rollers.set("Side Sets", ids({3}));
+  Teuchos::ParameterList &load = bcs.sublist("load");
+  load.set("Type", "Pressure");
+  load.set("Side Sets", ids({4}));
+  load.set("Pressure", constant_function(p));
+  const Teuchos::ParameterList t = kiln::validated(
+      thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  const Teuchos::ParameterList m = kiln::validated(
+      mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
+  auto problem =
+      Teuchos::rcp(new kiln::CoupledProblem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln",
+                                            nullptr, {pairing(s.rows, "Contact", "Min")}));
+  Teuchos::ParameterList solver;
+  solver.set("Relative Tolerance", 1e-12);
+  solver.set("Absolute Tolerance", 1e-300);
+  solver.set("Maximum Iterations", 20);
+  Teuchos::ParameterList &belos =
+      solver.sublist("Linear Solver").sublist("Linear Solver Types").sublist("Belos");
+  belos.set("Solver Type", "Pseudo Block GMRES");
+  Teuchos::ParameterList &krylov = belos.sublist("Solver Types").sublist("Pseudo Block GMRES");
+  krylov.set("Convergence Tolerance", 1e-13);
+  krylov.set("Maximum Iterations", 2000);
+  kiln::NewtonSolver newton(solver, problem, kiln::rank0_stream(*s.comm));
+  const auto map = problem->solution_map();
+  Vector x(map), zero(map);
+  problem->set_time_derivative(0.0, 0.0, zero);
+  problem->initial_condition(0.0, x);
+  const kiln::NewtonSolver::Result result = newton.solve(x);
+  ASSERT_TRUE(result.converged) << "Newton " << result.newton_iterations << ", |F| "
+                                << result.initial_residual_norm << " -> "
+                                << result.final_residual_norm << ", linear failures "
+                                << result.linear_failures << " " << result.step_failure;
+  EXPECT_EQ(problem->n_active_pairs(x), static_cast<int>(s.rows.size()));
+  const auto out = problem->contact_output(x);
+  double worst_P = 0.0;
+  for (const kiln::ContactRow &row : s.rows)
+    worst_P = std::max(worst_P, std::abs(-out.traction[row.node] - p) / p);
+  // u.n at every node against -p (z_block + 0.2) / E (uniaxial: free lateral expansion).
+  const auto A = kiln::rotation_matrix(phi, theta);
+  const Point N{A[0][2], A[1][2], A[2][2]};
+  const std::vector<Point> u = problem->node_displacements(x);
+  const auto &owned = s.dofs.owned_nodes();
+  double worst_u = 0.0;
+  for (std::size_t i = 0; i < owned.size(); ++i)
+  {
+    const double height = kiln::dot(N, s.mesh.coordinates[owned[i]]) + 0.2;
+    const double expected = -p * height / TableMaterial::youngs;
+    worst_u = std::max(worst_u,
+                       std::abs(kiln::dot(N, u[i]) - expected) / (p * 0.4 / TableMaterial::youngs));
+  }
+  double global_u = 0.0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_MAX, worst_u, Teuchos::outArg(global_u));
+  if (s.comm->getRank() == 0)
+    std::cout << "patch test (np " << s.comm->getSize() << "): " << s.rows.size()
+              << " rows, Newton " << result.newton_iterations << ", max |P_j - p| / p " << worst_P
+              << ", max |u.n - exact| / max " << global_u << "\n";
+  EXPECT_LT(worst_P, 1e-9);
+  EXPECT_LT(global_u, 1e-9);
 }
