@@ -2,6 +2,7 @@
 
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
+#include "contact/contact_pairs.hpp"
 #include "contact/interface_strategy.hpp"
 
 #include <algorithm>
@@ -37,6 +38,11 @@ Teuchos::ParameterList interface_parameters()
                      "per gap, any name: the parameters above that differ for the gap at its "
                      "\"Side Set\" (with several gaps, Mesh/\"Gap Side Sets\")",
                      each);
+  set_named_sublists(p, "Pairs",
+                     "per contact pair between bodies meshed apart (issue 30; doc/contact.md, "
+                     "\"Separately meshed bodies\"), any name: its two side sets and the "
+                     "options of its mortar pairing",
+                     contact_pair_parameters());
   return p;
 }
 
@@ -65,6 +71,7 @@ Teuchos::ParameterList gap_interface_parameters(const Teuchos::ParameterList &co
 {
   Teuchos::ParameterList merged(contact);
   merged.remove("Gaps");
+  merged.remove("Pairs", false);
   const Teuchos::ParameterList &gaps = contact.sublist("Gaps");
   for (auto it = gaps.begin(); it != gaps.end(); ++it)
   {

@@ -195,6 +195,95 @@ long double count_cells(const CellType type, const bool mixed, const std::array<
     return nx * column;
   }
 }
+
+/// The number of cells of one half (`half` 1: x < 0, 2: x > 0) of `cells` cells (its own
+/// counts).
+long double count_half_cells(const CellType type, const bool mixed, const int half,
+                             const std::array<int, 3> &cells)
+{
+  const long double column = static_cast<long double>(cells[1]) * cells[2];
+  if (mixed) // hexahedra; the layer of 1 pyramid and 10 tets each, Kuhn's tets
+    return half == 1 ? column * cells[0] : column * (11 + 6 * (cells[0] - 1.0L));
+  return count_cells(type, false, cells);
+}
+
+/// The number of nodes of a box of `cells` cells of `type` (MIXED: `mixed`).
+long long count_nodes(const CellType type, const bool mixed, const std::array<int, 3> &cells)
+{
+  const long long nx = cells[0], ny = cells[1], nz = cells[2];
+  const long long corners = (nx + 1) * (ny + 1) * (nz + 1);
+  const long long edges =
+      nx * (ny + 1) * (nz + 1) + (nx + 1) * ny * (nz + 1) + (nx + 1) * (ny + 1) * nz;
+  const long long faces = nx * ny * (nz + 1) + nx * (ny + 1) * nz + (nx + 1) * ny * nz;
+  if (mixed) // the centres of the pyramid layer
+    return corners + ny * nz;
+  switch (type)
+  {
+  case CellType::pyramid5: // and the centres
+    return corners + nx * ny * nz;
+  case CellType::hex20:
+    return corners + edges;
+  case CellType::hex27:
+    return (2 * nx + 1) * (2 * ny + 1) * (2 * nz + 1);
+  case CellType::tet10: // the grid's edges, one diagonal per square face and per hexahedron
+    return corners + edges + faces + nx * ny * nz;
+  default:
+    return corners;
+  }
+}
+
+/// Keeps the nodes that cells use, renumbered in their order.
+void drop_unused_nodes(Mesh &mesh)
+{
+  std::vector<int> number(mesh.coordinates.size(), -1);
+  for (const int n : mesh.cell_node_ids)
+    number[n] = 0;
+  std::vector<Point> kept;
+  for (std::size_t n = 0; n < number.size(); ++n)
+    if (number[n] == 0)
+    {
+      number[n] = static_cast<int>(kept.size());
+      kept.push_back(mesh.coordinates[n]);
+    }
+  for (int &n : mesh.cell_node_ids)
+    n = number[n];
+  mesh.coordinates = std::move(kept);
+}
+
+/// Appends `second`'s cells, nodes and side sets to `mesh` (its side sets of the same ids
+/// joined, block 1's faces first; its side set `cut` (10) as `cut_id`).
+void append_half(Mesh &mesh, const Mesh &second, const int cut_id)
+{
+  const int node_offset = mesh.n_nodes(), cell_offset = mesh.n_cells();
+  std::vector<int> nodes;
+  for (int c = 0; c < second.n_cells(); ++c)
+  {
+    nodes.clear();
+    for (const int n : second.cell_nodes(c))
+      nodes.push_back(n + node_offset);
+    mesh.add_cell(second.cell_type(c), nodes.data(), second.block_id[c]);
+  }
+  mesh.coordinates.insert(mesh.coordinates.end(), second.coordinates.begin(),
+                          second.coordinates.end());
+  for (const SideSet &set : second.side_sets)
+  {
+    SideSet *into = nullptr;
+    if (set.id == 10)
+    {
+      mesh.side_sets.push_back({cut_id, "cut_2", {}, {}});
+      into = &mesh.side_sets.back();
+    }
+    else
+      for (SideSet &s : mesh.side_sets)
+        if (s.id == set.id)
+          into = &s;
+    for (int s = 0; s < set.n_sides(); ++s)
+    {
+      into->cells.push_back(set.cells[s] + cell_offset);
+      into->faces.push_back(set.faces[s]);
+    }
+  }
+}
 } // namespace
 
 Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
@@ -221,6 +310,19 @@ Teuchos::ParameterList BoxMeshGenerator::valid_parameters()
         "x = 0 (block 2) and 2 TETRA4 on each other face (block 3) (see doc/mesh.md) [-]",
         choice_validator(
             {"HEX8", "TETRA4", "WEDGE6", "PYRAMID5", "HEX20", "HEX27", "TETRA10", "MIXED"}));
+  p.set("Second Half Cells", Teuchos::Array<int>(),
+        "empty: one mesh, the halves sharing the nodes of x = 0 (as the gap split needs); "
+        "three counts: the halves meshed apart (contact pairs between separately meshed "
+        "bodies, Mechanics/Contact/Pairs), the half x < 0 with Cells[0] / 2 x Cells[1] x "
+        "Cells[2] cells and the half x > 0 (edge Lx / 2 along x) with these cells along x, y, "
+        "z; side sets 1..6 on both halves, 10 the cut face x = 0 of block 1 (named cut_1) and "
+        "20 that of block 2 (cut_2); Mesh/\"Gap Side Set\" is then 0 (given nonzero: an error; see "
+        "doc/mesh.md) "
+        "[-]");
+  p.set("Gap Width", 0.0,
+        "with \"Second Half Cells\": the half x > 0 moved by this along x, before the "
+        "rotation, so that the cut faces start this far apart (0: they touch at x = 0) [m]",
+        nonnegative_double_validator());
   return p;
 }
 
@@ -251,6 +353,22 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
                                      << " but must be even, so that the plane x = 0 between "
                                         "the two blocks is a cell face; use "
                                      << even_choices);
+  const auto &second = p.get<Teuchos::Array<int>>("Second Half Cells");
+  KILN_CHECK_INPUT(second.empty() ||
+                       (second.size() == 3 &&
+                        std::all_of(second.begin(), second.end(), [](int n) { return n > 0; })),
+                   where + "/\"Second Half Cells\"",
+                   "must be empty (one mesh) or three counts > 0 (the cells of the half x > 0 "
+                   "along x, y, z), not "
+                       << second);
+  separate_ = !second.empty();
+  for (int d = 0; d < 3 && separate_; ++d)
+    second_cells_[d] = second[d];
+  gap_width_ = p.get<double>("Gap Width");
+  KILN_CHECK_INPUT(gap_width_ == 0.0 || separate_, where + "/\"Gap Width\"",
+                   "is " << gap_width_
+                         << " m, but the halves are one mesh: give \"Second Half Cells\" to "
+                            "mesh them apart, or remove \"Gap Width\"");
   // Nodes and cells are numbered with int: refuse counts that overflow it before the
   // generator computes them.
   // Quadratic cells: up to the nodes of the grid at half the spacing.
@@ -258,6 +376,16 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
   const long double n_nodes =
       (m * cells_[0] + 1.0L) * (m * cells_[1] + 1.0L) * (m * cells_[2] + 1.0L);
   const long double n_cells = count_cells(type_, mixed_, cells_);
+  if (separate_)
+  {
+    const long double n_second = (m * second_cells_[0] + 1.0L) * (m * second_cells_[1] + 1.0L) *
+                                 (m * second_cells_[2] + 1.0L);
+    KILN_CHECK_INPUT(
+        n_nodes + n_second <= std::numeric_limits<int>::max(), where + "/\"Second Half Cells\"",
+        "with the half x < 0, gives about "
+            << static_cast<double>(n_nodes + n_second) << " nodes, more than the "
+            << std::numeric_limits<int>::max() << " a Kiln mesh can number: use fewer cells");
+  }
   KILN_CHECK_INPUT(n_nodes <= std::numeric_limits<int>::max(), where + "/\"Cells\"",
                    "{" << cells_[0] << ", " << cells_[1] << ", " << cells_[2] << "} gives "
                        << static_cast<double>(n_cells) << " cells and "
@@ -269,43 +397,65 @@ BoxMeshGenerator::BoxMeshGenerator(const Teuchos::ParameterList &p, const std::s
 
 long long BoxMeshGenerator::n_cells() const
 {
-  return static_cast<long long>(count_cells(type_, mixed_, cells_));
+  if (!separate_)
+    return static_cast<long long>(count_cells(type_, mixed_, cells_));
+  return static_cast<long long>(
+      count_half_cells(type_, mixed_, 1, {cells_[0] / 2, cells_[1], cells_[2]}) +
+      count_half_cells(type_, mixed_, 2, second_cells_));
 }
 
 long long BoxMeshGenerator::n_nodes() const
 {
-  const long long nx = cells_[0], ny = cells_[1], nz = cells_[2];
-  const long long corners = (nx + 1) * (ny + 1) * (nz + 1);
-  const long long edges =
-      nx * (ny + 1) * (nz + 1) + (nx + 1) * ny * (nz + 1) + (nx + 1) * (ny + 1) * nz;
-  const long long faces = nx * ny * (nz + 1) + nx * (ny + 1) * nz + (nx + 1) * ny * nz;
-  if (mixed_) // the centres of the pyramid layer
-    return corners + ny * nz;
-  switch (type_)
-  {
-  case CellType::pyramid5: // and the centres
-    return corners + nx * ny * nz;
-  case CellType::hex20:
-    return corners + edges;
-  case CellType::hex27:
-    return (2 * nx + 1) * (2 * ny + 1) * (2 * nz + 1);
-  case CellType::tet10: // the grid's edges, one diagonal per square face and per hexahedron
-    return corners + edges + faces + nx * ny * nz;
-  default:
-    return corners;
-  }
+  if (!separate_)
+    return count_nodes(type_, mixed_, cells_);
+  // MIXED: hexahedra for x < 0, the pyramids' centres and the corners for x > 0.
+  return count_nodes(mixed_ ? CellType::hex8 : type_, false,
+                     {cells_[0] / 2, cells_[1], cells_[2]}) +
+         count_nodes(type_, mixed_, second_cells_);
 }
 
 Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
 {
-  const int nx = cells_[0], ny = cells_[1], nz = cells_[2];
-  KILN_CHECK_INPUT(!mid_y || ny % 2 == 0, where_ + "/\"Cells\"",
-                   "has " << ny << " cells along y: side set 11 (the plane y = 0) needs an even "
-                          << "number; use " << ny + 1);
-  KILN_CHECK_INPUT(!mid_z || nz % 2 == 0, where_ + "/\"Cells\"",
-                   "has " << nz << " cells along z: side set 12 (the plane z = 0) needs an even "
-                          << "number; use " << nz + 1);
+  KILN_CHECK_INPUT(!separate_ || (!mid_y && !mid_z), where_ + "/\"Second Half Cells\"",
+                   "meshes the halves apart, so the box has no mid-planes y = 0 and z = 0 "
+                   "(side sets 11 and 12) to split at; remove them from Mesh/\"Gap Side "
+                   "Sets\"");
+  KILN_CHECK_INPUT(!mid_y || cells_[1] % 2 == 0, where_ + "/\"Cells\"",
+                   "has " << cells_[1]
+                          << " cells along y: side set 11 (the plane y = 0) needs an even "
+                          << "number; use " << cells_[1] + 1);
+  KILN_CHECK_INPUT(!mid_z || cells_[2] % 2 == 0, where_ + "/\"Cells\"",
+                   "has " << cells_[2]
+                          << " cells along z: side set 12 (the plane z = 0) needs an even "
+                          << "number; use " << cells_[2] + 1);
+  Mesh mesh;
+  if (!separate_)
+    mesh = grid(cells_, 0, mid_y, mid_z);
+  else
+  {
+    mesh = grid(cells_, 1, false, false);
+    for (SideSet &set : mesh.side_sets)
+      if (set.id == 10)
+        set.name = "cut_1";
+    Mesh second = grid({2 * second_cells_[0], second_cells_[1], second_cells_[2]}, 2, false, false);
+    for (Point &x : second.coordinates)
+      x[0] += gap_width_;
+    append_half(mesh, second, 20);
+  }
   const auto A = rotation_matrix(phi_, theta_);
+  for (Point &y : mesh.coordinates)
+  {
+    const Point x = y;
+    for (int d = 0; d < 3; ++d)
+      y[d] = A[d][0] * x[0] + A[d][1] * x[1] + A[d][2] * x[2] + translation_[d];
+  }
+  return mesh;
+}
+
+Mesh BoxMeshGenerator::grid(const std::array<int, 3> &cells_of_grid, const int only_half,
+                            const bool mid_y, const bool mid_z) const
+{
+  const int nx = cells_of_grid[0], ny = cells_of_grid[1], nz = cells_of_grid[2];
   const int n_corners = (nx + 1) * (ny + 1) * (nz + 1);
 
   Mesh mesh;
@@ -332,7 +482,7 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
   // blocks 2 and 3 (both x > 0) in block order, each in the order of the hexahedra.
   std::vector<GridCell> cells;
   for (int half = 1; half <= 2; ++half)
-    for (int k = 0; k < nz; ++k)
+    for (int k = 0; k < nz && (only_half == 0 || only_half == half); ++k)
       for (int j = 0; j < ny; ++j)
         for (int i = (half == 1 ? 0 : nx / 2); i < (half == 1 ? nx / 2 : nx); ++i)
         {
@@ -357,13 +507,11 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
   for (std::size_t n = 0; n < lattice.size(); ++n)
   {
     // A corner (2i, 2j, 2k) gives i / nx exactly as the grid of corners would.
-    Point x;
+    Point &x = mesh.coordinates[n];
     for (int d = 0; d < 3; ++d)
-      x[d] = size_[d] * (lattice[n][d] % 2 == 0 ? double(lattice[n][d] / 2) / cells_[d] - 0.5
-                                                : double(lattice[n][d]) / (2 * cells_[d]) - 0.5);
-    Point &y = mesh.coordinates[n];
-    for (int d = 0; d < 3; ++d)
-      y[d] = A[d][0] * x[0] + A[d][1] * x[1] + A[d][2] * x[2] + translation_[d];
+      x[d] = size_[d] * (lattice[n][d] % 2 == 0
+                             ? double(lattice[n][d] / 2) / cells_of_grid[d] - 0.5
+                             : double(lattice[n][d]) / (2 * cells_of_grid[d]) - 0.5);
   }
 
   // Side sets: 1..6 the outer planes, 10 the plane x = 0 (block 1's faces first: the cells are
@@ -385,7 +533,7 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
   for (int d = 0; d < 3; ++d)
   {
     planes.push_back({2 * d, d, 0, -1});
-    planes.push_back({2 * d + 1, d, 2 * cells_[d], -1});
+    planes.push_back({2 * d + 1, d, 2 * cells_of_grid[d], -1});
   }
   planes.push_back({6, 0, nx, -1});
   for (const auto &[wanted, id, axis, name] :
@@ -394,8 +542,8 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
     {
       mesh.side_sets.push_back({id, name, {}, {}});
       const int set = static_cast<int>(mesh.side_sets.size()) - 1;
-      planes.push_back({set, axis, cells_[axis], 0});
-      planes.push_back({set, axis, cells_[axis], 1});
+      planes.push_back({set, axis, cells_of_grid[axis], 0});
+      planes.push_back({set, axis, cells_of_grid[axis], 1});
     }
   for (const Plane &plane : planes)
   {
@@ -424,6 +572,8 @@ Mesh BoxMeshGenerator::generate(const bool mid_y, const bool mid_z) const
       }
     }
   }
+  if (only_half != 0)
+    drop_unused_nodes(mesh);
   return mesh;
 }
 } // namespace kiln

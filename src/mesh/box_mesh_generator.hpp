@@ -19,6 +19,10 @@
 /// centres into a PYRAMID5 on the face x = 0 (block 2) and two TETRA4 on each other face, cut
 /// as Kuhn's split cuts it (block 3), and Kuhn's TETRA4 beyond (block 3): a conforming mesh of
 /// three types (doc/mesh.md).
+/// "Second Half Cells" (issue 30): the halves meshed apart, with no node in common: x < 0 with
+/// Cells[0] / 2 x Cells[1] x Cells[2] cells, x > 0 with its own counts, moved along x by "Gap
+/// Width" before the rotation; side sets 1..6 on both, 10 the cut face x = 0 of block 1 and 20
+/// that of block 2 (the pair's two surfaces); nodes and cells of block 1 first.
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_ParameterList.hpp>
@@ -32,14 +36,20 @@ public:
   /// `params` must be validated; `where` names it in messages.
   BoxMeshGenerator(const Teuchos::ParameterList &params, const std::string &where);
   /// With `mid_y`, `mid_z`: side sets 11 and 12 as well (InputError naming `where` if the
-  /// count of cells along that axis is odd).
+  /// count of cells along that axis is odd, or if the halves are meshed apart).
   Mesh generate(bool mid_y = false, bool mid_z = false) const;
+  /// Whether the halves are meshed apart ("Second Half Cells" given).
+  bool separate_halves() const { return separate_; }
   /// The counts generate() makes, without making them (the gap split adds the nodes of the
   /// plane x = 0 once more).
   long long n_cells() const;
   long long n_nodes() const;
 
 private:
+  /// The box of `cells` in its own frame (not rotated): the whole box (`half` 0) or only the
+  /// cells of one half (1: x < 0, 2: x > 0; its nodes alone, in the whole grid's order).
+  Mesh grid(const std::array<int, 3> &cells, int half, bool mid_y, bool mid_z) const;
+
   std::array<double, 3> size_;
   std::array<int, 3> cells_;
   double phi_;
@@ -47,6 +57,9 @@ private:
   std::array<double, 3> translation_;
   CellType type_ = CellType::hex8;
   bool mixed_ = false; ///< "Cell Type" MIXED (type_ is then HEX8)
+  bool separate_ = false;
+  std::array<int, 3> second_cells_{0, 0, 0}; ///< the half x > 0's cells when separate_
+  double gap_width_ = 0.0;
   std::string where_;
 };
 } // namespace kiln

@@ -22,7 +22,8 @@ Teuchos::ParameterList MeshFactory::valid_parameters()
         choice_validator({"Box", "Exodus"}));
   p.set("Gap Side Set", 10,
         "id of the interior side set at which the mesh is split into a gap of zero width; "
-        "0 for no gap (for several gaps, \"Gap Side Sets\") [-]",
+        "0 for no gap (for several gaps, \"Gap Side Sets\"); with Box/\"Second Half Cells\" "
+        "no gap unless given (given nonzero, an error: the halves share no plane) [-]",
         nonnegative_int_validator());
   p.set("Gap Side Sets", Teuchos::Array<int>(),
         "ids of the interior side sets at which the mesh is split into gaps, which may cross "
@@ -73,6 +74,17 @@ MeshFactory::MeshFactory(const Teuchos::ParameterList &params, const std::string
     if (params.get<int>("Gap Side Set") != 0)
       gap_side_sets_.push_back(params.get<int>("Gap Side Set"));
     gap_parameter_ = "Gap Side Set";
+  }
+  // Halves meshed apart share no plane to split at: no gap unless one is asked for (refused).
+  if (type_ == "Box" &&
+      !params.sublist("Box").get<Teuchos::Array<int>>("Second Half Cells").empty())
+  {
+    KILN_CHECK_INPUT(gap_side_sets_.empty() || !given_in_input(params, gap_parameter_),
+                     where_ + "/\"" + gap_parameter_ + "\"",
+                     "names a gap, but Box/\"Second Half Cells\" meshes the halves apart: they "
+                     "share no side set to split at. Set it to 0 and pair the cut faces (side "
+                     "sets 10 and 20) in Mechanics/Contact/Pairs");
+    gap_side_sets_.clear();
   }
   if (!mesh_file.empty() && params.get<std::string>("Type") == "Box")
   {

@@ -1,6 +1,10 @@
 #include "support/two_body_mesh.hpp"
 
+#include "mesh/box_mesh_generator.hpp"
 #include "mesh/hex_geometry.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -112,12 +116,30 @@ void perturb(kiln::Mesh &mesh, const double amplitude)
 
 void rotate(kiln::Mesh &mesh, const double phi_degrees, const double theta_degrees)
 {
-  const auto A = kiln::rotation_matrix(phi_degrees, theta_degrees);
   for (kiln::Point &x : mesh.coordinates)
-  {
-    const kiln::Point old = x;
-    for (int i = 0; i < 3; ++i)
-      x[i] = A[i][0] * old[0] + A[i][1] * old[1] + A[i][2] * old[2];
-  }
+    x = rotated(x, phi_degrees, theta_degrees);
+}
+
+kiln::Point rotated(const kiln::Point &x, const double phi_degrees, const double theta_degrees,
+                    const bool inverse)
+{
+  const auto A = kiln::rotation_matrix(phi_degrees, theta_degrees);
+  kiln::Point y{0, 0, 0};
+  for (int i = 0; i < 3; ++i)
+    for (int d = 0; d < 3; ++d)
+      y[i] += (inverse ? A[d][i] : A[i][d]) * x[d];
+  return y;
+}
+
+Teuchos::ParameterList box_halves_parameters(const double gap, const std::string &cell_type)
+{
+  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
+  p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(8, 4, 4)));
+  p.set("Second Half Cells", Teuchos::Array<int>(Teuchos::tuple(5, 3, 6)));
+  p.set("Gap Width", gap);
+  p.set("Phi", 45.0);
+  p.set("Theta", -30.0);
+  p.set("Cell Type", cell_type);
+  return p;
 }
 } // namespace kiln_test

@@ -6,8 +6,11 @@
 /// Cells are numbered body 1 first, each x-fastest; side-set faces in cell order.
 #include "mesh/mesh.hpp"
 
+#include <Teuchos_ParameterList.hpp>
+
 #include <array>
 #include <functional>
+#include <string>
 
 namespace kiln_test
 {
@@ -34,4 +37,12 @@ kiln::Mesh two_cylinder_shells(const std::array<int, 2> &n1, const std::array<in
 void perturb(kiln::Mesh &mesh, double amplitude);
 /// Rotates every node about the origin by phi about y, then theta about x [degrees].
 void rotate(kiln::Mesh &mesh, double phi_degrees, double theta_degrees);
+/// The point x rotated as rotate() rotates (`inverse`: the rotation undone).
+kiln::Point rotated(const kiln::Point &x, double phi_degrees, double theta_degrees,
+                    bool inverse = false);
+
+/// The contact box's generator parameters (0.04 m, rotated by phi = 45, theta = -30) with its
+/// halves meshed apart, 4x4x4 (block 1, x < 0) and 5x3x6 (block 2) cells of `cell_type`, the
+/// second moved by `gap` along x (Mesh/Box "Second Half Cells", "Gap Width").
+Teuchos::ParameterList box_halves_parameters(double gap, const std::string &cell_type = "HEX8");
 } // namespace kiln_test

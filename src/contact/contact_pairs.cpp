@@ -1,0 +1,63 @@
+#include "contact/contact_pairs.hpp"
+
+#include "base/errors.hpp"
+#include "base/parameters.hpp"
+
+namespace kiln
+{
+Teuchos::ParameterList contact_pair_parameters()
+{
+  const MortarPairingOptions defaults;
+  Teuchos::ParameterList p;
+  p.set("Primary Side Set", 0,
+        "the side set of one body's surface: the primary side, whose nodes the secondary's "
+        "rows couple to; required [-]",
+        nonnegative_int_validator());
+  p.set("Secondary Side Set", 0,
+        "the side set of the other body's surface, facing the primary one: the secondary "
+        "side, on whose nodes the contact pressure lives; name the finer or softer of the two "
+        "surfaces; required [-]",
+        nonnegative_int_validator());
+  p.set("Search Distance", defaults.search_distance,
+        "the reach of the search: a primary face is integrated against a secondary face when "
+        "their bounding boxes are within this distance; 0: the secondary surface's largest "
+        "face diameter. Raise it when the bodies start apart by more than a face [m]",
+        nonnegative_double_validator());
+  p.set("Penetration Tolerance", defaults.penetration_tolerance,
+        "how far a secondary node may start inside the primary body (-g0) before the input is "
+        "refused; the default is above the round-off of touching surfaces and below any "
+        "physical gap. Curved surfaces meshed apart that touch overlap by the facets' sag, "
+        "about h^2 / (8 R) (h the face size, R the radius): raise it to that [m]",
+        nonnegative_double_validator());
+  return p;
+}
+
+std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contact,
+                                            const std::string &path)
+{
+  std::vector<ContactPairInput> pairs;
+  if (!contact.isSublist("Pairs"))
+    return pairs;
+  const Teuchos::ParameterList &list = contact.sublist("Pairs");
+  for (auto it = list.begin(); it != list.end(); ++it)
+  {
+    const std::string &name = list.name(it);
+    const Teuchos::ParameterList &entry = list.sublist(name);
+    ContactPairInput pair;
+    pair.name = name;
+    pair.where = path + "/Pairs/\"" + name + "\"";
+    for (const auto &[key, id] :
+         {std::pair<const char *, int *>{"Primary Side Set", &pair.primary_side_set},
+          std::pair<const char *, int *>{"Secondary Side Set", &pair.secondary_side_set}})
+    {
+      *id = entry.get<int>(key);
+      KILN_CHECK_INPUT(*id > 0, pair.where + "/\"" + key + "\"",
+                       "is missing (or 0); name the side set of the body's surface in the mesh");
+    }
+    pair.options.search_distance = entry.get<double>("Search Distance");
+    pair.options.penetration_tolerance = entry.get<double>("Penetration Tolerance");
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+} // namespace kiln

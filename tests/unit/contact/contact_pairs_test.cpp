@@ -1,0 +1,94 @@
+// Tests src/contact/contact_pairs.cpp: the input Mechanics/Contact/Pairs (issue 30): the pairs
+// read with their paths, defaults and values; a misspelled key and a missing side set are
+// input errors naming the parameter.
+// KILN_TEST_NP: 1
+#include "contact/contact_pairs.hpp"
+
+#include "base/parameters.hpp"
+#include "contact/interface_parameters.hpp"
+#include "support/parameter_lists.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace
+{
+using testing::HasSubstr;
+
+const std::string path = "Kiln/Mechanics/Contact";
+
+/// The Contact sublist with the pair "Pellet" (side sets 3 and 4) and "Flange" (5 and 6, a
+/// search distance and a tolerance), validated.
+Teuchos::ParameterList contact(const std::string &misspelled = "")
+{
+  Teuchos::ParameterList user("Contact");
+  Teuchos::ParameterList &pellet = user.sublist("Pairs").sublist("Pellet");
+  pellet.set("Primary Side Set", 3);
+  pellet.set("Secondary Side Set", 4);
+  Teuchos::ParameterList &flange = user.sublist("Pairs").sublist("Flange");
+  flange.set("Primary Side Set", 5);
+  flange.set("Secondary Side Set", 6);
+  flange.set("Search Distance", 0.002);
+  flange.set("Penetration Tolerance", 1e-5);
+  if (!misspelled.empty())
+    flange.set(misspelled, 1);
+  return kiln::validated(user, kiln::interface_parameters(), "in.xml", path);
+}
+} // namespace
+
+TEST(ContactPairs, ReadInOrderWithDefaults)
+{
+  const std::vector<kiln::ContactPairInput> pairs =
+      kiln::contact_pairs(contact(), "in.xml: " + path);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].name, "Pellet");
+  EXPECT_EQ(pairs[0].where, "in.xml: Kiln/Mechanics/Contact/Pairs/\"Pellet\"");
+  EXPECT_EQ(pairs[0].primary_side_set, 3);
+  EXPECT_EQ(pairs[0].secondary_side_set, 4);
+  EXPECT_EQ(pairs[0].options.search_distance, 0.0);
+  EXPECT_EQ(pairs[0].options.penetration_tolerance, 1e-9);
+  EXPECT_EQ(pairs[1].name, "Flange");
+  EXPECT_EQ(pairs[1].primary_side_set, 5);
+  EXPECT_EQ(pairs[1].secondary_side_set, 6);
+  EXPECT_EQ(pairs[1].options.search_distance, 0.002);
+  EXPECT_EQ(pairs[1].options.penetration_tolerance, 1e-5);
+}
+
+TEST(ContactPairs, NoPairs)
+{
+  const Teuchos::ParameterList none = kiln::validated(Teuchos::ParameterList("Contact"),
+                                                      kiln::interface_parameters(), "in.xml", path);
+  EXPECT_TRUE(kiln::contact_pairs(none, "in.xml: " + path).empty());
+}
+
+TEST(ContactPairs, MisspelledKey)
+{
+  const std::string message = kiln_test::input_error_message([] { contact("Secondary Sideset"); });
+  EXPECT_THAT(message, HasSubstr("in.xml: Kiln/Mechanics/Contact/Pairs/Flange/\"Secondary "
+                                 "Sideset\": unknown parameter. Did you mean \"Secondary Side "
+                                 "Set\"?"));
+}
+
+TEST(ContactPairs, MissingSideSet)
+{
+  Teuchos::ParameterList user("Contact");
+  user.sublist("Pairs").sublist("Pellet").set("Primary Side Set", 3);
+  const Teuchos::ParameterList list =
+      kiln::validated(user, kiln::interface_parameters(), "in.xml", path);
+  const std::string message =
+      kiln_test::input_error_message([&] { kiln::contact_pairs(list, "in.xml: " + path); });
+  EXPECT_THAT(message, HasSubstr("in.xml: Kiln/Mechanics/Contact/Pairs/\"Pellet\"/\"Secondary "
+                                 "Side Set\": is missing"));
+}
+
+TEST(ContactPairs, NegativeSearchDistance)
+{
+  Teuchos::ParameterList user("Contact");
+  Teuchos::ParameterList &pellet = user.sublist("Pairs").sublist("Pellet");
+  pellet.set("Primary Side Set", 3);
+  pellet.set("Secondary Side Set", 4);
+  pellet.set("Search Distance", -1.0);
+  const std::string message = kiln_test::input_error_message(
+      [&] { kiln::validated(user, kiln::interface_parameters(), "in.xml", path); });
+  EXPECT_THAT(message, HasSubstr("Pairs/Pellet/\"Search Distance\""));
+}

@@ -1,0 +1,290 @@
+// Tests src/contact/mortar_pairing.cpp: the rows of a contact pair between separately meshed
+// bodies (issue 30). On two flat bodies (4x4 against 5x3 faces, rotated): a row per secondary
+// node, sum D_jj = the area to 1e-14, the weights summing to 1, g0_j = the gap = n_j . (X_j -
+// sum_k w_jk X_k) and the twin point on the primary plane to 1e-12. On the box generator's two
+// halves meshed apart (4x4x4 against 5x3x6 cells, rotated by phi = 45, theta = -30), touching
+// and apart by "Gap Width". On two curved shells: rows with radial normals and the gap within
+// the facets' sag. Each input error once. Every rank computes the same rows (np 2).
+// KILN_TEST_NP: 1 2
+#include "contact/mortar_pairing.hpp"
+
+#include "mesh/box_mesh_generator.hpp"
+#include "mesh/contact_surface.hpp"
+#include "support/parameter_lists.hpp"
+#include "support/two_body_mesh.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+using kiln::ContactRow;
+using kiln::dot;
+using kiln::Mesh;
+using kiln::MortarPairing;
+using kiln::MortarPairingOptions;
+using kiln::Point;
+using testing::HasSubstr;
+
+const std::string pair = "in.xml: Mechanics/Contact/Pairs/\"Halves\"";
+
+Point operator-(const Point &a, const Point &b)
+{
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+/// The twin point sum_k w_jk X_k of a row.
+Point twin_point(const Mesh &mesh, const ContactRow &row)
+{
+  Point y{0, 0, 0};
+  for (std::size_t k = 0; k < row.partners.size(); ++k)
+    for (int d = 0; d < 3; ++d)
+      y[d] += row.weights[k] * mesh.coordinates[row.partners[k]][d];
+  return y;
+}
+
+/// The checks of a pair of flat surfaces: the primary in the plane through `on_primary` with
+/// unit normal `normal` (from the primary to the secondary), the secondary `gap` beyond it,
+/// both of area `area`; every node of the secondary side set has a row.
+void expect_flat_rows(const Mesh &mesh, const MortarPairing &pairing, const int secondary,
+                      const Point &normal, const Point &on_primary, const double gap,
+                      const double area)
+{
+  const kiln::ContactSurface surface(mesh, secondary, pair);
+  ASSERT_EQ(pairing.rows().size(), surface.nodes().size());
+  double sum_D = 0.0;
+  for (std::size_t r = 0; r < pairing.rows().size(); ++r)
+  {
+    const ContactRow &row = pairing.rows()[r];
+    SCOPED_TRACE("secondary node " + std::to_string(row.node));
+    EXPECT_EQ(row.node, surface.nodes()[r]);
+    sum_D += row.area;
+    EXPECT_GT(row.area, 0.0);
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(row.normal[d], normal[d], 1e-14);
+    ASSERT_EQ(row.partners.size(), row.weights.size());
+    ASSERT_FALSE(row.partners.empty());
+    double sum_w = 0.0;
+    for (std::size_t k = 0; k < row.weights.size(); ++k)
+    {
+      sum_w += row.weights[k];
+      if (k > 0)
+      {
+        EXPECT_LT(row.partners[k - 1], row.partners[k]);
+      }
+    }
+    EXPECT_NEAR(sum_w, 1.0, 1e-14);
+    EXPECT_NEAR(row.gap0, gap, 1e-12);
+    const Point twin = twin_point(mesh, row);
+    EXPECT_NEAR(row.gap0, dot(row.normal, mesh.coordinates[row.node] - twin), 1e-12);
+    EXPECT_NEAR(dot(normal, twin - on_primary), 0.0, 1e-12); // on the primary plane
+  }
+  EXPECT_NEAR(sum_D, area, 1e-14 * area);
+}
+
+/// The rows are the same on every rank: rank 0's count and sums, broadcast and compared.
+void expect_same_on_every_rank(const MortarPairing &pairing)
+{
+  double mine[3] = {static_cast<double>(pairing.rows().size()), 0.0, 0.0};
+  for (const ContactRow &row : pairing.rows())
+  {
+    mine[1] += row.area * (row.node + 1) + row.gap0;
+    for (std::size_t k = 0; k < row.partners.size(); ++k)
+      mine[2] += row.weights[k] * (row.partners[k] + 1);
+  }
+  double first[3] = {mine[0], mine[1], mine[2]};
+  MPI_Bcast(first, 3, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(mine[i], first[i]) << "sum " << i;
+}
+
+/// The message of the InputError that the pairing throws, or "".
+std::string pairing_error(const Mesh &mesh, const int primary, const int secondary,
+                          const MortarPairingOptions &options = {})
+{
+  return kiln_test::input_error_message(
+      [&] { MortarPairing(mesh, primary, secondary, options, pair); });
+}
+
+/// The rotation of the box tests (kiln_test::box_halves_parameters's).
+constexpr double phi = 45.0, theta = -30.0;
+
+Point rotated(const Point &x)
+{
+  return kiln_test::rotated(x, phi, theta);
+}
+} // namespace
+
+TEST(MortarPairing, FlatBodiesRotated)
+{
+  const double gap = 0.01;
+  Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, gap);
+  kiln_test::rotate(mesh, phi, theta);
+  // Side set 1: body 1's top (z = 0) facing +z; 2: body 2's bottom.
+  const MortarPairing pairing(mesh, 1, 2, {}, pair);
+  expect_flat_rows(mesh, pairing, 2, rotated({0, 0, 1}), {0, 0, 0}, gap, 1.0);
+  expect_same_on_every_rank(pairing);
+  // The default reach: one secondary face diameter.
+  EXPECT_NEAR(pairing.search_distance(), std::sqrt(0.2 * 0.2 + 1.0 / 9), 1e-15);
+
+  // The other way round: the 4x4 side is the secondary.
+  const MortarPairing reversed(mesh, 2, 1, {}, pair);
+  expect_flat_rows(mesh, reversed, 1, rotated({0, 0, -1}), rotated({0, 0, gap}), gap, 1.0);
+}
+
+TEST(MortarPairing, FlatBodiesTouchingAndPartners)
+{
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.0);
+  const MortarPairing pairing(mesh, 1, 2, {}, pair);
+  expect_flat_rows(mesh, pairing, 2, {0, 0, 1}, {0, 0, 0}, 0.0, 1.0);
+  // The corner node (0, 0) of the secondary lies on the primary's corner node: its twin point
+  // is that node, though its partners are the nodes of the primary face it lies on.
+  const ContactRow &corner = pairing.rows().front();
+  const Point twin = twin_point(mesh, corner);
+  for (int d = 0; d < 3; ++d)
+    EXPECT_NEAR(twin[d], mesh.coordinates[corner.node][d], 1e-14);
+  const kiln::ContactSurface primary(mesh, 1, pair);
+  for (const ContactRow &row : pairing.rows())
+    for (const int k : row.partners)
+      EXPECT_GE(primary.surface_node(k), 0) << "partner " << k << " of node " << row.node;
+}
+
+/// The contact box (0.04 m, rotated by phi, theta) with halves 4x4x4 and 5x3x6 meshed apart,
+/// `gap` apart.
+Mesh box_halves(const double gap)
+{
+  return kiln::BoxMeshGenerator(kiln_test::box_halves_parameters(gap), "test/Box").generate();
+}
+
+TEST(MortarPairing, BoxHalvesTouching)
+{
+  const Mesh mesh = box_halves(0.0);
+  // Primary: block 1's cut face (4 x 4 faces); secondary: block 2's (3 x 6 faces, 4 x 7 nodes).
+  const MortarPairing pairing(mesh, 10, 20, {}, pair);
+  EXPECT_EQ(pairing.rows().size(), 28u);
+  expect_flat_rows(mesh, pairing, 20, rotated({1, 0, 0}), {0, 0, 0}, 0.0, 0.04 * 0.04);
+  expect_same_on_every_rank(pairing);
+}
+
+TEST(MortarPairing, BoxHalvesApart)
+{
+  const double g = 2e-6;
+  const Mesh mesh = box_halves(g);
+  const MortarPairing pairing(mesh, 10, 20, {}, pair);
+  expect_flat_rows(mesh, pairing, 20, rotated({1, 0, 0}), {0, 0, 0}, g, 0.04 * 0.04);
+  // The other way round.
+  const MortarPairing reversed(mesh, 20, 10, {}, pair);
+  EXPECT_EQ(reversed.rows().size(), 25u);
+  expect_flat_rows(mesh, reversed, 10, rotated({-1, 0, 0}), rotated({g, 0, 0}), g, 0.04 * 0.04);
+}
+
+TEST(MortarPairing, CurvedShells)
+{
+  // Body 1 (radii 1.5 .. 2) outer face = side set 1, body 2 (2 + gap .. 2.5) inner = 2.
+  const double gap = 0.05;
+  Mesh mesh = kiln_test::two_cylinder_shells({4, 4}, {5, 3}, gap);
+  kiln_test::rotate(mesh, phi, theta);
+  const MortarPairing pairing(mesh, 1, 2, {}, pair);
+  const kiln::ContactSurface surface(mesh, 2, pair);
+  ASSERT_EQ(pairing.rows().size(), surface.nodes().size());
+  const Point axis = rotated({0, 0, 1});
+  // The facets' sags: the primary's (radius 2, 0.25 rad) and the secondary's (2.05, 0.2 rad)
+  // move the faceted gap off the radial one by at most their sum.
+  const double sag = 2 * (1 - std::cos(0.125)) + (2 + gap) * (1 - std::cos(0.1));
+  double sum_D = 0.0, faceted_area = 0.0;
+  for (int f = 0; f < surface.n_faces(); ++f)
+    faceted_area += std::sqrt(dot(surface.face_area_vector(f), surface.face_area_vector(f)));
+  for (const ContactRow &row : pairing.rows())
+  {
+    SCOPED_TRACE("secondary node " + std::to_string(row.node));
+    sum_D += row.area;
+    double sum_w = 0.0;
+    for (const double w : row.weights)
+      sum_w += w;
+    EXPECT_NEAR(sum_w, 1.0, 1e-14);
+    // Radial: normal to the axis, along the node's position off it.
+    const Point &x = mesh.coordinates[row.node];
+    const double along = dot(x, axis);
+    const Point radial{x[0] - along * axis[0], x[1] - along * axis[1], x[2] - along * axis[2]};
+    EXPECT_NEAR(dot(row.normal, axis), 0.0, 1e-14);
+    EXPECT_GT(dot(row.normal, radial) / std::sqrt(dot(radial, radial)), std::cos(0.1 + 1e-12));
+    EXPECT_NEAR(row.gap0, gap, sag);
+  }
+  // The ends of the arc: the secondary's faces at angles 0 and 1 project slightly past the
+  // primary's; the rest is covered.
+  EXPECT_NEAR(sum_D, faceted_area, 0.01 * faceted_area);
+  expect_same_on_every_rank(pairing);
+}
+
+TEST(MortarPairing, OneSideSetTwice)
+{
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  EXPECT_THAT(pairing_error(mesh, 2, 2),
+              HasSubstr(pair + ": \"Primary Side Set\" and \"Secondary Side Set\" are both side "
+                               "set 2"));
+}
+
+TEST(MortarPairing, AbsentSideSet)
+{
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  EXPECT_THAT(pairing_error(mesh, 1, 7),
+              HasSubstr(pair + "/\"Secondary Side Set\": side set 7 is not in the mesh"));
+}
+
+TEST(MortarPairing, QuadraticFaces)
+{
+  Teuchos::ParameterList p = kiln::BoxMeshGenerator::valid_parameters();
+  p.set("Cells", Teuchos::Array<int>(Teuchos::tuple(2, 2, 2)));
+  p.set("Cell Type", "HEX20");
+  const Mesh mesh = kiln::BoxMeshGenerator(p, "test/Box").generate();
+  EXPECT_THAT(pairing_error(mesh, 5, 6),
+              HasSubstr(pair + "/\"Primary Side Set\": side set 5 has a QUAD8 face"));
+}
+
+TEST(MortarPairing, SurfacesThatDoNotFace)
+{
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.5);
+  MortarPairingOptions options;
+  options.search_distance = 0.2;
+  EXPECT_THAT(pairing_error(mesh, 1, 2, options),
+              HasSubstr(pair + ": side sets 1 (primary) and 2 (secondary) do not face each other"));
+}
+
+TEST(MortarPairing, InterpenetratingBodies)
+{
+  // Body 2 starts 1 mm inside body 1.
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, -0.001);
+  const std::string message = pairing_error(mesh, 1, 2);
+  EXPECT_THAT(message, HasSubstr(pair + ": the bodies interpenetrate: secondary node "));
+  EXPECT_THAT(message, HasSubstr("(side set 2) at (0, 0, -0.001) m lies 0.001 m inside the "
+                                 "primary body (side set 1), more than \"Penetration "
+                                 "Tolerance\" 1e-09 m"));
+  // Within a tolerance, accepted.
+  MortarPairingOptions options;
+  options.penetration_tolerance = 0.002;
+  EXPECT_EQ(pairing_error(mesh, 1, 2, options), "");
+}
+
+TEST(MortarPairing, NoSecondaryNodeCovered)
+{
+  // Body 2 moved along x past body 1's edge by 0.05 m: within reach, facing, no overlap.
+  Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  std::vector<bool> in_body_2(mesh.n_nodes(), false);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.block_id[c] == 2)
+      for (const int n : mesh.cell_nodes(c))
+        in_body_2[n] = true;
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    if (in_body_2[n])
+      mesh.coordinates[n][0] += 1.05;
+  const std::string message = pairing_error(mesh, 1, 2);
+  EXPECT_THAT(message, HasSubstr(pair + ": no node of the secondary side set 2 is covered by "
+                                        "the primary side set 1"));
+}
