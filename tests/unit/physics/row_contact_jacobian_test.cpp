@@ -4,7 +4,7 @@
 // (tests/support/two_body_mesh): body 1 on [0, 1]^2 x [-0.2, 0] with 3 x 3 x 1 cells, body 2
 // on [0.125, 1.125] x [0, 1] x 0.2 high with 4 x 2 x 1 cells, its bottom at z = gap + tilt (x -
 // 0.55), rotated; the rows of body 2's bottom (secondary) against body 1's top (primary) from
-// MortarFaceIntegrals (D_jj, w_jk = M_jk / D_jj, g0_j = n_j . (X_j - sum_k w_jk X_k)), so that
+// MortarPairing (D_jj, w_jk = M_jk / D_jj, g0_j = g~_j / D_jj), so that
 // body 2's last column of faces is half covered and its far nodes have small D_jj. Body 1's
 // bottom held, body 2's top held in x and y. The opening is the mesh's (g0, the rows' initial
 // gap), far from the switch P = c g; x is noise about the reference (temperatures within 0.2 K
@@ -16,8 +16,7 @@
 #include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "contact/interface_parameters.hpp"
-#include "contact/mortar_face_integrals.hpp"
-#include "mesh/contact_surface.hpp"
+#include "contact/mortar_pairing.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/coupled_problem.hpp"
 #include "physics/heat/thermal_physics.hpp"
@@ -36,7 +35,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <random>
 #include <string>
 #include <utility>
@@ -53,64 +51,13 @@ constexpr double g0 = 2.0e-4;               ///< the initial gap [m]
 constexpr double phi = 25.0, theta = -15.0; ///< the rotation [degrees]
 constexpr double tolerance = 1.0e-7;        ///< as contact_jacobian_test
 
-/// The rows of the secondary side set 2 against the primary side set 1, by summing each
-/// secondary face's mortar integrals over its nodes; nodes with D_jj below 1e-6 of their
-/// nodal area get none (doc/contact.md, "Dual basis on the covered part").
+/// The rows of the secondary side set 2 against the primary side set 1 (MortarPairing; the
+/// interpenetrating meshes of the closed states accepted).
 std::vector<kiln::ContactRow> mortar_rows(const kiln::Mesh &mesh)
 {
-  const kiln::ContactSurface secondary(mesh, 2, "test"), primary(mesh, 1, "test");
-  const auto corners = [](const kiln::ContactSurface &s, const int f)
-  {
-    std::vector<Point> x;
-    for (const int i : s.face_nodes(f))
-      x.push_back(s.positions()[i]);
-    return x;
-  };
-  std::vector<std::vector<Point>> primary_x;
-  for (int f = 0; f < primary.n_faces(); ++f)
-    primary_x.push_back(corners(primary, f));
-  std::vector<kiln::MortarFace> primaries;
-  for (int f = 0; f < primary.n_faces(); ++f)
-    primaries.push_back({primary.face_type(f), {primary_x[f].data(), 4}});
-  std::vector<double> D(secondary.n_nodes(), 0.0);
-  std::vector<std::map<int, double>> M(secondary.n_nodes());
-  for (int f = 0; f < secondary.n_faces(); ++f)
-  {
-    const std::vector<Point> x = corners(secondary, f);
-    const kiln::MortarFaceIntegrals integrals({secondary.face_type(f), {x.data(), 4}}, primaries);
-    const auto nodes = secondary.face_nodes(f);
-    for (int i = 0; i < integrals.n_shape(); ++i)
-    {
-      D[nodes[i]] += integrals.D(i, i);
-      for (int p = 0; p < primary.n_faces(); ++p)
-        for (int k = 0; k < 4; ++k)
-          if (integrals.M(i, p, k) != 0.0)
-            M[nodes[i]][primary.nodes()[primary.face_nodes(p)[k]]] += integrals.M(i, p, k);
-    }
-  }
-  std::vector<kiln::ContactRow> rows;
-  for (int j = 0; j < secondary.n_nodes(); ++j)
-  {
-    if (D[j] < 1e-6 * secondary.nodal_area(j))
-      continue;
-    kiln::ContactRow row;
-    row.node = secondary.nodes()[j];
-    const Point &out = secondary.normal(j); // out of body 2: from the secondary side
-    row.normal = {-out[0], -out[1], -out[2]};
-    row.area = D[j];
-    Point twin{};
-    for (const auto &[k, m] : M[j])
-    {
-      row.partners.push_back(k);
-      row.weights.push_back(m / D[j]);
-      for (int d = 0; d < 3; ++d)
-        twin[d] += m / D[j] * mesh.coordinates[k][d];
-    }
-    const Point &X = mesh.coordinates[row.node];
-    row.gap0 = kiln::dot(row.normal, Point{X[0] - twin[0], X[1] - twin[1], X[2] - twin[2]});
-    rows.push_back(row);
-  }
-  return rows;
+  kiln::MortarPairingOptions options;
+  options.penetration_tolerance = 1e-3;
+  return kiln::MortarPairing(mesh, 1, 2, options, "test").rows();
 }
 
 /// How body 2 is meshed against body 1: its bottom at block z = gap + tilt (x - 0.55) [m].
