@@ -65,7 +65,40 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
                                                      parameters, where + "/Mechanics/Contact"));
     }
   // One interface per pairing of two side sets (rows with weighted partners), after the split
-  // gaps.
+  // gaps. A pairing's nodes (its rows' and their partners) are on no other interface: its rows
+  // are written whole, and another interface's would overwrite them (doc/contact.md).
+  if (dofs.layout().contact && mechanics_)
+  {
+    std::vector<std::string> owner_name; // per interface so far
+    std::vector<int> first(static_cast<std::size_t>(mesh.n_nodes()), -1);
+    const auto visit =
+        [&](const std::vector<ContactRow> &rows, const std::string &name, const bool split)
+    {
+      const int s = static_cast<int>(owner_name.size());
+      owner_name.push_back(name);
+      for (const ContactRow &row : rows)
+        for (std::size_t i = 0; i <= row.partners.size(); ++i)
+        {
+          const int node = i == 0 ? row.node : row.partners[i - 1];
+          int &f = first[node];
+          if (f < 0)
+            f = s;
+          const Point &x = mesh.coordinates[node];
+          KILN_CHECK_INPUT(f == s || (split && f < static_cast<int>(pairings_.size())),
+                           where + "/Mechanics/Contact",
+                           "node " << node << " at (" << x[0] << ", " << x[1] << ", " << x[2]
+                                   << ") is on " << owner_name[f] << " and on " << name
+                                   << ": a node of a pair between separately meshed bodies "
+                                      "cannot be on another pair or gap (the rows of one would "
+                                      "overwrite the other's); give the pairs and gaps side sets "
+                                      "without common nodes");
+        }
+    };
+    for (const auto &gap : pairings_)
+      visit(std::vector<ContactRow>(gap->rows().begin(), gap->rows().end()), gap->name(), true);
+    for (const PairingRows &pairing : pairings)
+      visit(pairing.rows, pairing.name, false);
+  }
   if (dofs.layout().contact && mechanics_)
     for (const PairingRows &pairing : pairings)
     {

@@ -380,3 +380,25 @@ TEST(RowContactJacobian, PatchTestUniformPressure)
   EXPECT_LT(worst_P, 1e-9);
   EXPECT_LT(global_u, 1e-9);
 }
+
+TEST(RowContactJacobian, PairingSharingNodesIsAnInputError)
+{
+  const State state{g0, 0.0};
+  TwoBodies s(state);
+  const Teuchos::ParameterList t = kiln::validated(
+      thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  const Teuchos::ParameterList m =
+      kiln::validated(mechanics_list(state), kiln::MechanicalPhysics::valid_parameters(),
+                      "test.xml", "Kiln/Mechanics");
+  kiln::PairingRows second = pairing(s.rows, "Contact", "Min");
+  second.name = "pair \"again\"";
+  const std::string message = input_error_message(
+      [&]
+      {
+        kiln::CoupledProblem problem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln", nullptr,
+                                     {pairing(s.rows, "Contact", "Min"), second});
+      });
+  EXPECT_NE(message.find("test.xml: Kiln/Mechanics/Contact: node "), std::string::npos) << message;
+  EXPECT_NE(message.find("is on pair \"test\" and on pair \"again\""), std::string::npos)
+      << message;
+}
