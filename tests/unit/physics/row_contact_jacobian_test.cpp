@@ -177,18 +177,29 @@ kiln::PairingRows pairing(const std::vector<kiln::ContactRow> &rows, const std::
   return {"pair \"test\"", rows, p};
 }
 
+/// A problem on the two bodies with the Thermal and Mechanics lists (validated here) and the
+/// pairings.
+Teuchos::RCP<kiln::CoupledProblem> make_problem(const TwoBodies &s,
+                                                const Teuchos::ParameterList &thermal,
+                                                const Teuchos::ParameterList &mechanics,
+                                                const std::vector<kiln::PairingRows> &pairings)
+{
+  const Teuchos::ParameterList t = kiln::validated(
+      thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
+  const Teuchos::ParameterList m = kiln::validated(
+      mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
+  return Teuchos::rcp(new kiln::CoupledProblem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln",
+                                               nullptr, pairings));
+}
+
 /// Runs one case: J at the state against central differences; returns the error.
 double run_case(const std::string &name, const std::string &kind, const std::string &function,
                 const State &state)
 {
   TwoBodies s(state);
-  const Teuchos::ParameterList t = kiln::validated(
-      thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-  const Teuchos::ParameterList m =
-      kiln::validated(mechanics_list(state), kiln::MechanicalPhysics::valid_parameters(),
-                      "test.xml", "Kiln/Mechanics");
-  kiln::CoupledProblem problem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln", nullptr,
-                               {pairing(s.rows, kind, function)});
+  const auto problem_rcp =
+      make_problem(s, thermal_list(), mechanics_list(state), {pairing(s.rows, kind, function)});
+  kiln::CoupledProblem &problem = *problem_rcp;
   EXPECT_TRUE(problem.has_contact());
   EXPECT_EQ(problem.n_pairs(), static_cast<int>(s.rows.size()));
   // The rows: several partners each, weights summing to 1.
@@ -326,13 +337,7 @@ TEST(RowContactJacobian, PatchTestUniformPressure)
   load.set("Type", "Pressure");
   load.set("Side Sets", ids({4}));
   load.set("Pressure", constant_function(p));
-  const Teuchos::ParameterList t = kiln::validated(
-      thermal, kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-  const Teuchos::ParameterList m = kiln::validated(
-      mechanics, kiln::MechanicalPhysics::valid_parameters(), "test.xml", "Kiln/Mechanics");
-  auto problem =
-      Teuchos::rcp(new kiln::CoupledProblem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln",
-                                            nullptr, {pairing(s.rows, "Contact", "Min")}));
+  auto problem = make_problem(s, thermal, mechanics, {pairing(s.rows, "Contact", "Min")});
   Teuchos::ParameterList solver;
   solver.set("Relative Tolerance", 1e-12);
   solver.set("Absolute Tolerance", 1e-300);
@@ -385,18 +390,13 @@ TEST(RowContactJacobian, PairingSharingNodesIsAnInputError)
 {
   const State state{g0, 0.0};
   TwoBodies s(state);
-  const Teuchos::ParameterList t = kiln::validated(
-      thermal_list(), kiln::ThermalPhysics::valid_parameters(), "test.xml", "Kiln/Thermal");
-  const Teuchos::ParameterList m =
-      kiln::validated(mechanics_list(state), kiln::MechanicalPhysics::valid_parameters(),
-                      "test.xml", "Kiln/Mechanics");
   kiln::PairingRows second = pairing(s.rows, "Contact", "Min");
   second.name = "pair \"again\"";
   const std::string message = input_error_message(
       [&]
       {
-        kiln::CoupledProblem problem(s.mesh, s.dofs, s.material, t, m, "test.xml: Kiln", nullptr,
-                                     {pairing(s.rows, "Contact", "Min"), second});
+        make_problem(s, thermal_list(), mechanics_list(state),
+                     {pairing(s.rows, "Contact", "Min"), second});
       });
   EXPECT_NE(message.find("test.xml: Kiln/Mechanics/Contact: node "), std::string::npos) << message;
   EXPECT_NE(message.find("is on pair \"test\" and on pair \"again\""), std::string::npos)
