@@ -86,10 +86,10 @@ public:
   {
     return static_cast<GO>(n_node_fields_) * node + slot;
   }
-  /// The twins of node n: the nodes it is paired with across the gaps (one on a single gap,
+  /// The partners of node n: its twins across the gaps (one on a single gap,
   /// more where gaps cross; none off the gaps) and its partners in the rows of pairings (a
   /// row's node j and its partners k, both ways), as [begin, end).
-  std::pair<const int *, const int *> twins(const int node) const
+  std::pair<const int *, const int *> partners(const int node) const
   {
     return {twin_nodes_.data() + twin_offsets_[node], twin_nodes_.data() + twin_offsets_[node + 1]};
   }

@@ -122,7 +122,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   if (gap != nullptr)
     couplings.gap_face_nodes = [&mesh, gap](const int k)
     { return gap->nodes(mesh, mesh.gap_faces[k]); };
-  couplings.twins = !interfaces_.empty();
+  couplings.partners = !interfaces_.empty();
   // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
@@ -396,9 +396,9 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
 }
 
 std::optional<std::pair<std::vector<int>, LocalSystem>>
-CoupledProblem::with_twins(const std::vector<int> &nodes, const LocalSystem &local) const
+CoupledProblem::with_partners(const std::vector<int> &nodes, const LocalSystem &local) const
 {
-  std::vector<int> extended_nodes = assembler_->with_twins(nodes);
+  std::vector<int> extended_nodes = assembler_->with_partners(nodes);
   if (extended_nodes.size() == nodes.size())
     return std::nullopt;
   const int F = local.n_fields();
@@ -420,7 +420,7 @@ void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local
   // The twins of the system's own nodes join it (once: not the twins' twins, as the
   // Assembler's coupling blocks).
   if (!interfaces_.empty())
-    if (auto extended = with_twins(nodes, local))
+    if (auto extended = with_partners(nodes, local))
     {
       distribute_and_add(extended->first, extended->second);
       return;

@@ -176,11 +176,11 @@ private:
   void jacobian_seen();
   /// Whether the interfaces decided at x (and nothing has changed since). Collective.
   bool decided_at(const Vector &x) const;
-  /// With interfaces, a local system that holds a gap node holds its twin: `nodes` with the
-  /// twins it lacks appended and `local` extended alike (their rows and columns zero), or
-  /// nothing if it lacks none.
+  /// With interfaces, a local system that holds a contact node holds its partners (twins across
+  /// a gap, a pairing's row node and partners): `nodes` with the partners it lacks appended and
+  /// `local` extended alike (their rows and columns zero), or nothing if it lacks none.
   std::optional<std::pair<std::vector<int>, LocalSystem>>
-  with_twins(const std::vector<int> &nodes, const LocalSystem &local) const;
+  with_partners(const std::vector<int> &nodes, const LocalSystem &local) const;
   /// One assembly of f and/or J at the prepared state (with J and contact: combined rows).
   void assemble(Vector *f, Matrix *J);
   /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it, with
