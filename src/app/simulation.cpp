@@ -11,6 +11,10 @@
 #include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "base/stop_request.hpp"
+#include "contact/contact_interface.hpp"
+#include "contact/contact_pairs.hpp"
+#include "contact/interface_parameters.hpp"
+#include "contact/mortar_pairing.hpp"
 #include "io/checkpoint.hpp"
 #include "io/exodus_results_replay.hpp"
 #include "io/exodus_results_writer.hpp"
@@ -149,7 +153,32 @@ void Simulation::setup()
     cell_rank_ = params_.sublist("Mesh").get<std::string>("Partition") == "By Block"
                      ? partition_cells_by_block(mesh_, *comm_, where)
                      : partition_cells(mesh_, *comm_, where);
-    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_);
+  }
+  // The rows of the contact pairs between separately meshed bodies, fixed at set-up: their
+  // partners join the DofManager's graph and overlap before its maps are built.
+  std::vector<PairingRows> pairings;
+  if (layout_.contact)
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 contact pairs"));
+    const Teuchos::ParameterList &contact = params_.sublist("Mechanics").sublist("Contact");
+    for (const ContactPairInput &pair :
+         contact_pairs(contact, input_path_ + ": Kiln/Mechanics/Contact"))
+    {
+      const MortarPairing pairing(mesh_, pair.primary_side_set, pair.secondary_side_set,
+                                  pair.options, pair.where);
+      pairings.push_back(
+          {"pair \"" + pair.name + "\"", pairing.rows(), pair_interface_parameters(contact)});
+    }
+  }
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
+    std::vector<std::pair<int, int>> links;
+    for (const PairingRows &pairing : pairings)
+    {
+      const auto more = partner_links(pairing.rows);
+      links.insert(links.end(), more.begin(), more.end());
+    }
+    dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_, links);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 3 set-up"));
@@ -157,7 +186,7 @@ void Simulation::setup()
     const Material &material = materials.uniform_material();
     problem_ = Teuchos::rcp(new CoupledProblem(mesh_, *dofs_, material, params_.sublist("Thermal"),
                                                params_.sublist("Mechanics"), input_path_ + ": Kiln",
-                                               &materials));
+                                               &materials, pairings));
     problem_->set_log(out_);
     solved_ = FaultInjection::wrap(problem_, params_.sublist("Debug"), input_path_ + ": Kiln/Debug",
                                    *out_);

@@ -9,15 +9,22 @@
 
 namespace kiln
 {
-/// Per pair (a, b) of the ContactInterface and per axis d the kind claims (the normal n, from a
-/// to b, first; a kind may claim more), with the opening g = d.(u_b - u_a) and the multiplier
-/// that balances the pair's assembled rows, P = (R_b - R_a)/(2A) along d (d.u being an unknown
-/// of each node), a condition C(P, c g) = 0 decided by the kind (law()). An axis whose rows
-/// are combined has rows R_a + R_b - A C(P, c g) (the multiplier cancels; minus the row of b,
-/// which makes the row's diagonal the pair's stiffness) and A C(P, c g); the others keep
-/// theirs (P = 0: the sides move apart freely along d). The Jacobian is the exact generalized
-/// derivative of these rows: the element systems' rows are combined alike (combine_rows()),
-/// plus the terms of A C in g (add_terms()).
+/// Per pair (a, b) of a split gap's ContactInterface and per axis d the kind claims (the normal
+/// n, from a to b, first; a kind may claim more), with the opening g = d.(u_b - u_a) and the
+/// multiplier that balances the pair's assembled rows, P = (R_b - R_a)/(2A) along d (d.u being
+/// an unknown of each node), a condition C(P, c g) = 0 decided by the kind (law()). An axis
+/// whose rows are combined has rows R_a + R_b - A C(P, c g) (the multiplier cancels; minus the
+/// row of b, which makes the row's diagonal the pair's stiffness) and A C(P, c g); the others
+/// keep theirs (P = 0: the sides move apart freely along d). The Jacobian is the exact
+/// generalized derivative of these rows: the element systems' rows are combined alike
+/// (combine_rows()), plus the terms of A C in g (add_terms()).
+///
+/// The rows of a pairing (several partners k with weights w_jk; doc/contact.md, "Condensation
+/// with the dual basis"): axes claimed in node j's frame only, g = (d.n) g0 + d.(u_j - sum_k
+/// w_jk u_k), P = R_(j,d)/D_jj, rows (j, d) <- D_jj C and, for each partner k and each free
+/// axis q of k's frame (t its dual axes), (k, q) <- R_(k,q) + w_jk (d.t_(k,q)) (R_(j,d) -
+/// D_jj C). A partner shared with another interface is not supported (the rows of one would
+/// overwrite the other's).
 class CondensedPairs : public InterfaceStrategy
 {
 public:
@@ -56,7 +63,7 @@ protected:
   void claim_normals(NodalConstraints &constraints, const std::string &where);
   /// Throws InputError (naming `where`) unless the pair's two nodes have the same constrained
   /// directions.
-  void check_alike(const NodalConstraints &constraints, const ContactInterface::Pair &pair,
+  void check_alike(const NodalConstraints &constraints, const ContactInterface::Row &pair,
                    const std::string &where);
   /// Claims every axis the pair's nodes leave free: the normal, then the coordinate axes, as
   /// NodalConstraints::close() completes a frame. Throws InputError (naming `where`) when the
@@ -74,8 +81,19 @@ protected:
   const NodalConstraints &constraints_;
 
 private:
+  using Row = ContactInterface::Row;
   /// The direction d of axis i (the pair's normal for its first).
   Point direction(std::size_t axis) const;
+  /// The rows of a pairing (not a split gap): P = R_(j,d)/D_jj, the rows of j's partners
+  /// moved as the class comment says.
+  void decide_rows(const Assembler &assembler, const Vector &r, Vector &R,
+                   const std::function<Point(int node)> &u);
+  void combine_row_rows(const std::vector<int> &nodes, LocalSystem &local) const;
+  void add_row_terms(Assembler &assembler) const;
+  /// Keeps the figures of owned row `row` (the owned_index-th) at the last decision.
+  void record(std::size_t owned_index, int row, bool shut, double P_normal, double cg_normal);
+  /// The direction axis of row k holds, at its twin point.
+  HeldDirection held_direction(int k, std::size_t axis) const;
 
   int u_slot_;
   std::vector<Axis> axes_;              ///< by pair, the normal first

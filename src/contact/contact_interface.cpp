@@ -1,35 +1,83 @@
 #include "contact/contact_interface.hpp"
 
+#include "base/errors.hpp"
+
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace kiln
 {
 ContactInterface::ContactInterface(const Mesh &mesh, const DofManager &dofs, const int gap,
                                    const double modulus, const double scale)
-    : mesh_(mesh), gap_(gap), offsets_(mesh.n_nodes() + 1, 0)
+    : mesh_(mesh), gap_(gap), name_("gap side set " + std::to_string(mesh.gap_side_sets[gap]))
 {
-  const int rank = dofs.owned_dof_map()->getComm()->getRank();
   for (const GapPair &gap_pair : mesh.gap_pairs)
   {
     if (gap_pair.gap != gap)
       continue;
-    Pair pair;
-    pair.a = gap_pair.node_a;
-    pair.b = gap_pair.node_b;
-    pair.area = gap_pair.area;
-    pair.c = scale * modulus / std::sqrt(gap_pair.area);
-    pair.normal = gap_pair.normal;
-    ++offsets_[pair.a + 1];
-    if (dofs.node_owner()[pair.b] == rank)
-      owned_pairs_.push_back(static_cast<int>(pairs_.size()));
-    pairs_.push_back(pair);
+    Row row;
+    row.node = gap_pair.node_b;
+    row.partners = {gap_pair.node_a};
+    row.weights = {1.0};
+    row.area = gap_pair.area;
+    row.c = scale * modulus / std::sqrt(gap_pair.area);
+    row.normal = gap_pair.normal;
+    rows_.push_back(std::move(row));
   }
-  for (int n = 0; n < mesh.n_nodes(); ++n)
+  index(dofs);
+}
+
+ContactInterface::ContactInterface(const Mesh &mesh, const DofManager &dofs,
+                                   std::vector<ContactRow> rows, const double modulus,
+                                   const double scale, std::string name)
+    : mesh_(mesh), name_(std::move(name))
+{
+  for (ContactRow &given : rows)
+  {
+    KILN_ASSERT(given.area > 0.0 && given.partners.size() == given.weights.size() &&
+                    !given.partners.empty(),
+                "a row of " << name_ << " at node " << given.node << " is malformed");
+    Row row;
+    static_cast<ContactRow &>(row) = std::move(given);
+    row.c = scale * modulus / std::sqrt(row.area);
+    rows_.push_back(std::move(row));
+  }
+  index(dofs);
+}
+
+void ContactInterface::index(const DofManager &dofs)
+{
+  const int rank = dofs.owned_dof_map()->getComm()->getRank();
+  const int n_nodes = mesh_.n_nodes();
+  offsets_.assign(n_nodes + 1, 0);
+  row_of_node_.assign(n_nodes, -1);
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+  {
+    const Row &row = rows_[k];
+    KILN_ASSERT(split() || row_of_node_[row.node] < 0,
+                "node " << row.node << " has two rows in " << name_);
+    row_of_node_[row.node] = static_cast<int>(k);
+    for (const int p : row.partners)
+      ++offsets_[p + 1];
+    if (dofs.node_owner()[row.node] == rank)
+      owned_rows_.push_back(static_cast<int>(k));
+  }
+  for (int n = 0; n < n_nodes; ++n)
     offsets_[n + 1] += offsets_[n];
-  pairs_of_a_.resize(pairs_.size());
+  rows_of_partner_.resize(offsets_.back());
   std::vector<int> next(offsets_.begin(), offsets_.end() - 1);
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    pairs_of_a_[next[pairs_[k].a]++] = static_cast<int>(k);
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+    for (const int p : rows_[k].partners)
+      rows_of_partner_[next[p]++] = static_cast<int>(k);
+}
+
+std::vector<std::pair<int, int>> partner_links(const std::vector<ContactRow> &rows)
+{
+  std::vector<std::pair<int, int>> links;
+  for (const ContactRow &row : rows)
+    for (const int k : row.partners)
+      links.emplace_back(row.node, k);
+  return links;
 }
 } // namespace kiln

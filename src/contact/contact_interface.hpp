@@ -1,50 +1,75 @@
 #pragma once
-/// The pairing across the gap: the node pairs, their areas, normals and owners.
+/// The pairing across the gap: its rows (secondary node, partners and weights, area, normal,
+/// initial gap), their complementarity constants and owners.
+#include "contact/contact_row.hpp"
 #include "discretization/dof_manager.hpp"
 #include "mesh/mesh.hpp"
 
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace kiln
 {
-/// The pairs (a, b) of one gap (Mesh::gap_pairs whose `gap` it is), with the normal n from a
-/// to b and the area A (∫φ_a over side a's gap faces). The pair belongs to the rank that owns
-/// node b. The interface kinds (InterfaceStrategy) claim their axes in the nodes' frames and
-/// decide the pairs' conditions.
+/// The rows a kind condenses into (doc/contact.md, "Separately meshed bodies (issue 30):
+/// design", "The shape"). Two sources:
+/// - a split gap (Mesh::gap_pairs whose `gap` it is): per pair (a, b) the row of node b with
+///   the one partner a of weight 1, D = A (∫φ_a over side a's gap faces), g0 = 0 and n from a
+///   to b; its kinds keep the symmetric multiplier (R_b - R_a)/(2A) (split());
+/// - a list of rows (a mortar pairing of two side sets): several partners, a geometric g0;
+///   the multiplier of row j is R_(j,n)/D_jj.
+/// A row belongs to the rank that owns its node j. The interface kinds (InterfaceStrategy)
+/// claim their axes in the nodes' frames and decide the rows' conditions.
 class ContactInterface
 {
 public:
-  struct Pair
+  struct Row : ContactRow
   {
-    int a = -1, b = -1; ///< mesh nodes
-    double area = 0.0;  ///< A [m^2]
-    double c = 0.0;     ///< the complementarity constant c = s (lambda + 2G)/sqrt(A) [Pa/m]
-    Point normal{};     ///< n, from a to b
+    double c = 0.0; ///< the complementarity constant c = s (lambda + 2G)/sqrt(D_jj) [Pa/m]
+    /// The split gap's node a (the one partner); node b is `node`.
+    int a() const { return partners.front(); }
   };
 
-  /// The pairs of gap `gap` (an index into Mesh::gap_side_sets). `modulus` is lambda + 2G
+  /// The rows of gap `gap` (an index into Mesh::gap_side_sets). `modulus` is lambda + 2G
   /// [Pa], `scale` the input's "Complementarity Scale".
   ContactInterface(const Mesh &mesh, const DofManager &dofs, int gap, double modulus, double scale);
+  /// The rows of a pairing (e.g. MortarPairing's), named `name` in messages. The DofManager
+  /// must have been given their partner_links().
+  ContactInterface(const Mesh &mesh, const DofManager &dofs, std::vector<ContactRow> rows,
+                   double modulus, double scale, std::string name);
 
   const Mesh &mesh() const { return mesh_; }
-  const std::vector<Pair> &pairs() const { return pairs_; }
-  int n_pairs() const { return static_cast<int>(pairs_.size()); }
-  /// The pairs whose node b this rank owns, increasing.
-  const std::vector<int> &owned_pairs() const { return owned_pairs_; }
+  const std::vector<Row> &rows() const { return rows_; }
+  int n_rows() const { return static_cast<int>(rows_.size()); }
+  /// The rows whose node j this rank owns, increasing.
+  const std::vector<int> &owned_rows() const { return owned_rows_; }
+  /// The gap side set index of a split gap, or -1 for a pairing's rows.
   int gap() const { return gap_; }
-  /// The pairs whose node a is `node` (several where gaps cross), as [begin, end).
-  std::pair<const int *, const int *> pairs_of_node_a(const int node) const
+  /// Whether the rows are a split gap's (one partner, the symmetric multiplier).
+  bool split() const { return gap_ >= 0; }
+  /// The pairing's name in messages (the split gap's: "gap side set <id>").
+  const std::string &name() const { return name_; }
+  /// The rows with `node` among their partners (several where gaps cross), as [begin, end).
+  std::pair<const int *, const int *> rows_of_partner(const int node) const
   {
-    return {pairs_of_a_.data() + offsets_[node], pairs_of_a_.data() + offsets_[node + 1]};
+    return {rows_of_partner_.data() + offsets_[node], rows_of_partner_.data() + offsets_[node + 1]};
   }
+  /// The row whose node j is `node`, or -1.
+  int row_of_node(const int node) const { return row_of_node_[node]; }
 
 private:
+  void index(const DofManager &dofs);
+
   const Mesh &mesh_;
-  int gap_;
-  std::vector<Pair> pairs_;
-  std::vector<int> owned_pairs_;
-  std::vector<int> offsets_;    ///< per mesh node, into pairs_of_a_ (CSR)
-  std::vector<int> pairs_of_a_; ///< the pairs of each node a, increasing
+  int gap_ = -1;
+  std::string name_;
+  std::vector<Row> rows_;
+  std::vector<int> owned_rows_;
+  std::vector<int> offsets_;         ///< per mesh node, into rows_of_partner_ (CSR)
+  std::vector<int> rows_of_partner_; ///< the rows of each partner node, increasing
+  std::vector<int> row_of_node_;     ///< per mesh node, its row as node j, or -1
 };
+
+/// The links (j, k) of rows to their partners, for DofManager (which makes both ways).
+std::vector<std::pair<int, int>> partner_links(const std::vector<ContactRow> &rows);
 } // namespace kiln

@@ -66,6 +66,14 @@ void check_kind_parameters(const Teuchos::ParameterList &list, const std::string
 }
 } // namespace
 
+Teuchos::ParameterList pair_interface_parameters(const Teuchos::ParameterList &contact)
+{
+  Teuchos::ParameterList merged(contact);
+  merged.remove("Gaps", false);
+  merged.remove("Pairs", false);
+  return merged;
+}
+
 Teuchos::ParameterList gap_interface_parameters(const Teuchos::ParameterList &contact,
                                                 const int side_set)
 {

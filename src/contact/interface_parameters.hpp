@@ -19,4 +19,7 @@ void check_interface_parameters(const Teuchos::ParameterList &contact,
 /// by those its "Gaps" entry for that side set gives.
 Teuchos::ParameterList gap_interface_parameters(const Teuchos::ParameterList &contact,
                                                 int side_set);
+/// The parameters of every pair of Contact/Pairs: those of `contact` (validated), without its
+/// "Gaps" and "Pairs".
+Teuchos::ParameterList pair_interface_parameters(const Teuchos::ParameterList &contact);
 } // namespace kiln

@@ -67,12 +67,15 @@ public:
   virtual void resume() {}
 
   // --- What it holds and what it shows -----------------------------------------------------
-  /// A direction along which a pair (mesh nodes a and b) holds the two sides together.
+  /// A direction along which a pair (mesh nodes a and b) holds the two sides together, acting
+  /// at point `at` (node a's position; for a pairing's row, a its first partner, b its node j
+  /// and `at` its twin point sum_k w_jk X_k).
   struct HeldDirection
   {
     int a = -1;
     int b = -1;
     Point direction{};
+    Point at{};
   };
   /// This rank's share (the pairs whose node b it owns): with `all`, every direction its pairs
   /// can hold (the set-up's count of free motions); else those they hold at the last decision.

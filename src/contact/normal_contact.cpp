@@ -29,15 +29,14 @@ NormalContact::NormalContact(const ContactInterface &interface, const DofManager
       function_(
           complementarity_functions().create(contact.get<std::string>("Complementarity Function"))),
       fallback_(complementarity_functions().create("Fischer-Burmeister")),
-      monitor_(dofs.owned_dof_map()->getComm(), interface.n_pairs(),
-               static_cast<int>(interface.owned_pairs().size()))
+      monitor_(dofs.owned_dof_map()->getComm(), interface.n_rows(),
+               static_cast<int>(interface.owned_rows().size()))
 {
   claim_normals(constraints, where);
   finish_claims();
   const Mesh &mesh = interface.mesh();
-  if (mesh.gap_side_sets.size() > 1)
-    monitor_.set_gap_name(" (gap side set " + std::to_string(mesh.gap_side_sets[interface.gap()]) +
-                          ")");
+  if (mesh.gap_side_sets.size() > 1 || !interface.split())
+    monitor_.set_gap_name(" (" + interface.name() + ")");
 }
 
 ComplementarityFunction::Value NormalContact::law(bool, const double P, const double cg) const

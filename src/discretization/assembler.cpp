@@ -13,9 +13,9 @@ namespace kiln
 namespace internal
 {
 /// The coupling blocks: a cell's 8 nodes, and a gap face's nodes (Assembler::gap_face_nodes);
-/// with Couplings::twins, each block also holds the twins of its gap nodes. Every unknown of a
-/// block couples with every other one. Returns, for each node n with row[n] >= 0, the sorted nodes
-/// it couples with, at index row[n].
+/// with Couplings::partners, each block also holds the partners of its contact nodes. Every unknown
+/// of a block couples with every other one. Returns, for each node n with row[n] >= 0, the sorted
+/// nodes it couples with, at index row[n].
 std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const Mesh &mesh,
                                              const std::vector<int> &row,
                                              const std::vector<char> &use_cell,
@@ -32,7 +32,7 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
     if (use_cell[c])
     {
       const Span<const int> nodes = mesh.cell_nodes(c);
-      add_block(assembler.with_twins(std::vector<int>(nodes.begin(), nodes.end())));
+      add_block(assembler.with_partners(std::vector<int>(nodes.begin(), nodes.end())));
     }
   for (std::size_t k = 0; k < use_face.size(); ++k)
     if (use_face[k])
@@ -420,14 +420,14 @@ std::vector<LO> Assembler::node_lids(const std::vector<int> &nodes) const
   return lids;
 }
 
-std::vector<int> Assembler::with_twins(std::vector<int> nodes) const
+std::vector<int> Assembler::with_partners(std::vector<int> nodes) const
 {
-  if (!couplings_.twins)
+  if (!couplings_.partners)
     return nodes;
   const std::size_t n = nodes.size();
   for (std::size_t i = 0; i < n; ++i)
   {
-    const auto [begin, end] = dofs_.twins(nodes[i]);
+    const auto [begin, end] = dofs_.partners(nodes[i]);
     for (const int *t = begin; t != end; ++t)
       if (std::find(nodes.begin(), nodes.end(), *t) == nodes.end())
         nodes.push_back(*t);
@@ -438,7 +438,7 @@ std::vector<int> Assembler::with_twins(std::vector<int> nodes) const
 std::vector<int> Assembler::gap_face_nodes(const int gap_face) const
 {
   KILN_ASSERT(couplings_.gap_face_nodes, "gap_face_nodes() without gap-face couplings");
-  return with_twins(couplings_.gap_face_nodes(gap_face));
+  return with_partners(couplings_.gap_face_nodes(gap_face));
 }
 
 std::vector<LO> Assembler::gap_face_lids(const int gap_face) const

@@ -4,11 +4,12 @@
 /// The sparsity graph is built once from coupling blocks: every unknown of a block's nodes
 /// couples with every other (but the temperature rows' displacement columns, unless the
 /// physics says a heat term reads u). The blocks are the cells and, as the physics says
-/// (Couplings), the nodes of each gap face's terms; with `twins`, every block also holds the
-/// twins of its gap nodes. A rank assembles its own cells and the gap faces whose side-a cell
-/// it owns: the residual into an overlap vector exported (ADD) to the owned one; the
-/// Jacobian's owned rows straight into the owned Jacobian, the rows of other ranks' nodes into
-/// a ghost matrix exported (ADD) to it, so no second copy of the matrix is kept.
+/// (Couplings), the nodes of each gap face's terms; with `partners`, every block also holds the
+/// partners of its contact nodes (twins across a gap, a pairing's rows). A rank assembles its own
+/// cells and the gap faces whose side-a cell it owns: the residual into an overlap vector exported
+/// (ADD) to the owned one; the Jacobian's owned rows straight into the owned Jacobian, the rows of
+/// other ranks' nodes into a ghost matrix exported (ADD) to it, so no second copy of the matrix is
+/// kept.
 #include "discretization/dof_manager.hpp"
 #include "discretization/local_system.hpp"
 #include "mesh/mesh.hpp"
@@ -28,8 +29,10 @@ struct Couplings
   /// The nodes of gap face k's terms; by default its 4 side-a nodes (hex_face_nodes order)
   /// and their 4 twins. An empty function: no gap-face terms.
   std::function<std::vector<int>(int gap_face)> gap_face_nodes;
-  /// Every block that holds a gap node also holds its twin (contact mixes a pair's rows).
-  bool twins = false;
+  /// Every block that holds a contact node also holds its partners (DofManager::partners():
+  /// a split gap's twins, a pairing's row node and partners, both ways; contact mixes their
+  /// rows).
+  bool partners = false;
   /// Whether the temperature rows have displacement columns (terms of the heat equation that
   /// depend on u, such as the contact-dependent gap conductance). Without them the node
   /// blocks store 13 of 16 entries (T-u left out), and a term that puts a nonzero there is a
@@ -72,13 +75,13 @@ public:
   std::vector<LO> cell_lids(int cell) const;
   /// Overlap local ids of the unknowns of a cell face's 4 nodes (hex_face_nodes order).
   std::vector<LO> face_lids(int cell, int face) const;
-  /// The nodes of a gap face's block: Couplings::gap_face_nodes, then with_twins().
+  /// The nodes of a gap face's block: Couplings::gap_face_nodes, then with_partners().
   std::vector<int> gap_face_nodes(int gap_face) const;
   /// Overlap local ids of gap_face_nodes() (node-major).
   std::vector<LO> gap_face_lids(int gap_face) const;
-  /// `nodes` followed by the twins of its gap nodes that it lacks (with Couplings::twins;
+  /// `nodes` followed by the partners of its nodes that it lacks (with Couplings::partners;
   /// else as is).
-  std::vector<int> with_twins(std::vector<int> nodes) const;
+  std::vector<int> with_partners(std::vector<int> nodes) const;
   /// Overlap local ids of the unknowns of `nodes` (node-major, n_node_fields each).
   std::vector<LO> node_lids(const std::vector<int> &nodes) const;
   /// Overlap local id of an unknown.

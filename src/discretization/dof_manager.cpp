@@ -17,7 +17,8 @@ Teuchos::RCP<const Map> make_map(const std::vector<GO> &gids,
 }
 
 DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
-                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const DofLayout layout)
+                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const DofLayout layout,
+                       const std::vector<std::pair<int, int>> &partner_links)
     : layout_(layout), n_node_fields_(layout.n_node_fields())
 {
   const int rank = comm->getRank();
@@ -43,30 +44,40 @@ DofManager::DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
         for (const int n : mesh.cell_nodes(face.cell_b))
           touched[n] = 1;
     }
-  twin_offsets_.assign(mesh.n_nodes() + 1, 0);
+  // The links (j, k): a split gap's (b, a), then the pairings' rows'.
+  std::vector<std::pair<int, int>> links;
+  links.reserve(mesh.gap_pairs.size() + partner_links.size());
   for (const GapPair &p : mesh.gap_pairs)
+    links.emplace_back(p.node_b, p.node_a);
+  links.insert(links.end(), partner_links.begin(), partner_links.end());
+  twin_offsets_.assign(mesh.n_nodes() + 1, 0);
+  for (const auto &[j, k] : links)
   {
-    ++twin_offsets_[p.node_a + 1];
-    ++twin_offsets_[p.node_b + 1];
+    ++twin_offsets_[k + 1];
+    ++twin_offsets_[j + 1];
   }
   for (int n = 0; n < mesh.n_nodes(); ++n)
     twin_offsets_[n + 1] += twin_offsets_[n];
   twin_nodes_.resize(twin_offsets_.back());
   {
     std::vector<int> next(twin_offsets_.begin(), twin_offsets_.end() - 1);
-    for (const GapPair &p : mesh.gap_pairs)
+    for (const auto &[j, k] : links)
     {
-      twin_nodes_[next[p.node_a]++] = p.node_b;
-      twin_nodes_[next[p.node_b]++] = p.node_a;
+      twin_nodes_[next[k]++] = j;
+      twin_nodes_[next[j]++] = k;
     }
   }
-  // With contact, a local system that holds a gap node holds its twins too.
+  // With contact, a local system that holds a gap node holds its twins too; the overlap holds
+  // the whole row of a touched node j or partner k (a row is decided from all its partners).
   if (layout_.contact)
   {
     const std::vector<char> touched_before = touched;
-    for (const GapPair &p : mesh.gap_pairs)
-      if (touched_before[p.node_a] || touched_before[p.node_b])
-        touched[p.node_a] = touched[p.node_b] = 1;
+    for (const auto &[j, k] : links)
+      if (touched_before[j] || touched_before[k])
+        touched[j] = touched[k] = 1;
+    for (const auto &[j, k] : partner_links)
+      if (touched[j])
+        touched[k] = 1;
   }
   for (int n = 0; n < mesh.n_nodes(); ++n)
   {

@@ -8,7 +8,8 @@
 ///                    displacement x, y, z (the fields the layout has: DofLayout::slot)
 /// Owned maps hold this rank's unknowns; overlap maps add those of every node
 /// touched by its cells and by the gap faces whose side-a cell it owns, and (with
-/// contact) the twin of every touched gap node, for assembly and for gathering.
+/// contact) the twin of every touched gap node, for assembly and for gathering: with a
+/// pairing's rows, a touched node j or partner k brings the whole row (j and all its partners).
 #include "mesh/mesh.hpp"
 
 #include <Teuchos_Comm.hpp>
@@ -63,8 +64,12 @@ struct DofLayout
 class DofManager
 {
 public:
+  /// `partner_links`: the links (j, k) of a pairing's rows, node j to its partner k
+  /// (partner_links() of contact/contact_interface.hpp), besides the split gaps' pairs
+  /// (Mesh::gap_pairs): with contact, a node's partners are its twins, both ways.
   DofManager(const Mesh &mesh, const std::vector<int> &cell_rank,
-             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, DofLayout layout = {});
+             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, DofLayout layout = {},
+             const std::vector<std::pair<int, int>> &partner_links = {});
 
   const DofLayout &layout() const { return layout_; }
   int n_node_fields() const { return n_node_fields_; }
@@ -81,9 +86,10 @@ public:
   {
     return static_cast<GO>(n_node_fields_) * node + slot;
   }
-  /// The twins of node n: the nodes it is paired with across the gaps (one on a single gap,
-  /// more where gaps cross; none off the gaps), as [begin, end).
-  std::pair<const int *, const int *> twins(const int node) const
+  /// The partners of node n: its twins across the gaps (one on a single gap,
+  /// more where gaps cross; none off the gaps) and its partners in the rows of pairings (a
+  /// row's node j and its partners k, both ways), as [begin, end).
+  std::pair<const int *, const int *> partners(const int node) const
   {
     return {twin_nodes_.data() + twin_offsets_[node], twin_nodes_.data() + twin_offsets_[node + 1]};
   }

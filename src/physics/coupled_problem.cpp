@@ -22,7 +22,8 @@ namespace kiln
 CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                                const Teuchos::ParameterList &thermal,
                                const Teuchos::ParameterList &mechanics, const std::string &where,
-                               const MaterialMap *materials)
+                               const MaterialMap *materials,
+                               const std::vector<PairingRows> &pairings)
     : mesh_(mesh), dofs_(dofs), slots_{dofs.layout().slot(Field::T), dofs.layout().slot(Field::ux)},
       constraints_(mesh, dofs)
 {
@@ -53,7 +54,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       pairings_.push_back(
           std::make_unique<ContactInterface>(mesh, dofs, static_cast<int>(g), modulus,
                                              parameters.get<double>("Complementarity Scale")));
-      if (pairings_.back()->n_pairs() == 0)
+      if (pairings_.back()->n_rows() == 0)
       {
         pairings_.pop_back();
         continue;
@@ -61,6 +62,53 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       interfaces_.push_back(interface_kinds().create(parameters.get<std::string>("Kind"),
                                                      *pairings_.back(), dofs, constraints_,
                                                      parameters, where + "/Mechanics/Contact"));
+    }
+  // One interface per pairing of two side sets (rows with weighted partners), after the split
+  // gaps. A pairing's nodes (its rows' and their partners) are on no other interface: its rows
+  // are written whole, and another interface's would overwrite them (doc/contact.md).
+  if (dofs.layout().contact && mechanics_)
+  {
+    std::vector<std::string> owner_name; // per interface so far
+    std::vector<int> first(static_cast<std::size_t>(mesh.n_nodes()), -1);
+    const auto visit =
+        [&](const std::vector<ContactRow> &rows, const std::string &name, const bool split)
+    {
+      const int s = static_cast<int>(owner_name.size());
+      owner_name.push_back(name);
+      for (const ContactRow &row : rows)
+        for (std::size_t i = 0; i <= row.partners.size(); ++i)
+        {
+          const int node = i == 0 ? row.node : row.partners[i - 1];
+          int &f = first[node];
+          if (f < 0)
+            f = s;
+          const Point &x = mesh.coordinates[node];
+          KILN_CHECK_INPUT(f == s || (split && f < static_cast<int>(pairings_.size())),
+                           where + "/Mechanics/Contact",
+                           "node " << node << " at (" << x[0] << ", " << x[1] << ", " << x[2]
+                                   << ") is on " << owner_name[f] << " and on " << name
+                                   << ": a node of a pair between separately meshed bodies "
+                                      "cannot be on another pair or gap (the rows of one would "
+                                      "overwrite the other's); give the pairs and gaps side sets "
+                                      "without common nodes");
+        }
+    };
+    for (const auto &gap : pairings_)
+      visit(std::vector<ContactRow>(gap->rows().begin(), gap->rows().end()), gap->name(), true);
+    for (const PairingRows &pairing : pairings)
+      visit(pairing.rows, pairing.name, false);
+  }
+  if (dofs.layout().contact && mechanics_)
+    for (const PairingRows &pairing : pairings)
+    {
+      if (pairing.rows.empty())
+        continue;
+      pairings_.push_back(std::make_unique<ContactInterface>(
+          mesh, dofs, pairing.rows, modulus,
+          pairing.parameters.get<double>("Complementarity Scale"), pairing.name));
+      interfaces_.push_back(interface_kinds().create(
+          pairing.parameters.get<std::string>("Kind"), *pairings_.back(), dofs, constraints_,
+          pairing.parameters, where + "/Mechanics/Contact (" + pairing.name + ")"));
     }
   const double conductivity = thermal_ ? thermal_->conductivity_scale() : 0.0;
   constraints_.close(conductivity, modulus);
@@ -73,7 +121,7 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   if (gap != nullptr)
     couplings.gap_face_nodes = [&mesh, gap](const int k)
     { return gap->nodes(mesh, mesh.gap_faces[k]); };
-  couplings.twins = !interfaces_.empty();
+  couplings.partners = !interfaces_.empty();
   // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
@@ -352,9 +400,9 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
 }
 
 std::optional<std::pair<std::vector<int>, LocalSystem>>
-CoupledProblem::with_twins(const std::vector<int> &nodes, const LocalSystem &local) const
+CoupledProblem::with_partners(const std::vector<int> &nodes, const LocalSystem &local) const
 {
-  std::vector<int> extended_nodes = assembler_->with_twins(nodes);
+  std::vector<int> extended_nodes = assembler_->with_partners(nodes);
   if (extended_nodes.size() == nodes.size())
     return std::nullopt;
   const int F = local.n_fields();
@@ -376,7 +424,7 @@ void CoupledProblem::add_local(const std::vector<int> &nodes, LocalSystem &local
   // The twins of the system's own nodes join it (once: not the twins' twins, as the
   // Assembler's coupling blocks).
   if (!interfaces_.empty())
-    if (auto extended = with_twins(nodes, local))
+    if (auto extended = with_partners(nodes, local))
     {
       distribute_and_add(extended->first, extended->second);
       return;
@@ -513,7 +561,7 @@ int CoupledProblem::n_pairs() const
 {
   int n = 0;
   for (const auto &pairing : pairings_)
-    n += pairing->n_pairs();
+    n += pairing->n_rows();
   return n;
 }
 

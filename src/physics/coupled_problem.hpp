@@ -4,6 +4,7 @@
 /// stepper.
 #include "contact/contact_interface.hpp"
 #include "contact/interface_strategy.hpp"
+#include "contact/pairing_rows.hpp"
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -47,10 +48,13 @@ public:
   /// `where` names the root in messages ("in.xml: Kiln"). With `materials` (read during
   /// the construction), the mechanics takes each block's material and model (MechanicalPhysics)
   /// and, if a model has state, the problem makes its QuadratureState; the heat equation and the
-  /// scales take `material`.
+  /// scales take `material`. `pairings`: the rows of the pairings of two side sets, each an
+  /// interface of its own Kind besides the split gaps' (the DofManager was built with their
+  /// partner_links()).
   CoupledProblem(const Mesh &mesh, const DofManager &dofs, const Material &material,
                  const Teuchos::ParameterList &thermal, const Teuchos::ParameterList &mechanics,
-                 const std::string &where, const MaterialMap *materials = nullptr);
+                 const std::string &where, const MaterialMap *materials = nullptr,
+                 const std::vector<PairingRows> &pairings = {});
   ~CoupledProblem() override;
 
   Teuchos::RCP<const Map> solution_map() const override { return dofs_.owned_dof_map(); }
@@ -183,11 +187,11 @@ private:
   void jacobian_seen();
   /// Whether the interfaces decided at x (and nothing has changed since). Collective.
   bool decided_at(const Vector &x) const;
-  /// With interfaces, a local system that holds a gap node holds its twin: `nodes` with the
-  /// twins it lacks appended and `local` extended alike (their rows and columns zero), or
-  /// nothing if it lacks none.
+  /// With interfaces, a local system that holds a contact node holds its partners (twins across
+  /// a gap, a pairing's row node and partners): `nodes` with the partners it lacks appended and
+  /// `local` extended alike (their rows and columns zero), or nothing if it lacks none.
   std::optional<std::pair<std::vector<int>, LocalSystem>>
-  with_twins(const std::vector<int> &nodes, const LocalSystem &local) const;
+  with_partners(const std::vector<int> &nodes, const LocalSystem &local) const;
   /// One assembly of f and/or J at the prepared state (with J and contact: combined rows).
   void assemble(Vector *f, Matrix *J);
   /// Distributes a local system (nodes[i]: the mesh node of local node i) and adds it, with
@@ -203,7 +207,8 @@ private:
   NodalConstraints constraints_;
   std::optional<ThermalPhysics> thermal_;
   std::optional<MechanicalPhysics> mechanics_;
-  std::vector<std::unique_ptr<ContactInterface>> pairings_; ///< per gap with pairs
+  std::vector<std::unique_ptr<ContactInterface>>
+      pairings_; ///< per gap with pairs, then per pairing
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;

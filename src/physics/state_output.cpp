@@ -116,6 +116,8 @@ StateOutput::ContactOutput StateOutput::contact_output() const
         out.traction[n] = more.traction[n];
         out.active[n] = more.active[n];
       }
+    if (!strategy->interface().split())
+      continue; // a pairing's rows: not in Mesh::gap_pairs
     const std::vector<int> &of_gap = mesh_pairs[strategy->interface().gap()];
     for (std::size_t k = 0; k < of_gap.size(); ++k)
     {

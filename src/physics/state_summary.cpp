@@ -87,13 +87,15 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
   for (const InterfaceStrategy *contact : interfaces)
   {
     const ContactInterface &interface = contact->interface();
+    if (!interface.split())
+      continue; // a pairing's rows: per pair output is a later step
     const std::size_t g = static_cast<std::size_t>(interface.gap());
-    n_pairs[g] += interface.n_pairs();
-    const auto &owned = interface.owned_pairs();
+    n_pairs[g] += interface.n_rows();
+    const auto &owned = interface.owned_rows();
     for (std::size_t i = 0; i < owned.size(); ++i)
     {
-      const ContactInterface::Pair &pair = interface.pairs()[owned[i]];
-      const double opening = gap_opening(pair.normal, fields.u(pair.a), fields.u(pair.b));
+      const ContactInterface::Row &pair = interface.rows()[owned[i]];
+      const double opening = gap_opening(pair.normal, fields.u(pair.a()), fields.u(pair.node));
       extremes[2 * g] = std::max(extremes[2 * g], opening);
       extremes[2 * g + 1] = std::max(extremes[2 * g + 1], -opening);
       if (contact->active()[i])

@@ -86,10 +86,18 @@ std::vector<kiln::Point> exact_displacements(const kiln::Mesh &mesh, const Unifo
 {
   using kiln::Point;
   const int n_nodes = mesh.n_nodes();
-  Point centre{};
+  // The box's centre: the middle of the nodes' bounding box (a rotated box's is symmetric
+  // about its centre; the mean of the nodes is not where the halves are meshed apart).
+  Point low = mesh.coordinates.front(), high = low;
   for (const Point &x : mesh.coordinates)
     for (int d = 0; d < 3; ++d)
-      centre[d] += x[d] / n_nodes;
+    {
+      low[d] = std::min(low[d], x[d]);
+      high[d] = std::max(high[d], x[d]);
+    }
+  Point centre{};
+  for (int d = 0; d < 3; ++d)
+    centre[d] = 0.5 * (low[d] + high[d]);
   const auto box_frame = [&](const int n)
   {
     Point xp{};

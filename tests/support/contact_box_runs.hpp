@@ -37,8 +37,9 @@ struct Run
   double seconds = 0.0;
 };
 
-/// Runs a deck (collective), prints its run time, expects a gap.
-Run run(const Teuchos::ParameterList &input, const std::string &label);
+/// Runs a deck (collective), prints its run time, expects a split gap (with `split_gap`; the
+/// halves meshed apart have none).
+Run run(const Teuchos::ParameterList &input, const std::string &label, bool split_gap = true);
 
 /// One output step of BASE.h5 (rank 0 reads it).
 struct OutputStep

@@ -115,11 +115,17 @@ std::array<double, 3> frame_components(const std::array<kiln::Point, 3> &t, cons
 double jacobian_error(const ProblemFixture &s, kiln::CoupledProblem &problem,
                       kiln::NonlinearProblem::Vector &x, const int n_active)
 {
+  return jacobian_error(s.dofs, problem, x, n_active);
+}
+
+double jacobian_error(const kiln::DofManager &dofs, kiln::CoupledProblem &problem,
+                      kiln::NonlinearProblem::Vector &x, const int n_active)
+{
   using Vector = kiln::NonlinearProblem::Vector;
   using Matrix = kiln::NonlinearProblem::Matrix;
   using kiln::LO;
   const auto map = problem.solution_map();
-  const GO n_global = s.dofs.n_global_dofs();
+  const GO n_global = dofs.n_global_dofs();
   Vector f(map);
   Matrix J(problem.jacobian_graph());
   problem.evaluate(x, &f, &J);
@@ -148,7 +154,7 @@ double jacobian_error(const ProblemFixture &s, kiln::CoupledProblem &problem,
     }
   }
   double global = 0.0;
-  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global));
+  Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_MAX, worst, Teuchos::outArg(global));
   return global;
 }
 

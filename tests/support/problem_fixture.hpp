@@ -64,6 +64,9 @@ std::array<double, 3> frame_components(const std::array<kiln::Point, 3> &t, cons
 /// every perturbed state (gtest expectations). Collective.
 double jacobian_error(const struct ProblemFixture &s, kiln::CoupledProblem &problem,
                       kiln::NonlinearProblem::Vector &x, int n_active);
+/// The same for a problem on the unknowns `dofs` (any mesh and partition).
+double jacobian_error(const kiln::DofManager &dofs, kiln::CoupledProblem &problem,
+                      kiln::NonlinearProblem::Vector &x, int n_active);
 
 /// The box split at several of its side sets 10, 11, 12 (its mid-planes x, y, z = 0), which
 /// cross.

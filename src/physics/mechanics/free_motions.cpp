@@ -129,7 +129,7 @@ FreeMotions::FreeMotions(const Mesh &mesh, const DofManager &dofs,
         conditions_.add_direction(body_[n], mesh.coordinates[n], d.n);
   finder_ = conditions_;
   for (const HeldDirection &h : held)
-    finder_.add_gap(body_[h.a], body_[h.b], mesh.coordinates[h.a], h.direction);
+    finder_.add_gap(body_[h.a], body_[h.b], h.at, h.direction);
   for (const RigidMotion &m : finder_.find(*dofs.owned_dof_map()->getComm()))
     motions_.push_back(unit_motion(m));
 }
@@ -146,7 +146,7 @@ std::string FreeMotions::more_free_with(const std::vector<HeldDirection> &held) 
 {
   FreeMotionFinder finder = conditions_;
   for (const HeldDirection &h : held)
-    finder.add_gap(body_[h.a], body_[h.b], mesh_.coordinates[h.a], h.direction);
+    finder.add_gap(body_[h.a], body_[h.b], h.at, h.direction);
   const std::vector<RigidMotion> motions = finder.find(*dofs_.owned_dof_map()->getComm());
   return motions.size() > motions_.size() ? description(motions) : "";
 }
@@ -155,7 +155,7 @@ std::vector<RigidMotion> FreeMotions::motions_with(const std::vector<HeldDirecti
 {
   FreeMotionFinder finder = conditions_;
   for (const HeldDirection &h : held)
-    finder.add_gap(body_[h.a], body_[h.b], mesh_.coordinates[h.a], h.direction);
+    finder.add_gap(body_[h.a], body_[h.b], h.at, h.direction);
   return finder.find(*dofs_.owned_dof_map()->getComm());
 }
 
@@ -183,7 +183,7 @@ double FreeMotions::opening_along(const RigidMotion &motion, const HeldDirection
   const int ba = body_[h.a], bb = body_[h.b];
   if (ba < 0 || bb < 0 || ba == bb)
     return 0.0;
-  const Point &x = mesh_.coordinates[h.a];
+  const Point &x = h.at;
   const Point ra = displacement(ba, x), rb = displacement(bb, x);
   const Point d{rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]};
   return dot(h.direction, d);

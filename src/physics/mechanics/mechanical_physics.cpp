@@ -153,7 +153,8 @@ MechanicalPhysics::MechanicalPhysics(const Teuchos::ParameterList &mechanics,
                                mesh, interior, where + "/Boundary Conditions",
                                "its two sides touch through frictionless contact "
                                "(Mechanics/Contact), not a boundary condition");
-  KILN_CHECK_INPUT(!mesh.gap_side_sets.empty() || !given_in_input(mechanics, "Contact"),
+  KILN_CHECK_INPUT(!mesh.gap_side_sets.empty() || !given_in_input(mechanics, "Contact") ||
+                       mechanics.sublist("Contact").sublist("Pairs").numParams() > 0,
                    where + "/Contact",
                    "is given but the mesh has no gap (Kiln/Mesh/\"Gap Side Set\" is 0); remove "
                    "it or name the side set to split at");

@@ -35,7 +35,7 @@ int hold_pairs_shut(const FreeMotions &free,
   // A pair's id over every interface: its interface's offset plus its index.
   std::vector<double> offset(interfaces.size() + 1, 0.0);
   for (std::size_t s = 0; s < interfaces.size(); ++s)
-    offset[s + 1] = offset[s] + interfaces[s]->interface().n_pairs();
+    offset[s + 1] = offset[s] + interfaces[s]->interface().n_rows();
   int count = 0;
   for (;;)
   {
@@ -82,7 +82,7 @@ int hold_pairs_shut(const FreeMotions &free,
       ++s;
     const int pair = static_cast<int>(first - offset[s]);
     if (shut[s].empty())
-      shut[s].assign(static_cast<std::size_t>(interfaces[s]->interface().n_pairs()), 0);
+      shut[s].assign(static_cast<std::size_t>(interfaces[s]->interface().n_rows()), 0);
     shut[s][static_cast<std::size_t>(pair)] = 1;
     interfaces[s]->hold_shut(shut[s]);
     decide_again(*interfaces[s]);

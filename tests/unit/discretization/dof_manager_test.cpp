@@ -174,7 +174,7 @@ TEST_F(DofManagerTest, DofNumbering)
 /// The single twin of a node on one plane gap, or -1.
 int the_twin(const kiln::DofManager &dofs, const int n)
 {
-  const auto [begin, end] = dofs.twins(n);
+  const auto [begin, end] = dofs.partners(n);
   EXPECT_LE(end - begin, 1) << "node " << n << " has more than one twin on one plane gap";
   return begin == end ? -1 : *begin;
 }

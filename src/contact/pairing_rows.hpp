@@ -1,0 +1,22 @@
+#pragma once
+/// The rows of one pairing of two side sets with the parameters of its kind, as the set-up
+/// hands them to CoupledProblem (doc/contact.md, "Separately meshed bodies (issue 30): design").
+#include "contact/contact_row.hpp"
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+#include <vector>
+
+namespace kiln
+{
+/// A pairing's rows (e.g. MortarPairing's, fixed at set-up) and its interface parameters
+/// ("Kind", "Complementarity Scale" and the kind's own, validated as the "Contact" sublist's).
+/// The DofManager must have been built with partner_links(rows).
+struct PairingRows
+{
+  std::string name; ///< for messages, e.g. "pair \"pellet\""
+  std::vector<ContactRow> rows;
+  Teuchos::ParameterList parameters;
+};
+} // namespace kiln
