@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Hertz contact of a cylinder on a block, plane strain, the two bodies meshed apart (issue 30,
 "Hertz"): writes the Exodus mesh of refinement level n and prints the analytic contact
-half-width and peak pressure for a force per unit length. NOT A TEST YET: the mortar pairing
-(src/contact/mortar_pairing) gives the rows, but no kind condenses them into a run until the
-Pairs wiring lands; doc/verification/hertz/hertz.md says what the test will check.
+half-width and peak pressure for a force per unit length. The runs and their comparison are
+hertz_study.py (the table in hertz.md; level 1 is the test interface_hertz_cylinder_np1/2).
 
-    python3 hertz_cylinder.py mesh N OUT.exo     the mesh of level N (N = 1, 2, 4, ...)
+    python3 hertz_cylinder.py mesh N OUT.exo [D]  the mesh of level N (N = 1, 2, 4, ...); with
+                                                 D [m], the cylinder moved down by D: the
+                                                 bodies overlap (a bad input, for the tests)
     python3 hertz_cylinder.py analytic P         a and p0 for P [N/m] (also: E*, the data)
     python3 hertz_cylinder.py check              the mesh's own checks (levels 1, 2)
 
@@ -68,7 +69,7 @@ def orientation(points2d):
     return 1 if (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0) > 0 else -1
 
 
-def bodies(level):
+def bodies(level, overlap=0.0):
     """The two bodies' nodes and cells, each counterclockwise in (x, y)."""
     n = 8 * level
     xs = [W * s for s in graded(n, B_BLOCK)]
@@ -79,7 +80,7 @@ def bodies(level):
     angles = [-math.pi / 2 + (math.pi / 2) * s for s in graded(na, B_CYLINDER)]
     radii = [R - (R / 2) * s for s in graded(nr, B_CYLINDER)]  # from the outer arc inwards
     # i along the angle (counterclockwise about the centre), j from the outer arc inwards.
-    cylinder = [[(r * math.cos(a) if i > 0 else 0.0, R + r * math.sin(a))
+    cylinder = [[(r * math.cos(a) if i > 0 else 0.0, R - overlap + r * math.sin(a))
                  for i, a in enumerate(angles)] for r in radii]
     if orientation(block) < 0 or orientation(cylinder) < 0:
         raise SystemExit("internal: a body's cells are clockwise")
@@ -92,9 +93,9 @@ def sides_where(cells, nodes, on_face, first_element):
     return exodus_mesh.hex8_sides_where(connect, nodes, on_face, first_element)
 
 
-def write_mesh(level, path):
+def write_mesh(level, path, overlap=0.0):
     import exodus_mesh
-    (block2d, bi, bj), (cyl2d, ci, cj) = bodies(level)
+    (block2d, bi, bj), (cyl2d, ci, cj) = bodies(level, overlap)
     block_nodes, block_cells = hex_layer(block2d, bi, bj)
     cyl_nodes, cyl_cells = hex_layer(cyl2d, ci, cj)
     offset = len(block_nodes)
@@ -104,7 +105,7 @@ def write_mesh(level, path):
     eps = 1e-12
 
     def radius(p):
-        return math.hypot(p[0], p[1] - R)
+        return math.hypot(p[0], p[1] - (R - overlap))
 
     side_sets = []
     for sid, cells, first, on in [
@@ -172,8 +173,8 @@ def check():
 
 
 def main(argv):
-    if len(argv) == 4 and argv[1] == "mesh":
-        write_mesh(int(argv[2]), argv[3])
+    if len(argv) in (4, 5) and argv[1] == "mesh":
+        write_mesh(int(argv[2]), argv[3], float(argv[4]) if len(argv) == 5 else 0.0)
     elif len(argv) == 3 and argv[1] == "analytic":
         P = float(argv[2])
         Es, E, nu = e_star()
