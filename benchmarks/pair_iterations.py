@@ -24,7 +24,8 @@ CONTACT = re.compile(r'^\s*contact \(pair "cut"\).*: (\d+) of (\d+) (?:gap pairs
 def deck(n, base):
     text = (HERE / "inputs" / "contact-box-nonmatching.xml").read_text()
     text = text.replace('value="{8, 4, 4}"', f'value="{{{2 * n}, {n}, {n}}}"')
-    text = text.replace('value="{5, 3, 6}"', f'value="{{{5 * n // 4}, {3 * n // 4}, {6 * n // 4}}}"')
+    second = f"{5 * n // 4}, {3 * n // 4}, {6 * n // 4}"
+    text = text.replace('value="{5, 3, 6}"', f'value="{{{second}}}"')
     text = text.replace('value="{0, 50, 53, 150}"/>',
                         f'value="{{70}}"/>\n    <Parameter name="File Base" type="string" '
                         f'value="{base}"/>')
