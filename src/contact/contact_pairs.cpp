@@ -29,6 +29,14 @@ Teuchos::ParameterList contact_pair_parameters()
         "physical gap. Curved surfaces meshed apart that touch overlap by the facets' sag, "
         "about h^2 / (8 R) (h the face size, R the radius): raise it to that [m]",
         nonnegative_double_validator());
+  p.set("Search Update Fraction", defaults.search_update_fraction,
+        "the small-sliding limit: the pair's rows are built once, in the reference "
+        "configuration, so a secondary node may slide relative to its twin point on the "
+        "primary surface by at most this fraction of the size of its faces (their smallest "
+        "diameter); checked after every accepted step, and a run that slides further ends with "
+        "an error (exit 2) naming the pair and the node, its results up to the last accepted "
+        "step kept (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
+        double_range_validator(0.0, 1.0));
   return p;
 }
 
@@ -56,6 +64,11 @@ std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contac
     }
     pair.options.search_distance = entry.get<double>("Search Distance");
     pair.options.penetration_tolerance = entry.get<double>("Penetration Tolerance");
+    pair.options.search_update_fraction = entry.get<double>("Search Update Fraction");
+    KILN_CHECK_INPUT(pair.options.search_update_fraction > 0.0,
+                     pair.where + "/\"Search Update Fraction\"",
+                     "is 0; give the fraction of a face the secondary nodes may slide, in (0, 1] "
+                     "(default 0.25)");
     pairs.push_back(pair);
   }
   return pairs;

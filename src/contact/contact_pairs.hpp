@@ -24,12 +24,12 @@ struct ContactPairInput
 
 /// The parameters of one pair (declared as Contact's "Pairs", interface_parameters()):
 /// "Primary Side Set", "Secondary Side Set" (both required), "Search Distance", "Penetration
-/// Tolerance".
+/// Tolerance", "Search Update Fraction".
 Teuchos::ParameterList contact_pair_parameters();
 
 /// The pairs of the validated Contact sublist `contact`, in the input's order; `path` names
 /// `contact` in messages ("in.xml: Kiln/Mechanics/Contact"). Throws InputError naming the
-/// pair's side set parameter if it is not given.
+/// pair's side set parameter if it is not given, or its "Search Update Fraction" if it is 0.
 std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contact,
                                             const std::string &path);
 } // namespace kiln

@@ -20,5 +20,11 @@ struct ContactRow
   double gap0 = 0;
   std::vector<int> partners;   ///< the primary mesh nodes k (the split gap: node a)
   std::vector<double> weights; ///< w_jk, as many as partners, summing to 1 [-]
+  /// The small-sliding limit of a mortar pairing's row (check_small_sliding): the largest
+  /// tangential slip of j relative to its twin point accepted, `Search Update Fraction` times
+  /// `face_size`, the smallest diameter of j's secondary faces [m]; 0: not checked (a split
+  /// gap, whose sides share their nodes' positions).
+  double slip_limit = 0;
+  double face_size = 0;
 };
 } // namespace kiln

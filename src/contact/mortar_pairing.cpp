@@ -6,6 +6,7 @@
 #include "contact/pair_checks.hpp"
 #include "mesh/contact_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -48,6 +49,11 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
   for (int p = 0; p < primary.n_faces(); ++p)
     primary_x[p] = face_positions(primary, p);
   std::vector<NodeSums> sums(secondary.n_nodes());
+  // The size of each secondary node's faces: the smallest diameter among them.
+  std::vector<double> face_size(secondary.n_nodes(), secondary.max_face_diameter());
+  for (int s = 0; s < secondary.n_faces(); ++s)
+    for (const int n : secondary.face_nodes(s))
+      face_size[n] = std::min(face_size[n], secondary.face_diameter(s));
   for (int s = 0; s < secondary.n_faces(); ++s)
   {
     // The candidates that face it: a primary face looking the same way (the far side of a
@@ -96,6 +102,8 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
     row.normal = {-outward[0], -outward[1], -outward[2]};
     row.area = sum.D;
     row.gap0 = sum.gap / sum.D;
+    row.face_size = face_size[j];
+    row.slip_limit = options.search_update_fraction * face_size[j];
     // sum.M is in increasing primary surface node, so in increasing mesh node.
     for (const auto &[k, M] : sum.M)
     {

@@ -14,11 +14,12 @@
 /// sum_k w_jk X_k).
 ///
 /// In the reference configuration X, once (the search redone as the bodies move is a later
-/// step). The mesh is replicated, so every rank computes the rows of the whole secondary
-/// surface, in the same order (deterministic: the same rows on every rank and for every
-/// number of ranks). When the mesh is distributed, a rank will integrate the secondary faces
-/// of its owned cells and sum D, M and g~ of a node whose faces lie on two ranks to its owner
-/// (an Export with ADD), as the design says.
+/// step): each row's slip_limit is `search_update_fraction` times the smallest diameter of its
+/// node's secondary faces, checked after every accepted step (check_small_sliding). The mesh is
+/// replicated, so every rank computes the rows of the whole secondary surface, in the same order
+/// (deterministic: the same rows on every rank and for every number of ranks). When the mesh is
+/// distributed, a rank will integrate the secondary faces of its owned cells and sum D, M and g~ of
+/// a node whose faces lie on two ranks to its owner (an Export with ADD), as the design says.
 #include "contact/contact_row.hpp"
 #include "mesh/mesh.hpp"
 
@@ -35,6 +36,9 @@ struct MortarPairingOptions
   double search_distance = 0.0;
   /// The largest interpenetration of the reference configuration accepted, g0_j >= -this [m].
   double penetration_tolerance = 1e-9;
+  /// The small-sliding limit as a fraction of the size of a secondary node's faces, in (0, 1]
+  /// [-]: ContactRow::slip_limit (doc/contact.md, "Small sliding").
+  double search_update_fraction = 0.25;
 };
 
 class MortarPairing

@@ -2,6 +2,7 @@
 
 #include "base/errors.hpp"
 #include "contact/interface_parameters.hpp"
+#include "contact/small_sliding.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/mechanics/free_motions.hpp"
@@ -443,6 +444,17 @@ void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSyst
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
+  // The rows of a pairing are fixed: beyond its small-sliding limit the state would be wrong,
+  // so it is refused before anything is committed.
+  if (std::any_of(pairings_.begin(), pairings_.end(),
+                  [](const auto &pairing) { return !pairing->split(); }))
+  {
+    prepare(x);
+    const auto u = [this](const int node) { return fields_->u(node); };
+    for (const auto &pairing : pairings_)
+      if (!pairing->split())
+        check_small_sliding(*pairing, u, time, *dofs_.owned_dof_map()->getComm());
+  }
   accepted_time_ = time;
   if (quadrature_state_)
     quadrature_state_->commit();

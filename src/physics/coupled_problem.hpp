@@ -96,9 +96,10 @@ public:
   /// Keeps the past temperatures if a heat kernel reads them (NodalFields::keep_history).
   void set_time_history(const std::vector<double> &weights,
                         const std::vector<const Vector *> &past) override;
-  /// Commits the quadrature-point state (QuadratureState::commit), keeps the temperatures of
-  /// x for the models' T at t_n (NodalFields::set_accepted, if a model reads it), then the
-  /// interfaces' hooks.
+  /// Checks the pairings' small-sliding limit (check_small_sliding: a RunError on every rank,
+  /// before anything is committed), commits the quadrature-point state
+  /// (QuadratureState::commit), keeps the temperatures of x for the models' T at t_n
+  /// (NodalFields::set_accepted, if a model reads it), then the interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
   /// Restores the quadrature-point state (QuadratureState::restore).
   void step_rejected() override;

@@ -284,13 +284,26 @@ bool TimeStepper::run(TransientProblem &problem, NewtonSolver &newton, State &st
     for (; next < stop_times.size(); ++next)
     {
       const double t = stop_times[next];
-      const NewtonSolver::Result r = steady_solve(problem, newton, *state.x, t);
+      // A solve that fails, or a state the problem refuses, ends the run at the last accepted
+      // state: x is restored to it.
+      const NonlinearProblem::Vector last(*state.x, Teuchos::Copy);
+      NewtonSolver::Result r;
+      try
+      {
+        r = steady_solve(problem, newton, *state.x, t);
+        problem.step_accepted(t, *state.x);
+      }
+      catch (const RunError &)
+      {
+        Tpetra::deep_copy(*state.x, last);
+        problem.step_rejected();
+        throw;
+      }
       state.time = t;
       ++state.accepted;
       ++state.statistics.steps;
       state.statistics.add_solve(r);
       // The observer reports the solve (app/progress_report).
-      problem.step_accepted(t, *state.x);
       observer.step_accepted(state, r, -1.0);
       observer.stop_time(state);
       if (observer.stop_requested())
@@ -464,7 +477,17 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
     }
   }
 
-  // Accept.
+  // Accept: the problem first, which may refuse the state (a RunError: a contact pair slid
+  // beyond its small-sliding limit); then the run ends at the last accepted state, kept.
+  try
+  {
+    problem.step_accepted(lands ? t_out : t + h, x);
+  }
+  catch (const RunError &)
+  {
+    problem.step_rejected();
+    throw;
+  }
   double factor = growth_factor_;
   if (error >= 0.0)
     factor = std::min(growth_factor_,
@@ -487,9 +510,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   state.next_step = h * factor;
   if (h < wanted && factor >= 1.0)
     state.next_step = std::max(state.next_step, wanted);
-
   // The observer reports the step (app/progress_report).
-  problem.step_accepted(state.time, *state.x);
   return true;
 }
 } // namespace kiln

@@ -45,6 +45,10 @@ std::string newton_advice(const NewtonSolver::Result &r, int max_iterations);
 /// exceed Maximum Step nor Growth Factor times the last step; they land exactly on every
 /// stop time (output and checkpoint times), and the last two steps before one are split
 /// evenly rather than leaving a sliver. Below Minimum Step the run stops with a RunError.
+/// A converged state is accepted by the problem first (NonlinearProblem::step_accepted), which
+/// may refuse it with a RunError (a contact pair slid beyond its small-sliding limit): the
+/// step is rejected (step_rejected) and the RunError ends the run with the State at the last
+/// accepted step, its x included (also for a steady solve that fails).
 /// Everything the integration needs to go on from an accepted step is its State, so a run
 /// continued from a saved State (a checkpoint) takes the same steps as one that never
 /// stopped.

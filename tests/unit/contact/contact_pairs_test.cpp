@@ -1,6 +1,6 @@
 // Tests src/contact/contact_pairs.cpp: the input Mechanics/Contact/Pairs (issue 30): the pairs
-// read with their paths, defaults and values; a misspelled key and a missing side set are
-// input errors naming the parameter.
+// read with their paths, defaults and values; a misspelled key, a missing side set and a
+// Search Update Fraction outside (0, 1] are input errors naming the parameter.
 // KILN_TEST_NP: 1
 #include "contact/contact_pairs.hpp"
 
@@ -30,6 +30,7 @@ Teuchos::ParameterList contact(const std::string &misspelled = "")
   flange.set("Secondary Side Set", 6);
   flange.set("Search Distance", 0.002);
   flange.set("Penetration Tolerance", 1e-5);
+  flange.set("Search Update Fraction", 0.5);
   if (!misspelled.empty())
     flange.set(misspelled, 1);
   return kiln::validated(user, kiln::interface_parameters(), "in.xml", path);
@@ -47,11 +48,13 @@ TEST(ContactPairs, ReadInOrderWithDefaults)
   EXPECT_EQ(pairs[0].secondary_side_set, 4);
   EXPECT_EQ(pairs[0].options.search_distance, 0.0);
   EXPECT_EQ(pairs[0].options.penetration_tolerance, 1e-9);
+  EXPECT_EQ(pairs[0].options.search_update_fraction, 0.25);
   EXPECT_EQ(pairs[1].name, "Flange");
   EXPECT_EQ(pairs[1].primary_side_set, 5);
   EXPECT_EQ(pairs[1].secondary_side_set, 6);
   EXPECT_EQ(pairs[1].options.search_distance, 0.002);
   EXPECT_EQ(pairs[1].options.penetration_tolerance, 1e-5);
+  EXPECT_EQ(pairs[1].options.search_update_fraction, 0.5);
 }
 
 TEST(ContactPairs, NoPairs)
@@ -91,4 +94,25 @@ TEST(ContactPairs, NegativeSearchDistance)
   const std::string message = kiln_test::input_error_message(
       [&] { kiln::validated(user, kiln::interface_parameters(), "in.xml", path); });
   EXPECT_THAT(message, HasSubstr("Pairs/Pellet/\"Search Distance\""));
+}
+
+TEST(ContactPairs, SearchUpdateFractionOutOfRange)
+{
+  for (const double fraction : {0.0, 1.5, -0.1})
+  {
+    Teuchos::ParameterList user("Contact");
+    Teuchos::ParameterList &pellet = user.sublist("Pairs").sublist("Pellet");
+    pellet.set("Primary Side Set", 3);
+    pellet.set("Secondary Side Set", 4);
+    pellet.set("Search Update Fraction", fraction);
+    const std::string message = kiln_test::input_error_message(
+        [&]
+        {
+          const Teuchos::ParameterList list =
+              kiln::validated(user, kiln::interface_parameters(), "in.xml", path);
+          kiln::contact_pairs(list, "in.xml: " + path);
+        });
+    EXPECT_THAT(message, HasSubstr("Pellet")) << fraction;
+    EXPECT_THAT(message, HasSubstr("/\"Search Update Fraction\"")) << fraction;
+  }
 }

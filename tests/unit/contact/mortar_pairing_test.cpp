@@ -4,7 +4,8 @@
 // sum_k w_jk X_k) and the twin point on the primary plane to 1e-12. On the box generator's two
 // halves meshed apart (4x4x4 against 5x3x6 cells, rotated by phi = 45, theta = -30), touching
 // and apart by "Gap Width". On two curved shells: rows with radial normals and the gap within
-// the facets' sag. Each input error once. Every rank computes the same rows (np 2).
+// the facets' sag. Each row's small-sliding limit: Search Update Fraction times the smallest
+// diameter of its node's faces. Each input error once. Every rank computes the same rows (np 2).
 // KILN_TEST_NP: 1 2
 #include "contact/mortar_pairing.hpp"
 
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -171,6 +173,42 @@ TEST(MortarPairing, BoxHalvesTouching)
   EXPECT_EQ(pairing.rows().size(), 28u);
   expect_flat_rows(mesh, pairing, 20, rotated({1, 0, 0}), {0, 0, 0}, 0.0, 0.04 * 0.04);
   expect_same_on_every_rank(pairing);
+}
+
+TEST(MortarPairing, SmallSlidingLimit)
+{
+  // The box halves: every secondary face 0.04/3 x 0.04/6 m, so every row's face size is its
+  // diagonal, and the limit "Search Update Fraction" (default 0.25) times it.
+  const Mesh mesh = box_halves(0.0);
+  const double diagonal = std::hypot(0.04 / 3, 0.04 / 6);
+  MortarPairingOptions half;
+  half.search_update_fraction = 0.5;
+  const MortarPairing pairing(mesh, 10, 20, {}, pair), larger(mesh, 10, 20, half, pair);
+  ASSERT_EQ(larger.rows().size(), pairing.rows().size());
+  for (std::size_t r = 0; r < pairing.rows().size(); ++r)
+  {
+    EXPECT_NEAR(pairing.rows()[r].face_size, diagonal, 1e-15);
+    EXPECT_NEAR(pairing.rows()[r].slip_limit, 0.25 * diagonal, 1e-15);
+    EXPECT_NEAR(larger.rows()[r].slip_limit, 0.5 * diagonal, 1e-15);
+  }
+  // Perturbed faces: the smallest diameter of the node's faces.
+  Mesh perturbed = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.1);
+  kiln_test::perturb(perturbed, 0.02);
+  const MortarPairing rows(perturbed, 1, 2, {}, pair);
+  const kiln::ContactSurface secondary(perturbed, 2, pair);
+  std::vector<double> smallest(secondary.n_nodes(), 1e300);
+  for (int f = 0; f < secondary.n_faces(); ++f)
+    for (const int n : secondary.face_nodes(f))
+      smallest[n] = std::min(smallest[n], secondary.face_diameter(f));
+  int differ = 0;
+  for (const ContactRow &row : rows.rows())
+  {
+    const double size = smallest[secondary.surface_node(row.node)];
+    EXPECT_EQ(row.face_size, size) << "node " << row.node;
+    EXPECT_EQ(row.slip_limit, 0.25 * size) << "node " << row.node;
+    differ += std::abs(size - rows.rows().front().face_size) > 1e-6;
+  }
+  EXPECT_GT(differ, 0) << "the perturbation leaves the sizes alike";
 }
 
 TEST(MortarPairing, BoxHalvesApart)

@@ -3,7 +3,8 @@
 // tolerances with more steps and repeats steps it rejects, and a failed Newton solve is
 // repeated with a smaller step; the message of a failed Newton solve says what happened and
 // what to try, not "the boundary conditions"; the problem is told of each accepted and each
-// rejected step (step_accepted, step_rejected).
+// rejected step (step_accepted, step_rejected); a state the problem refuses (a RunError from
+// step_accepted) rejects the step and ends the run with the State at the last accepted step.
 // KILN_TEST_NP: 1 2
 #include "base/errors.hpp"
 #include "discretization/nonlinear_problem.hpp"
@@ -68,10 +69,18 @@ public:
     }
   }
 
-  void step_accepted(double, const Vector &) override { ++accepted; }
+  void step_accepted(const double time, const Vector &) override
+  {
+    // Refused as a contact pair slid beyond its limit refuses it (check_small_sliding).
+    if (time > refuse_after)
+      throw kiln::RunError("refused at t = " + std::to_string(time));
+    ++accepted;
+  }
   void step_rejected() override { ++rejected; }
   int accepted = 0; ///< step_accepted() calls
   int rejected = 0; ///< step_rejected() calls
+  /// step_accepted() refuses a state after this time with a RunError [s].
+  double refuse_after = std::numeric_limits<double>::infinity();
 
 private:
   double lambda_;
@@ -250,4 +259,43 @@ TEST(NewtonFailure, SaysWhatHappenedAndWhatToTryWithoutBlamingTheConditions)
   for (const auto &c : {failed(2e2, 3e-13, 20, 1e-300), failed(1e2, 1e-3, 20, 1e-8),
                         failed(1e2, 50.0, 20, 1e-8), failed(nan, nan, 0, nan)})
     EXPECT_THAT(newton_failure(c, 20) + newton_advice(c, 20), testing::Not(HasSubstr("boundary")));
+}
+
+TEST(TimeStepper, RefusedStateEndsAtTheLastAcceptedStep)
+{
+  struct Stops final : TimeStepper::Observer
+  {
+    void stop_time(const TimeStepper::State &state) override { times.push_back(state.time); }
+    std::vector<double> times;
+  };
+  auto quiet = Teuchos::getFancyOStream(Teuchos::rcp(new Teuchos::oblackholestream));
+  for (const char *method : {"BDF2", "Backward Euler", "Steady"})
+  {
+    auto problem = Teuchos::rcp(new Decay(2.0, 0.0));
+    problem->refuse_after = 0.35;
+    Teuchos::ParameterList solver;
+    solver.set("Absolute Tolerance", 1e-13);
+    solver.set("Relative Tolerance", 1e-13);
+    solver.sublist("Linear Solver").set("Preconditioner Type", "None");
+    kiln::NewtonSolver newton(solver, problem, quiet);
+    Teuchos::ParameterList p = TimeStepper::valid_parameters();
+    p.setParameters(stepping(method, 0.1, 0.1, false));
+    const TimeStepper stepper(p, "test.xml: Kiln/Time Stepping", quiet);
+    NonlinearProblem::Vector x0(problem->solution_map());
+    x0.putScalar(1.0);
+    TimeStepper::State state = stepper.initial_state(0.0, x0);
+    Stops stops;
+    EXPECT_THROW(stepper.run(*problem, newton, state, {0.0, 0.3, 0.4, 1.0}, stops), kiln::RunError)
+        << method;
+    // The last accepted state is 0.3 s (a step or a steady solve lands there), and x is its.
+    EXPECT_DOUBLE_EQ(state.time, 0.3) << method;
+    EXPECT_EQ(stops.times, (std::vector<double>{0.0, 0.3})) << method;
+    EXPECT_EQ(problem->rejected, 1) << method;
+    EXPECT_EQ(problem->accepted, state.accepted) << method;
+    // x at 0.3 s: backward Euler's three steps of 0.1 s give 1/1.2^3; BDF2's exp(-0.6) to
+    // its error; the steady solve's x is 0.
+    const std::string m = method;
+    const double expected = m == "Steady" ? 0.0 : m == "BDF2" ? std::exp(-0.6) : 1.0 / 1.728;
+    EXPECT_NEAR(state.x->normInf(), expected, m == "BDF2" ? 0.02 : 1e-12) << method;
+  }
 }
