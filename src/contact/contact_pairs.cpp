@@ -56,6 +56,8 @@ std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contac
     }
     pair.options.search_distance = entry.get<double>("Search Distance");
     pair.options.penetration_tolerance = entry.get<double>("Penetration Tolerance");
+    if (entry.isSublist("Heat Transfer"))
+      pair.heat_transfer = entry.sublist("Heat Transfer");
     pairs.push_back(pair);
   }
   return pairs;

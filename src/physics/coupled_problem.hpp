@@ -209,6 +209,8 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::vector<std::unique_ptr<ContactInterface>>
       pairings_; ///< per gap with pairs, then per pairing
+  /// The heat across the pairs' gaps (those with a term on), kept for terms_.
+  std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;
