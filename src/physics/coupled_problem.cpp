@@ -568,6 +568,13 @@ std::vector<double> CoupledProblem::gap_heat_flow(const Vector &x)
   return output().gap_heat_flow();
 }
 
+std::vector<double> CoupledProblem::pair_heat_flow(const Vector &x)
+{
+  if (!pair_heat_.empty())
+    prepare(x);
+  return terms_->pair_heat_flow(*fields_);
+}
+
 StateSummary CoupledProblem::summary(const Vector &x)
 {
   if (!interfaces_.empty())

@@ -156,6 +156,10 @@ public:
   /// faces of the pair's gap carry from its node a to side b (negative: heat flows from b to
   /// a) [W]; divided by the pair's area, the gap_heat_flux [W/m^2]. NaN without temperature.
   std::vector<double> gap_heat_flow(const Vector &x);
+  /// The heat across the gap at x of each contact pair with a Heat Transfer term on (in the
+  /// input's order of the pairs), from the secondary to the primary side, on every rank [W].
+  /// Collective.
+  std::vector<double> pair_heat_flow(const Vector &x);
   /// The figures of the state x for a time history.
   StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.
