@@ -170,6 +170,16 @@ void Simulation::setup()
       pairings.push_back({"pair \"" + pair.name + "\"", pairing.rows(),
                           pair_interface_parameters(contact), nullptr});
       // The heat across its gap, on the cells of the same search.
+      if (pair.heat_transfer.numParams() > 0)
+      {
+        KILN_CHECK_INPUT(
+            layout_.temperature ||
+                !MortarGapHeat(pair.heat_transfer, pair.where + "/Heat Transfer").active(),
+            pair.where + "/Heat Transfer",
+            "carries heat across the pair, but the run has no temperature "
+            "(Kiln/\"Physics\" = \"Elasticity\"); set Physics to "
+            "\"Thermo-Elasticity\", or remove the Heat Transfer sublist");
+      }
       if (layout_.temperature && pair.heat_transfer.numParams() > 0)
       {
         auto heat = std::make_shared<const PairGapHeat>(
