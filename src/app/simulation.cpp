@@ -28,6 +28,7 @@
 #include "mesh/mesh_factory.hpp"
 #include "mesh/metis_partitioner.hpp"
 #include "physics/coupled_problem.hpp"
+#include "physics/heat/pair_gap_heat.hpp"
 #include "physics/materials/material_map.hpp"
 #include "solvers/fault_injection.hpp"
 #include "solvers/newton_solver.hpp"
@@ -166,8 +167,27 @@ void Simulation::setup()
     {
       const MortarPairing pairing(mesh_, pair.primary_side_set, pair.secondary_side_set,
                                   pair.options, pair.where);
-      pairings.push_back(
-          {"pair \"" + pair.name + "\"", pairing.rows(), pair_interface_parameters(contact)});
+      pairings.push_back({"pair \"" + pair.name + "\"", pairing.rows(),
+                          pair_interface_parameters(contact), nullptr});
+      // The heat across its gap, on the cells of the same search.
+      if (pair.heat_transfer.numParams() > 0)
+      {
+        KILN_CHECK_INPUT(
+            layout_.temperature ||
+                !MortarGapHeat(pair.heat_transfer, pair.where + "/Heat Transfer").active(),
+            pair.where + "/Heat Transfer",
+            "carries heat across the pair, but the run has no temperature "
+            "(Kiln/\"Physics\" = \"Elasticity\"); set Physics to "
+            "\"Thermo-Elasticity\", or remove the Heat Transfer sublist");
+      }
+      if (layout_.temperature && pair.heat_transfer.numParams() > 0)
+      {
+        auto heat = std::make_shared<const PairGapHeat>(
+            mesh_, pair.primary_side_set, pair.secondary_side_set, pairing.search_distance(),
+            pair.heat_transfer, pair.where + "/Heat Transfer");
+        if (heat->active())
+          pairings.back().heat = std::move(heat);
+      }
     }
   }
   {
@@ -177,6 +197,11 @@ void Simulation::setup()
     {
       const auto more = partner_links(pairing.rows);
       links.insert(links.end(), more.begin(), more.end());
+      if (pairing.heat != nullptr)
+      {
+        const auto heat = pairing.heat->links();
+        links.insert(links.end(), heat.begin(), heat.end());
+      }
     }
     dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_, links);
   }

@@ -69,6 +69,8 @@ std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contac
                      pair.where + "/\"Search Update Fraction\"",
                      "is 0; give the fraction of a face the secondary nodes may slide, in (0, 1] "
                      "(default 0.25)");
+    if (entry.isSublist("Heat Transfer"))
+      pair.heat_transfer = entry.sublist("Heat Transfer");
     pairs.push_back(pair);
   }
   return pairs;

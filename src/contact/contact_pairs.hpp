@@ -20,6 +20,10 @@ struct ContactPairInput
   int primary_side_set = 0;
   int secondary_side_set = 0; ///< the finer or softer side: the pressure lives there
   MortarPairingOptions options;
+  /// The validated "Heat Transfer" sublist (MortarGapHeat::valid_parameters(), declared by
+  /// MechanicalPhysics::valid_parameters(): the heat terms live in physics); empty if the
+  /// parameters were not declared.
+  Teuchos::ParameterList heat_transfer;
 };
 
 /// The parameters of one pair (declared as Contact's "Pairs", interface_parameters()):

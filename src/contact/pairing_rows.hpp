@@ -5,11 +5,14 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace kiln
 {
+class PairGapHeat;
+
 /// A pairing's rows (e.g. MortarPairing's, fixed at set-up) and its interface parameters
 /// ("Kind", "Complementarity Scale" and the kind's own, validated as the "Contact" sublist's).
 /// The DofManager must have been built with partner_links(rows).
@@ -18,5 +21,8 @@ struct PairingRows
   std::string name; ///< for messages, e.g. "pair \"pellet\""
   std::vector<ContactRow> rows;
   Teuchos::ParameterList parameters;
+  /// The heat across the pair's gap (physics/heat/pair_gap_heat.hpp), null without a term
+  /// on; the DofManager must have been given its links() too.
+  std::shared_ptr<const PairGapHeat> heat;
 };
 } // namespace kiln

@@ -37,6 +37,9 @@ std::vector<std::vector<int>> node_couplings(const Assembler &assembler, const M
   for (std::size_t k = 0; k < use_face.size(); ++k)
     if (use_face[k])
       add_block(assembler.gap_face_nodes(static_cast<int>(k)));
+  for (const auto &[cell, block] : assembler.couplings().cell_blocks)
+    if (use_cell[cell])
+      add_block(block);
   for (auto &c : couplings)
   {
     std::sort(c.begin(), c.end());

@@ -19,6 +19,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace kiln
@@ -38,6 +39,10 @@ struct Couplings
   /// blocks store 13 of 16 entries (T-u left out), and a term that puts a nonzero there is a
   /// bug (Assembler::add throws).
   bool temperature_depends_on_displacement = true;
+  /// Blocks of other terms (cell, nodes), assembled by the owner of the cell and without the
+  /// partners of their nodes (the heat across a pair's gap: a secondary face's nodes with a
+  /// primary face's, whose partners the rank may not hold).
+  std::vector<std::pair<int, std::vector<int>>> cell_blocks;
   /// The default: the side-a nodes and the twins of every gap face, no twin closure.
   static Couplings gap_faces(const Mesh &mesh);
 };
@@ -77,6 +82,8 @@ public:
   std::vector<LO> face_lids(int cell, int face) const;
   /// The nodes of a gap face's block: Couplings::gap_face_nodes, then with_partners().
   std::vector<int> gap_face_nodes(int gap_face) const;
+  /// What couples beyond each cell's own nodes.
+  const Couplings &couplings() const { return couplings_; }
   /// Overlap local ids of gap_face_nodes() (node-major).
   std::vector<LO> gap_face_lids(int gap_face) const;
   /// `nodes` followed by the partners of its nodes that it lacks (with Couplings::partners;

@@ -5,6 +5,7 @@
 #include "contact/small_sliding.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
+#include "physics/heat/pair_gap_heat.hpp"
 #include "physics/mechanics/free_motions.hpp"
 #include "physics/mechanics/pairs_held_shut.hpp"
 #include "physics/quadrature_state_setup.hpp"
@@ -126,6 +127,16 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
+  // The heat across the pairs' gaps: a block per cell, assembled without partners.
+  for (const PairingRows &pairing : pairings)
+    if (thermal_ && pairing.heat != nullptr)
+    {
+      couplings.temperature_depends_on_displacement =
+          couplings.temperature_depends_on_displacement || pairing.heat->depends_on_displacement();
+      for (std::size_t k = 0; k < pairing.heat->cells().size(); ++k)
+        couplings.cell_blocks.emplace_back(pairing.heat->owning_cell(k),
+                                           pairing.heat->cell_nodes(k));
+    }
   assembler_ = std::make_unique<Assembler>(mesh, dofs, couplings);
   if (!interfaces_.empty())
   {
@@ -164,6 +175,12 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
     terms_->add_boundary_conditions(thermal_->conditions());
     if (gap != nullptr)
       terms_->set_interface_kernel(*gap);
+    for (const PairingRows &pairing : pairings)
+      if (pairing.heat != nullptr)
+      {
+        pair_heat_.push_back(pairing.heat);
+        terms_->add_pair_heat(*pairing.heat);
+      }
   }
   if (mechanics_)
   {
@@ -393,6 +410,9 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
   terms_->evaluate(*fields_, jacobian,
                    [this](const std::vector<int> &nodes, LocalSystem &local)
                    { add_local(nodes, local); });
+  terms_->evaluate_pair_heat(*fields_, jacobian,
+                             [this](const std::vector<int> &nodes, LocalSystem &local)
+                             { distribute_and_add(nodes, local); });
   constraints_.add_rows(*x_overlap_, *assembler_, jacobian);
   if (jacobian)
     for (const auto &strategy : interfaces_)
@@ -558,6 +578,13 @@ std::vector<double> CoupledProblem::gap_heat_flow(const Vector &x)
   if (thermal_ && !mesh_.gap_pairs.empty())
     prepare(x);
   return output().gap_heat_flow();
+}
+
+std::vector<double> CoupledProblem::pair_heat_flow(const Vector &x)
+{
+  if (!pair_heat_.empty())
+    prepare(x);
+  return terms_->pair_heat_flow(*fields_);
 }
 
 StateSummary CoupledProblem::summary(const Vector &x)

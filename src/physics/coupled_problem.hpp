@@ -157,6 +157,10 @@ public:
   /// faces of the pair's gap carry from its node a to side b (negative: heat flows from b to
   /// a) [W]; divided by the pair's area, the gap_heat_flux [W/m^2]. NaN without temperature.
   std::vector<double> gap_heat_flow(const Vector &x);
+  /// The heat across the gap at x of each contact pair with a Heat Transfer term on (in the
+  /// input's order of the pairs), from the secondary to the primary side, on every rank [W].
+  /// Collective.
+  std::vector<double> pair_heat_flow(const Vector &x);
   /// The figures of the state x for a time history.
   StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.
@@ -210,6 +214,8 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::vector<std::unique_ptr<ContactInterface>>
       pairings_; ///< per gap with pairs, then per pairing
+  /// The heat across the pairs' gaps (those with a term on), kept for terms_.
+  std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;

@@ -3,6 +3,9 @@
 #include "base/errors.hpp"
 #include "discretization/element_values.hpp"
 #include "discretization/face_values.hpp"
+#include "physics/heat/pair_gap_heat.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
 #include <array>
@@ -63,7 +66,9 @@ bool ResidualTerms::constant_jacobian() const
   for (const BoundaryFace &face : faces_)
     if (!face.condition->constant_jacobian())
       return false;
-  return interface_kernel_ == nullptr || interface_kernel_->constant_jacobian();
+  // The heat across a pair's gap: nonlinear in T (radiation) and u (the gas term).
+  return pair_heat_.empty() &&
+         (interface_kernel_ == nullptr || interface_kernel_->constant_jacobian());
 }
 
 void ResidualTerms::add_cell_kernel(const CellKernel &kernel)
@@ -98,6 +103,29 @@ void ResidualTerms::set_interface_kernel(const InterfaceKernel &kernel)
       gap_faces_.push_back(k);
       gap_nodes_.push_back(kernel.nodes(mesh_, mesh_.gap_faces[k]));
     }
+}
+
+void ResidualTerms::add_pair_heat(const PairGapHeat &heat)
+{
+  pair_heat_.push_back(&heat);
+}
+
+void ResidualTerms::evaluate_pair_heat(const NodalFields &fields, const bool jacobian,
+                                       const Sink &sink) const
+{
+  for (const PairGapHeat *heat : pair_heat_)
+    heat->evaluate(fields, slots_, dofs_.n_node_fields(), jacobian, owns_cell_, sink);
+}
+
+std::vector<double> ResidualTerms::pair_heat_flow(const NodalFields &fields) const
+{
+  std::vector<double> local, flow(pair_heat_.size(), 0.0);
+  for (const PairGapHeat *heat : pair_heat_)
+    local.push_back(heat->heat_flow(fields, slots_, owns_cell_));
+  if (!local.empty())
+    Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), flow.data());
+  return flow;
 }
 
 void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, const Sink &sink) const

@@ -2,9 +2,9 @@
 // work): inputs/contact-box-nonmatching.xml, the closing deck (variant A of
 // ../shared/spec/contact-box.md) with the half x < 0 in 4 x 4 x 4 cells and the half x > 0 in
 // 5 x 3 x 6, touching, coupled by the mortar pairing "cut" (rows with weighted partners),
-// each half heated by its own end face (no heat crosses the pair yet). Run with the
-// verification tolerances (contact_box_deck: Newton 1e-12 relative, GMRES 1e-13, steps of at
-// most 2 s) to 150 s: at 0 s the open-gap state at 288 K, at 150 s 308 K to 1e-9 of dT and the
+// heat crossing it by the seed's gap conductance (Heat Transfer/Conductance 1e4 W/(m^2 K)). Run
+// with the verification tolerances (contact_box_deck: Newton 1e-12 relative, GMRES 1e-13, steps of
+// at most 2 s) to 150 s: at 0 s the open-gap state at 288 K, at 150 s 308 K to 1e-9 of dT and the
 // spec's closed-gap state, every cell's stress, strain and thermal strain to 1e-9 of the
 // tensor's largest component and every node's displacement to 1e-9 of the largest: the
 // contact patch test across non-matching meshes. The same at np 1 and np 2 (the cut faces

@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
 #include "contact/interface_parameters.hpp"
+#include "physics/heat/mortar_gap_heat.hpp"
 #include "physics/mechanics/mechanical_conditions.hpp"
 
 #include <Teuchos_Array.hpp>
@@ -52,7 +53,14 @@ Teuchos::ParameterList MechanicalPhysics::valid_parameters()
         "r); a load with a net force or moment along a free motion is then an error of the "
         "run [-]",
         choice_validator({"Error", "Minimum Norm"}));
-  p.set("Contact", interface_parameters(),
+  // A pair's "Heat Transfer" (the heat terms live here, above contact).
+  Teuchos::ParameterList contact = interface_parameters();
+  Teuchos::ParameterList pair_heat;
+  pair_heat.set("Heat Transfer", MortarGapHeat::valid_parameters(),
+                "the heat across the pair's gap (doc/heat.md, \"Heat across the gap of a mortar "
+                "pairing\"): every term 0 by default, no heat crosses; needs Kiln/Thermal");
+  set_named_sublists(contact, "Pairs", "", pair_heat);
+  p.set("Contact", contact,
         "the interface across the gap (Kiln/Mesh/\"Gap Side Set\"): frictionless contact, "
         "sliding or bonded; doc/contact.md");
   return p;

@@ -1,11 +1,13 @@
 // Tests src/contact/contact_pairs.cpp: the input Mechanics/Contact/Pairs (issue 30): the pairs
 // read with their paths, defaults and values; a misspelled key, a missing side set and a
-// Search Update Fraction outside (0, 1] are input errors naming the parameter.
+// Search Update Fraction outside (0, 1] are input errors naming the parameter; a pair's Heat
+// Transfer, as MechanicalPhysics declares it.
 // KILN_TEST_NP: 1
 #include "contact/contact_pairs.hpp"
 
 #include "base/parameters.hpp"
 #include "contact/interface_parameters.hpp"
+#include "physics/mechanics/mechanical_physics.hpp"
 #include "support/parameter_lists.hpp"
 
 #include <gmock/gmock.h>
@@ -115,4 +117,23 @@ TEST(ContactPairs, SearchUpdateFractionOutOfRange)
     EXPECT_THAT(message, HasSubstr("Pellet")) << fraction;
     EXPECT_THAT(message, HasSubstr("/\"Search Update Fraction\"")) << fraction;
   }
+}
+
+// A pair's "Heat Transfer" (declared by MechanicalPhysics: the heat terms live in physics) is
+// read into the pair's input, validated with its defaults; a pair without it gets them too.
+TEST(ContactPairs, HeatTransferAsMechanicsDeclaresIt)
+{
+  Teuchos::ParameterList user("Contact");
+  Teuchos::ParameterList &pellet = user.sublist("Pairs").sublist("Pellet");
+  pellet.set("Primary Side Set", 3);
+  pellet.set("Secondary Side Set", 4);
+  pellet.sublist("Heat Transfer").set("Conductance", 1.0e4);
+  const Teuchos::ParameterList contact = kiln::validated(
+      user, kiln::MechanicalPhysics::valid_parameters().sublist("Contact"), "in.xml", path);
+  const std::vector<kiln::ContactPairInput> pairs = kiln::contact_pairs(contact, "in.xml: " + path);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].heat_transfer.get<double>("Conductance"), 1.0e4);
+  EXPECT_EQ(pairs[0].heat_transfer.get<double>("Jump Distance"), 0.0);
+  // Without the physics' declaration (the contact module's own list) there is none.
+  EXPECT_EQ(kiln::contact_pairs(::contact(), "in.xml: " + path)[0].heat_transfer.numParams(), 0);
 }

@@ -11,7 +11,10 @@
 // of T_ref, displacements within 2e-8 m): all rows open (gap 2e-4 m), all closed (gap -1e-4 m:
 // interpenetrating), mixed (tilt 4e-4); kind "Contact" ("Min" and "Fischer-Burmeister") and
 // "Bonded". At np 2 the cells are split at the block x = 0.55, so that both surfaces, and rows
-// and their partners, lie on two ranks.
+// and their partners, lie on two ranks. With the heat across the pair's gap (PairGapHeat: gas
+// and radiation) open and mixed: its T-T and T-u blocks (through Couplings::cell_blocks and
+// the heat's links), to 1e-7 (about 7e-8 measured: the T-u entries, k dT/(g + g_jump)^2 with
+// dT < 0.4 K, from differences of residuals of steps 1e-9 m, are at the round-off's level).
 // KILN_TEST_NP: 1 2
 #include "base/log.hpp"
 #include "base/parameters.hpp"
@@ -19,6 +22,7 @@
 #include "contact/mortar_pairing.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/coupled_problem.hpp"
+#include "physics/heat/pair_gap_heat.hpp"
 #include "physics/heat/thermal_physics.hpp"
 #include "physics/mechanics/mechanical_physics.hpp"
 #include "solvers/newton_solver.hpp"
@@ -35,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <string>
 #include <utility>
@@ -72,7 +77,39 @@ struct State
   bool minimum_norm = false;
   /// Body 2's shift along the block x [m].
   double shift = 0.125;
+  /// Heat across the pair's gap (PairGapHeat): gas (0.2 W/(m K), jump distance 1e-4 m) and
+  /// radiation (emissivities 0.8), so that its T-T and T-u blocks are in the Jacobian.
+  bool heat = false;
 };
+
+/// The pair's heat across the gap if `state` asks for it (else null).
+std::shared_ptr<const kiln::PairGapHeat> gap_heat(const kiln::Mesh &mesh, const State &state)
+{
+  if (!state.heat)
+    return nullptr;
+  Teuchos::ParameterList p;
+  p.set("Gas Conductivity", 0.2);
+  p.set("Jump Distance", 1.0e-4);
+  p.set("Primary Emissivity", 0.8);
+  p.set("Secondary Emissivity", 0.8);
+  const std::string where = "Kiln/Mechanics/Contact/Pairs/test/Heat Transfer";
+  return std::make_shared<const kiln::PairGapHeat>(
+      mesh, 1, 2, 0.5,
+      kiln::validated(p, kiln::MortarGapHeat::valid_parameters(), "test.xml", where), where);
+}
+
+/// The DofManager's links: the rows' partners and the heat's.
+std::vector<std::pair<int, int>> all_links(const std::vector<kiln::ContactRow> &rows,
+                                           const kiln::PairGapHeat *heat)
+{
+  std::vector<std::pair<int, int>> links = kiln::partner_links(rows);
+  if (heat != nullptr)
+  {
+    const auto more = heat->links();
+    links.insert(links.end(), more.begin(), more.end());
+  }
+  return links;
+}
 
 /// The two bodies, body 2 moved along x and placed as `state` says (block frame),
 /// then rotated; `block_x` gets each node's x before the rotation.
@@ -97,9 +134,9 @@ struct TwoBodies
 {
   explicit TwoBodies(const State &state)
       : mesh(two_bodies(state, block_x)), rows(mortar_rows(mesh)),
-        cell_rank(static_cast<std::size_t>(mesh.n_cells()), 0),
+        cell_rank(static_cast<std::size_t>(mesh.n_cells()), 0), heat(gap_heat(mesh, state)),
         dofs((split_cells(), mesh), cell_rank, comm, kiln::DofLayout{true, true, true},
-             kiln::partner_links(rows))
+             all_links(rows, heat.get()))
   {
   }
   /// At np 2: rank 1 takes the cells whose centre lies beyond block x = 0.55.
@@ -121,6 +158,7 @@ struct TwoBodies
   kiln::Mesh mesh;
   std::vector<kiln::ContactRow> rows;
   std::vector<int> cell_rank;
+  std::shared_ptr<const kiln::PairGapHeat> heat;
   kiln::DofManager dofs;
   kiln::Material material = TableMaterial::make();
 };
@@ -174,7 +212,7 @@ kiln::PairingRows pairing(const std::vector<kiln::ContactRow> &rows, const std::
   if (kind == "Contact")
     p.set("Complementarity Function", function);
   p.validateParametersAndSetDefaults(kiln::interface_parameters());
-  return {"pair \"test\"", rows, p};
+  return {"pair \"test\"", rows, p, nullptr};
 }
 
 /// A problem on the two bodies with the Thermal and Mechanics lists (validated here) and the
@@ -197,8 +235,9 @@ double run_case(const std::string &name, const std::string &kind, const std::str
                 const State &state)
 {
   TwoBodies s(state);
-  const auto problem_rcp =
-      make_problem(s, thermal_list(), mechanics_list(state), {pairing(s.rows, kind, function)});
+  kiln::PairingRows rows = pairing(s.rows, kind, function);
+  rows.heat = s.heat;
+  const auto problem_rcp = make_problem(s, thermal_list(), mechanics_list(state), {rows});
   kiln::CoupledProblem &problem = *problem_rcp;
   EXPECT_TRUE(problem.has_contact());
   EXPECT_EQ(problem.n_pairs(), static_cast<int>(s.rows.size()));
@@ -279,6 +318,20 @@ double run_case(const std::string &name, const std::string &kind, const std::str
 TEST(RowContactJacobian, AllRowsOpen)
 {
   EXPECT_LT(run_case("open", "Contact", "Min", {g0, 0.0}), tolerance);
+}
+
+TEST(RowContactJacobian, AllRowsOpenWithGapHeat)
+{
+  State state{g0, 0.0};
+  state.heat = true;
+  EXPECT_LT(run_case("open, heat across the gap", "Contact", "Min", state), tolerance);
+}
+
+TEST(RowContactJacobian, SomeRowsClosedWithGapHeat)
+{
+  State state{0.0, 4.0e-4};
+  state.heat = true;
+  EXPECT_LT(run_case("mixed, heat across the gap", "Contact", "Min", state), tolerance);
 }
 
 TEST(RowContactJacobian, AllRowsClosed)
