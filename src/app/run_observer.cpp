@@ -76,6 +76,9 @@ void RunObserver::record(const TimeStepper::State &state, const NewtonSolver::Re
                              static_cast<double>(gap.n_active), held ? gap.contact_area : nan,
                              held ? gap.normal_force : nan, gap.heat_flow});
     }
+  // A block per contact pair (history_columns(gap_side_sets, contact_pairs)).
+  for (const PairFigures &pair : s.pairs)
+    row.insert(row.end(), {pair.normal_force, pair.contact_area});
   c_.history.append(row);
   for (const auto &writer : c_.writers)
     writer->write_history(row);

@@ -169,6 +169,7 @@ void Simulation::setup()
                                   pair.options, pair.where);
       pairings.push_back({"pair \"" + pair.name + "\"", pairing.rows(),
                           pair_interface_parameters(contact), nullptr});
+      mesh_.contact_pairs.push_back({pair.name, pair.secondary_side_set});
       // The heat across its gap, on the cells of the same search.
       if (pair.heat_transfer.numParams() > 0)
       {
@@ -408,7 +409,8 @@ HistoryCsv Simulation::open_history(const TimeStepper::State &state)
 {
   const MPI_Comm mpi_comm =
       *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-  std::vector<HistoryColumn> columns = history_columns(mesh_.gap_side_sets);
+  std::vector<HistoryColumn> columns =
+      history_columns(mesh_.gap_side_sets, mesh_.contact_pair_names());
   // A restart writes its history beside an earlier one it would shorten (finish_results()).
   const std::string running = outputs_->file_base() + ".running.history.csv";
   if (restart_plan_->fresh())
@@ -575,7 +577,7 @@ void Simulation::open_results(const int first_gap_step)
   if (outputs_->writes_exodus())
     writers_.push_back(std::make_unique<ExodusResultsWriter>(
         mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));
-  if (!mesh_.gap_pairs.empty())
+  if (!mesh_.gap_pairs.empty() || !mesh_.contact_pairs.empty())
   {
     auto gap =
         std::make_unique<GapCsvWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(), first_gap_step);

@@ -3,6 +3,8 @@
 #include "base/errors.hpp"
 #include "base/parameters.hpp"
 
+#include <cctype>
+
 namespace kiln
 {
 Teuchos::ParameterList contact_pair_parameters()
@@ -54,6 +56,15 @@ std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contac
     ContactPairInput pair;
     pair.name = name;
     pair.where = path + "/Pairs/\"" + name + "\"";
+    // The name names its surface and history columns in the results (HDF5 groups, Exodus
+    // variables, file names).
+    bool plain = !name.empty();
+    for (const char c : name)
+      plain = plain &&
+              (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.');
+    KILN_CHECK_INPUT(plain, pair.where,
+                     "the pair's name names its surface (pair_NAME) and history columns "
+                     "(normal_force_NAME) in the results; use letters, digits, '_', '-' and '.'");
     for (const auto &[key, id] :
          {std::pair<const char *, int *>{"Primary Side Set", &pair.primary_side_set},
           std::pair<const char *, int *>{"Secondary Side Set", &pair.secondary_side_set}})

@@ -22,7 +22,7 @@ InterfaceStrategy::NodeValues InterfaceStrategy::node_values() const
   const int n = interface_.n_rows();
   const int n_nodes = static_cast<int>(dofs_.node_owner().size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  NodeValues out{std::vector<double>(n_nodes, nan), std::vector<double>(n_nodes, nan), {}, {}};
+  NodeValues out{std::vector<double>(n_nodes, nan), std::vector<double>(n_nodes, nan), {}, {}, {}};
   std::vector<double> local(2 * static_cast<std::size_t>(n), 0.0), global(local.size(), 0.0);
   const auto &owned = interface_.owned_rows();
   for (std::size_t i = 0; i < owned.size(); ++i)

@@ -120,6 +120,9 @@ public:
     std::vector<double> active;
     std::vector<double> pair_traction;
     std::vector<double> pair_active;
+    /// Per mesh node: the opening g_j of a pairing's row at its node j [m], NaN elsewhere
+    /// (from CoupledProblem::contact_output() only; empty from node_values()).
+    std::vector<double> opening;
   };
   NodeValues node_values() const;
 

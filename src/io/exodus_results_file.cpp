@@ -40,7 +40,7 @@ ExodusResultsFile::ExodusResultsFile(const std::string &path, const Mesh &mesh,
                                      const std::vector<int> &cell_rank,
                                      const std::string &run_fingerprint)
     : path_(path), n_nodes_(mesh.n_nodes()), n_cells_(mesh.n_cells()),
-      columns_(history_columns(mesh.gap_side_sets))
+      columns_(history_columns(mesh.gap_side_sets, mesh.contact_pair_names()))
 {
   const std::filesystem::path parent = std::filesystem::path(path_).parent_path();
   std::error_code ignored;

@@ -75,7 +75,7 @@ ExodusResultsWriter::Impl::Impl(const MPI_Comm communicator, const std::string &
     : comm(communicator), base(base_path), path(base_path + ".running.exo"),
       node_rows(communicator, owned_nodes, mesh.n_nodes()),
       cell_rows(communicator, owned_cells, mesh.n_cells()),
-      n_columns(history_columns(mesh.gap_side_sets).size())
+      n_columns(history_columns(mesh.gap_side_sets, mesh.contact_pair_names()).size())
 {
   MPI_Comm_rank(comm, &rank);
 }
@@ -221,7 +221,7 @@ void ExodusResultsWriter::write_history(const std::vector<double> &row)
   Impl &m = *impl_;
   internal::check_usage(row.size() == m.n_columns, "row.size() == n_columns",
                         "a history row needs one value per column of "
-                        "history_columns(mesh.gap_side_sets)");
+                        "history_columns(mesh.gap_side_sets, mesh.contact_pair_names())");
   m.last_row = row;
   const double step = row[history_column("step")];
   std::vector<int> complete; // output steps of this row

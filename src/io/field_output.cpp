@@ -19,13 +19,15 @@ FieldOutput::FieldOutput(CoupledProblem &problem, const Mesh &mesh, const DofMan
 }
 
 void FieldOutput::write_gap_field(ResultsWriter &writer, const std::string &name,
-                                  const std::vector<double> &per_pair) const
+                                  const std::vector<double> &per_pair,
+                                  const std::vector<double> *at_rows) const
 {
   writer.write_gap_field(name, per_pair);
   std::vector<double> owned;
   for (const int n : dofs_.owned_nodes())
-    owned.push_back(shown_pair_[n] < 0 ? std::numeric_limits<double>::quiet_NaN()
-                                       : per_pair[static_cast<std::size_t>(shown_pair_[n])]);
+    owned.push_back(shown_pair_[n] >= 0  ? per_pair[static_cast<std::size_t>(shown_pair_[n])]
+                    : at_rows != nullptr ? (*at_rows)[n]
+                                         : std::numeric_limits<double>::quiet_NaN());
   writer.write_node_field(name, 1, owned);
 }
 
@@ -81,16 +83,20 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
       writer.write_cell_field("plastic_strain_rate", 1, plastic_strain_rate);
     }
   }
-  write_gap_field(writer, "gap_opening", gap_opening(u));
   if (problem_.has_contact())
   {
     CoupledProblem::ContactOutput contact = problem_.contact_output(x);
+    write_gap_field(writer, "gap_opening", gap_opening(u), &contact.opening);
     // One sign for the gap everywhere: the pressure, positive in compression (+ 0.0: no -0).
     for (double &p : contact.pair_traction)
       p = -p + 0.0;
-    write_gap_field(writer, "contact_pressure", contact.pair_traction);
-    write_gap_field(writer, "contact_active", contact.pair_active);
+    for (double &p : contact.traction)
+      p = -p + 0.0;
+    write_gap_field(writer, "contact_pressure", contact.pair_traction, &contact.traction);
+    write_gap_field(writer, "contact_active", contact.pair_active, &contact.active);
   }
+  else
+    write_gap_field(writer, "gap_opening", gap_opening(u));
   if (layout.temperature && !mesh_.gap_pairs.empty())
   {
     std::vector<double> flux = problem_.gap_heat_flow(x);

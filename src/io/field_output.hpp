@@ -13,7 +13,9 @@ namespace kiln
 /// stress, strain and thermal strain, and at the gap the opening, the normal traction and
 /// the contact state (NaN off the gap), each for the fields the layout has. The gap fields
 /// are given per pair (ResultsWriter::write_gap_field()) and per node; a node in several
-/// pairs (where gaps cross) shows its pair of the first gap (Mesh::gap_side_sets order).
+/// pairs (where gaps cross) shows its pair of the first gap (Mesh::gap_side_sets order). At
+/// the node j of a contact pair's row (Mechanics/Contact/Pairs) the node fields gap_opening,
+/// contact_pressure and contact_active show the row's g_j, P_j and state.
 class FieldOutput
 {
 public:
@@ -28,9 +30,11 @@ private:
   /// u_owned: the displacement of the owned nodes.
   std::vector<double> gap_opening(const std::vector<Point> &u_owned) const;
   /// A gap field of the pairs to `writer`: per pair, then at the owned nodes (the pair of
-  /// shown_pair_, NaN off the gap).
+  /// shown_pair_; elsewhere `at_rows`, per mesh node the contact pairs' row values, if given;
+  /// NaN off the gap and the rows).
   void write_gap_field(ResultsWriter &writer, const std::string &name,
-                       const std::vector<double> &per_pair) const;
+                       const std::vector<double> &per_pair,
+                       const std::vector<double> *at_rows = nullptr) const;
 
   CoupledProblem &problem_;
   const Mesh &mesh_;

@@ -25,6 +25,13 @@ GapCsvWriter::GapCsvWriter(const MPI_Comm comm, const std::string &base_path, co
     names_.push_back(mesh.gap_name(g));
     gaps_.push_back(std::make_unique<internal::GapSurface>(mesh, g));
   }
+  for (const ContactPairSurface &pair : mesh.contact_pairs)
+    for (const SideSet &side_set : mesh.side_sets)
+      if (side_set.id == pair.secondary_side_set)
+      {
+        names_.push_back(pair.surface_name());
+        gaps_.push_back(std::make_unique<internal::GapSurface>(mesh, side_set));
+      }
 }
 
 GapCsvWriter::~GapCsvWriter() = default;
@@ -74,13 +81,14 @@ void GapCsvWriter::write_table(const internal::GapSurface &gap, const std::strin
       [&]
       {
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        // The pair's value where write_gap_field() gave it, else its node's.
+        // The pair's value where write_gap_field() gave it, else its node's (none: NaN).
         const auto value = [&](const char *field, const int point, const std::int64_t node)
         {
-          if (const auto it = pair_fields_.find(field); it != pair_fields_.end())
+          if (const auto it = pair_fields_.find(field);
+              it != pair_fields_.end() && gap.pair[point] >= 0)
             return it->second[static_cast<std::size_t>(gap.pair[point])];
           const auto it = fields_.find(field);
-          return it == fields_.end() ? nan : it->second[static_cast<std::size_t>(node)];
+          return it == fields_.end() || node < 0 ? nan : it->second[static_cast<std::size_t>(node)];
         };
         const std::string temporary = file + ".tmp";
         errno = 0;

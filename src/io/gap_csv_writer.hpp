@@ -29,6 +29,9 @@ class RowGather;
 /// gap is the sum of contact_pressure x area); "nan" for what the run does not have. Each header is
 /// "NAME [UNIT]". The gap fields are the pairs' (write_gap_field()), else their nodes a's. The node
 /// fields are gathered to rank 0, which writes each file under a temporary name and renames it.
+/// A contact pair of Mesh::contact_pairs has a table too, BASE.pair_NAME-NNNNNN.csv: a row per
+/// node of its secondary side set's faces (the node fields there; temperature_b "nan", area
+/// each face's share).
 /// Collective; InputError on every rank when a file cannot be written.
 class GapCsvWriter final : public ResultsWriter
 {

@@ -45,6 +45,67 @@ GapSurface::GapSurface(const Mesh &mesh, const int gap)
     faces.push_back(std::move(nodes));
     face_types.push_back(type);
   }
+  set_plane_coordinates(normal, centroid, total_area);
+}
+
+GapSurface::GapSurface(const Mesh &mesh, const SideSet &side_set)
+{
+  std::map<int, std::int64_t> point_of_node;
+  for (int k = 0; k < side_set.n_sides(); ++k)
+  {
+    const int n =
+        ReferenceCell::of(mesh.reference_cell(side_set.cells[k]).face_type(side_set.faces[k]))
+            .n_nodes();
+    for (int i = 0; i < n; ++i)
+      point_of_node[mesh.face_node(side_set.cells[k], side_set.faces[k], i)] = 0;
+  }
+  for (auto &[node, point] : point_of_node)
+  {
+    point = static_cast<std::int64_t>(points.size());
+    points.push_back(mesh.coordinates[node]);
+    pair.push_back(-1);
+    node_a.push_back(node);
+    node_b.push_back(-1);
+  }
+  area.assign(points.size(), 0.0);
+  Point normal{0.0, 0.0, 0.0}, centroid{0.0, 0.0, 0.0};
+  double total_area = 0.0;
+  for (int k = 0; k < side_set.n_sides(); ++k)
+  {
+    const CellType type = mesh.reference_cell(side_set.cells[k]).face_type(side_set.faces[k]);
+    const ReferenceCell &face = ReferenceCell::of(type);
+    const int n = face.n_nodes();
+    std::vector<std::int64_t> nodes(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      nodes[i] = point_of_node.at(mesh.face_node(side_set.cells[k], side_set.faces[k], i));
+    // Newell's vector of the corners (listed first, in order round the face): 2 A n.
+    const int corners = face.n_vertices();
+    Point twice{0.0, 0.0, 0.0};
+    for (int i = 0; i < corners; ++i)
+    {
+      const Point &x = points[nodes[i]], &y = points[nodes[(i + 1) % corners]];
+      twice[0] += (x[1] - y[1]) * (x[2] + y[2]);
+      twice[1] += (x[2] - y[2]) * (x[0] + y[0]);
+      twice[2] += (x[0] - y[0]) * (x[1] + y[1]);
+    }
+    const double face_area = 0.5 * std::sqrt(dot(twice, twice));
+    for (const std::int64_t p : nodes)
+      area[p] += face_area / n;
+    for (int d = 0; d < 3; ++d)
+    {
+      normal[d] += 0.5 * twice[d];
+      for (const std::int64_t p : nodes)
+        centroid[d] += face_area / n * points[p][d];
+    }
+    total_area += face_area;
+    faces.push_back(std::move(nodes));
+    face_types.push_back(type);
+  }
+  set_plane_coordinates(normal, centroid, total_area);
+}
+
+void GapSurface::set_plane_coordinates(Point normal, Point centroid, const double total_area)
+{
   if (points.empty())
     return;
   const double length = std::sqrt(dot(normal, normal));

@@ -1,7 +1,8 @@
 #pragma once
 /// Private to src/io: a gap (one of the mesh's gap side sets) as a surface of its own, seen
 /// from side a: one point per gap pair, one face (all its nodes) per cut face, and coordinates
-/// in the gap's plane.
+/// in the gap's plane; or the faces of a side set (a contact pair's secondary surface), one
+/// point per node.
 #include "mesh/mesh.hpp"
 
 #include <array>
@@ -26,6 +27,11 @@ struct GapSurface
 {
   /// Gap `gap`: an index into Mesh::gap_side_sets.
   GapSurface(const Mesh &mesh, int gap);
+  /// The faces of `side_set` (e.g. a contact pair's secondary side set): a point per node of
+  /// its faces (increasing node id), `pair` -1, node_a the node, node_b -1, `area` each
+  /// face's area shared equally among its nodes, and n the area-weighted mean of the faces'
+  /// outward normals.
+  GapSurface(const Mesh &mesh, const SideSet &side_set);
   int n_points() const { return static_cast<int>(points.size()); }
   int n_faces() const { return static_cast<int>(faces.size()); }
   /// The type every face has, or none when the faces differ (or there are none).
@@ -39,6 +45,10 @@ struct GapSurface
   std::vector<std::int64_t> node_b;             ///< its twin on side b
   std::vector<double> area;                     ///< the pair's share of the gap area [m^2]
   std::vector<double> s, t;                     ///< in-plane coordinates [m]
+
+private:
+  /// s and t of every point, from the area-weighted sums of the normal and of the position.
+  void set_plane_coordinates(Point normal, Point centroid, double total_area);
 };
 /// The faces of `gap` as XDMF's Mixed topology lists them: per face its XDMF type code
 /// (ReferenceCell::xdmf_code) and its nodes.

@@ -82,16 +82,13 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
       cell_rows(owned_cells, mesh.n_cells()), file(communicator, base_path + ".running.h5"),
       index(communicator, base_path + ".running.xmf", file.path(), mesh.n_nodes(), mesh.n_cells(),
             internal::xdmf_topology(mesh, own_topology_dataset)),
-      columns(history_columns(mesh.gap_side_sets))
+      columns(history_columns(mesh.gap_side_sets, mesh.contact_pair_names()))
 {
   std::map<int, std::size_t> owned_position;
   for (std::size_t i = 0; i < owned_nodes.size(); ++i)
     owned_position[owned_nodes[i]] = i;
-  for (int g = 0; g < static_cast<int>(mesh.gap_side_sets.size()); ++g)
+  const auto add_grid = [&](const std::string &name, internal::GapSurface surface)
   {
-    internal::GapSurface surface(mesh, g);
-    if (surface.n_points() == 0)
-      continue;
     std::vector<int> owned_points;
     std::vector<std::size_t> value_row;
     for (int p = 0; p < surface.n_points(); ++p)
@@ -102,11 +99,19 @@ Hdf5XdmfWriter::Impl::Impl(const MPI_Comm communicator, const std::string &base_
         value_row.push_back(it->second);
       }
     const internal::OwnedRows rows(owned_points, surface.n_points());
-    index.add_gap(mesh.gap_name(g), surface.n_points(), surface.n_faces(), surface.face_type(),
+    index.add_gap(name, surface.n_points(), surface.n_faces(), surface.face_type(),
                   internal::mixed_gap_connectivity(surface).size());
-    gaps.push_back({mesh.gap_name(g), std::move(surface), std::move(owned_points),
-                    std::move(value_row), rows, internal::H5Handle()});
-  }
+    gaps.push_back({name, std::move(surface), std::move(owned_points), std::move(value_row), rows,
+                    internal::H5Handle()});
+  };
+  for (int g = 0; g < static_cast<int>(mesh.gap_side_sets.size()); ++g)
+    if (internal::GapSurface surface(mesh, g); surface.n_points() > 0)
+      add_grid(mesh.gap_name(g), std::move(surface));
+  // A contact pair's secondary surface: its side set's faces, the node fields at its nodes.
+  for (const ContactPairSurface &pair : mesh.contact_pairs)
+    for (const SideSet &side_set : mesh.side_sets)
+      if (side_set.id == pair.secondary_side_set)
+        add_grid(pair.surface_name(), internal::GapSurface(mesh, side_set));
 }
 
 void Hdf5XdmfWriter::Impl::describe(const hid_t group, const std::string &name) const
@@ -228,7 +233,8 @@ std::vector<double> Hdf5XdmfWriter::Impl::gap_values(const GapGrid &grid, const 
   std::vector<double> at_gap;
   at_gap.reserve(grid.value_row.size() * static_cast<std::size_t>(n_components));
   const auto of_pairs = gap_fields.find(name);
-  if (of_pairs != gap_fields.end() && n_components == 1)
+  const bool of_gap = !grid.surface.pair.empty() && grid.surface.pair.front() >= 0;
+  if (of_pairs != gap_fields.end() && n_components == 1 && of_gap)
   {
     for (const int p : grid.owned_points)
       at_gap.push_back(of_pairs->second[static_cast<std::size_t>(grid.surface.pair[p])]);
@@ -382,7 +388,7 @@ void Hdf5XdmfWriter::write_history(const std::vector<double> &row)
 {
   internal::check_usage(row.size() == impl_->columns.size(), "row.size() == columns.size()",
                         "a history row needs one value per column of "
-                        "history_columns(mesh.gap_side_sets)");
+                        "history_columns(mesh.gap_side_sets, mesh.contact_pair_names())");
   impl_->pending_history.push_back(row);
 }
 

@@ -15,7 +15,12 @@
 ///   /gap/steps/NNNNNN/  every node field of step NNNNNN at the gap points (the pairs'
 ///                       values of write_gap_field() where given)
 ///   /gap_ID/...         the same for each further gap, ID its side set (Mesh::gap_name())
-///   /history/NAME       one dataset per history column (history_columns(mesh's gaps)), a row per
+///   /pair_NAME/...      the same for each contact pair NAME (Mesh::contact_pairs): the faces of
+///                       its secondary side set, a point per node (node_a the node, node_b and
+///                       the pair index -1, area each face's share), its steps every node field
+///                       at those nodes
+///   /history/NAME       one dataset per history column (history_columns(mesh's gaps, pairs)), a
+///   row per
 ///                       step; rows are held back and written at each end_step and finish
 /// Rows are in global-id order whatever the number of ranks: each rank writes
 /// the rows it owns. The root holds the run's metadata (kiln_version, created,

@@ -118,21 +118,34 @@ std::vector<std::string> gap_history_columns(const int id)
           "contact_area" + suffix, "normal_force" + suffix, "gap_heat_flow" + suffix};
 }
 
-std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets)
+std::vector<std::string> pair_history_columns(const std::string &pair)
+{
+  return {"normal_force_" + pair, "contact_area_" + pair};
+}
+
+std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets,
+                                           const std::vector<std::string> &pairs)
 {
   std::vector<HistoryColumn> columns = history_columns();
-  if (gap_side_sets.size() < 2)
-    return columns;
-  for (const int id : gap_side_sets)
+  if (gap_side_sets.size() >= 2)
+    for (const int id : gap_side_sets)
+    {
+      const std::vector<std::string> names = gap_history_columns(id);
+      const std::string of = " of gap side set " + std::to_string(id);
+      columns.push_back({names[0], "m", "smallest gap opening over the pairs" + of});
+      columns.push_back({names[1], "m", "largest gap opening over the pairs" + of});
+      columns.push_back({names[2], "-", "pairs in contact" + of});
+      columns.push_back({names[3], "m^2", "area of the pairs in contact" + of});
+      columns.push_back({names[4], "N", "normal force across the gap" + of + ", compression > 0"});
+      columns.push_back({names[5], "W", "heat across the gap" + of + " from side a to side b"});
+    }
+  for (const std::string &pair : pairs)
   {
-    const std::vector<std::string> names = gap_history_columns(id);
-    const std::string of = " of gap side set " + std::to_string(id);
-    columns.push_back({names[0], "m", "smallest gap opening over the pairs" + of});
-    columns.push_back({names[1], "m", "largest gap opening over the pairs" + of});
-    columns.push_back({names[2], "-", "pairs in contact" + of});
-    columns.push_back({names[3], "m^2", "area of the pairs in contact" + of});
-    columns.push_back({names[4], "N", "normal force across the gap" + of + ", compression > 0"});
-    columns.push_back({names[5], "W", "heat across the gap" + of + " from side a to side b"});
+    const std::vector<std::string> names = pair_history_columns(pair);
+    const std::string of = " of the contact pair \"" + pair + "\"";
+    columns.push_back({names[0], "N", "normal force sum_j D_jj P_j" + of + ", compression > 0"});
+    columns.push_back({names[1], "m^2", "area in contact sum_(j active) D_jj" + of});
+    // The heat flow across the pair (W) joins this block with the heat across pairs.
   }
   return columns;
 }

@@ -22,8 +22,14 @@ const std::vector<HistoryColumn> &history_columns();
 /// The columns of a run on a mesh split at `gap_side_sets` (Mesh::gap_side_sets): those of
 /// history_columns(), and with several gaps a block per gap after them, named after the
 /// gap's side set ID: min_gap_gapID, max_gap_gapID, active_pairs_gapID, contact_area_gapID,
-/// normal_force_gapID, gap_heat_flow_gapID (the columns without suffix are over every gap).
-std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets);
+/// normal_force_gapID, gap_heat_flow_gapID (the columns without suffix are over every gap);
+/// then a block per contact pair of Mechanics/Contact/Pairs (`pairs`: their names, the
+/// input's order, Mesh::contact_pairs): normal_force_NAME, contact_area_NAME. The columns
+/// without suffix are over the split gaps only.
+std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets,
+                                           const std::vector<std::string> &pairs = {});
+/// The names of the columns of contact pair NAME's block.
+std::vector<std::string> pair_history_columns(const std::string &pair);
 /// The names of the columns of gap ID's block (history_columns(gap_side_sets) order).
 std::vector<std::string> gap_history_columns(int id);
 

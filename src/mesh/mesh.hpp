@@ -31,6 +31,17 @@ inline constexpr int hex_face_nodes[n_hex_faces][4] = {{0, 1, 5, 4}, {1, 2, 6, 5
                                                        {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
 
 /// A side set: cell faces, as Exodus stores it (face = local face, Exodus side - 1).
+/// A contact pair between separately meshed bodies (Mechanics/Contact/Pairs) as the results
+/// show it: its name and the side set of its secondary surface (the nodes of its rows).
+struct ContactPairSurface
+{
+  std::string name;
+  int secondary_side_set = 0;
+  /// Its surface's name in the results (an HDF5 group and XDMF grid, a CSV file's suffix):
+  /// "pair_NAME".
+  std::string surface_name() const { return "pair_" + name; }
+};
+
 struct SideSet
 {
   int id = 0;
@@ -83,6 +94,17 @@ struct Mesh
   std::vector<GapPair> gap_pairs; ///< in increasing (node_a, node_b) order
   std::vector<GapFace> gap_faces; ///< the cut faces, seen from side a
   std::vector<int> parent_node;   ///< per node: the original node it copies (itself if not a twin)
+  /// The contact pairs of Mechanics/Contact/Pairs (the input's order) as the results show
+  /// them (their secondary surfaces and history columns); set with their rows.
+  std::vector<ContactPairSurface> contact_pairs;
+  /// Their names, in order.
+  std::vector<std::string> contact_pair_names() const
+  {
+    std::vector<std::string> names;
+    for (const ContactPairSurface &pair : contact_pairs)
+      names.push_back(pair.name);
+    return names;
+  }
 
   int n_nodes() const { return static_cast<int>(coordinates.size()); }
   /// Whether side set `id` is one the mesh was split at.

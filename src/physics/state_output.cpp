@@ -1,6 +1,7 @@
 #include "physics/state_output.hpp"
 
 #include "base/errors.hpp"
+#include "contact/gap_opening.hpp"
 #include "discretization/element_values.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
@@ -99,9 +100,27 @@ StateOutput::ContactOutput StateOutput::contact_output() const
   const std::size_t n_pairs = mesh_.gap_pairs.size();
   ContactOutput out{std::vector<double>(mesh_.n_nodes(), nan),
                     std::vector<double>(mesh_.n_nodes(), nan), std::vector<double>(n_pairs, nan),
-                    std::vector<double>(n_pairs, nan)};
+                    std::vector<double>(n_pairs, nan), std::vector<double>(mesh_.n_nodes(), nan)};
   if (interfaces_.empty())
     return out;
+  // The pairings' rows: g_j from their owners (one rank each: the sum is exact), NaN off them.
+  std::vector<double> local(2 * static_cast<std::size_t>(mesh_.n_nodes()), 0.0),
+      global(local.size(), 0.0);
+  const auto u = [this](const int node) { return fields_.u(node); };
+  for (const auto &strategy : interfaces_)
+    if (!strategy->interface().split())
+      for (const int k : strategy->interface().owned_rows())
+      {
+        const ContactInterface::Row &row = strategy->interface().rows()[k];
+        local[2 * row.node] =
+            gap_opening(row.normal, row.gap0, row.node, row.partners, row.weights, u);
+        local[2 * row.node + 1] = 1.0;
+      }
+  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
+                     static_cast<int>(local.size()), local.data(), global.data());
+  for (int n = 0; n < mesh_.n_nodes(); ++n)
+    if (global[2 * n + 1] > 0.0)
+      out.opening[n] = global[2 * n];
   // The k-th pair of gap g's interface is the k-th pair of gap g in Mesh::gap_pairs.
   std::vector<std::vector<int>> mesh_pairs(mesh_.gap_side_sets.size());
   for (std::size_t p = 0; p < n_pairs; ++p)

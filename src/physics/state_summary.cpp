@@ -84,11 +84,29 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
   std::vector<double> sums(3 * n_gaps, 0.0),
       extremes(2 * n_gaps, -std::numeric_limits<double>::infinity());
   std::vector<int> n_pairs(n_gaps, 0);
+  // Per pairing: rows in contact, area in contact, force (sums).
+  std::vector<double> pair_sums;
   for (const InterfaceStrategy *contact : interfaces)
   {
     const ContactInterface &interface = contact->interface();
     if (!interface.split())
-      continue; // a pairing's rows: per pair output is a later step
+    {
+      PairFigures pair;
+      pair.n_rows = interface.n_rows();
+      summary.pairs.push_back(pair);
+      double sums_of_pair[3] = {0.0, 0.0, 0.0};
+      const auto &owned = interface.owned_rows();
+      for (std::size_t i = 0; i < owned.size(); ++i)
+        if (contact->active()[i])
+        {
+          const double area = interface.rows()[owned[i]].area;
+          sums_of_pair[0] += 1.0;
+          sums_of_pair[1] += area;
+          sums_of_pair[2] += area * contact->pressure()[i];
+        }
+      pair_sums.insert(pair_sums.end(), sums_of_pair, sums_of_pair + 3);
+      continue;
+    }
     const std::size_t g = static_cast<std::size_t>(interface.gap());
     n_pairs[g] += interface.n_rows();
     const auto &owned = interface.owned_rows();
@@ -111,6 +129,16 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
                      totals.data());
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, static_cast<int>(extremes.size()), extremes.data(),
                      maxima.data());
+  std::vector<double> pair_totals(pair_sums.size(), 0.0);
+  if (!pair_sums.empty())
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(pair_sums.size()),
+                       pair_sums.data(), pair_totals.data());
+  for (std::size_t p = 0; p < summary.pairs.size(); ++p)
+  {
+    summary.pairs[p].n_active = static_cast<int>(pair_totals[3 * p]);
+    summary.pairs[p].contact_area = pair_totals[3 * p + 1];
+    summary.pairs[p].normal_force = pair_totals[3 * p + 2];
+  }
   summary.gaps.assign(n_gaps, GapFigures{});
   double all_max[2] = {-std::numeric_limits<double>::infinity(),
                        -std::numeric_limits<double>::infinity()};

@@ -22,6 +22,18 @@ struct GapFigures
   double heat_flow = std::numeric_limits<double>::quiet_NaN(); ///< from side a to b [W]
 };
 
+/// The figures of one contact pair of Mechanics/Contact/Pairs (every rank alike), over its
+/// rows j (the secondary side's nodes with a row).
+struct PairFigures
+{
+  int n_rows = 0;            ///< rows of the pairing
+  int n_active = 0;          ///< rows in contact
+  double contact_area = 0.0; ///< sum over the rows in contact of D_jj [m^2]
+  double normal_force = 0.0; ///< sum_j D_jj P_j, compression > 0 [N]
+  /// The heat across the pair (primary to secondary) [W]: NaN until the heat crosses pairs.
+  double heat_flow = std::numeric_limits<double>::quiet_NaN();
+};
+
 /// Over the whole mesh (every rank alike).
 struct StateSummary
 {
@@ -40,6 +52,9 @@ struct StateSummary
   double max_penetration = 0.0;  ///< max over the pairs of -g, at least 0 [m]
   /// Per gap (Mesh::gap_side_sets order); the totals above are over all of them.
   std::vector<GapFigures> gaps;
+  /// Per contact pair (the pairings' interfaces in Mechanics/Contact/Pairs order); not in the
+  /// totals above.
+  std::vector<PairFigures> pairs;
 };
 
 /// The temperature figures at `fields` (`conduction`: each cell's enthalpy H(T); nothing
@@ -50,7 +65,7 @@ void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const Nodal
 void summarize_displacement(const DofManager &dofs, const NodalFields &fields,
                             StateSummary &summary);
 /// The contact figures of the decision at `fields`' state, in all and per gap (`summary.gaps`
-/// sized to the mesh's gaps). Collective.
+/// sized to the mesh's gaps), and per contact pair (`summary.pairs`). Collective.
 void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
                        const NodalFields &fields, const Teuchos::Comm<int> &comm,
                        StateSummary &summary);

@@ -34,6 +34,8 @@ struct Run
 {
   kiln::Mesh mesh;
   std::size_t n_gap_pairs = 0;
+  /// Rows of the contact pairs (Mechanics/Contact/Pairs): a node each in the output.
+  std::size_t n_pair_rows = 0;
   double seconds = 0.0;
 };
 

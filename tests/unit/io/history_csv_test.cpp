@@ -164,18 +164,23 @@ TEST(HistoryCsv, RowsAppendedAndContinuedAfterARestart)
   }
 }
 
+namespace
+{
+/// The names of `columns`.
+std::vector<std::string> names(const std::vector<kiln::HistoryColumn> &columns)
+{
+  std::vector<std::string> out;
+  for (const auto &c : columns)
+    out.push_back(c.name);
+  return out;
+}
+} // namespace
+
 // A mesh with one gap (or none) keeps the columns of history_columns() (gold files and tools
 // read them by name); with several, a block of six columns per gap follows them, named after
 // the gap's side set.
 TEST(HistoryCsv, ColumnsPerGapOnlyWithSeveralGaps)
 {
-  const auto names = [](const std::vector<kiln::HistoryColumn> &columns)
-  {
-    std::vector<std::string> out;
-    for (const auto &c : columns)
-      out.push_back(c.name);
-    return out;
-  };
   const std::vector<std::string> base = names(kiln::history_columns());
   EXPECT_EQ(names(kiln::history_columns(std::vector<int>{})), base);
   EXPECT_EQ(names(kiln::history_columns(std::vector<int>{10})), base);
@@ -266,4 +271,29 @@ TEST(HistoryCsv, ARestartWithARunningPathKeepsTheEarlierHistoryWhole)
   comm->barrier();
   if (comm->getRank() == 0)
     std::filesystem::remove(path);
+}
+
+// Contact pairs (Mechanics/Contact/Pairs): a block of two columns per pair after the gaps',
+// named after the pair, in the input's order; without pairs nothing moves.
+TEST(HistoryCsv, ColumnsPerContactPair)
+{
+  const std::vector<std::string> base = names(kiln::history_columns());
+  EXPECT_EQ(names(kiln::history_columns(std::vector<int>{10}, {})), base);
+  const std::vector<std::string> pairs =
+      names(kiln::history_columns(std::vector<int>{}, {"cut", "lid"}));
+  ASSERT_EQ(pairs.size(), base.size() + 4);
+  EXPECT_TRUE(std::equal(base.begin(), base.end(), pairs.begin()));
+  const std::vector<std::string> tail = {"normal_force_cut", "contact_area_cut", "normal_force_lid",
+                                         "contact_area_lid"};
+  EXPECT_TRUE(std::equal(tail.begin(), tail.end(), pairs.end() - 4));
+  EXPECT_EQ(kiln::pair_history_columns("cut"),
+            (std::vector<std::string>{"normal_force_cut", "contact_area_cut"}));
+  // After the gaps' blocks.
+  const std::vector<std::string> both =
+      names(kiln::history_columns(std::vector<int>{10, 12}, {"cut"}));
+  ASSERT_EQ(both.size(), base.size() + 12 + 2);
+  EXPECT_EQ(both[base.size() + 12], "normal_force_cut");
+  const auto columns = kiln::history_columns(std::vector<int>{}, {"cut"});
+  EXPECT_EQ(columns[base.size()].unit, "N");
+  EXPECT_EQ(columns[base.size() + 1].unit, "m^2");
 }
