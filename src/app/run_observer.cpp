@@ -78,7 +78,7 @@ void RunObserver::record(const TimeStepper::State &state, const NewtonSolver::Re
     }
   // A block per contact pair (history_columns(gap_side_sets, contact_pairs)).
   for (const PairFigures &pair : s.pairs)
-    row.insert(row.end(), {pair.normal_force, pair.contact_area});
+    row.insert(row.end(), {pair.normal_force, pair.contact_area, pair.heat_flow});
   c_.history.append(row);
   for (const auto &writer : c_.writers)
     writer->write_history(row);

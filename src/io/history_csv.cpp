@@ -120,7 +120,7 @@ std::vector<std::string> gap_history_columns(const int id)
 
 std::vector<std::string> pair_history_columns(const std::string &pair)
 {
-  return {"normal_force_" + pair, "contact_area_" + pair};
+  return {"normal_force_" + pair, "contact_area_" + pair, "heat_flow_" + pair};
 }
 
 std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets,
@@ -145,7 +145,9 @@ std::vector<HistoryColumn> history_columns(const std::vector<int> &gap_side_sets
     const std::string of = " of the contact pair \"" + pair + "\"";
     columns.push_back({names[0], "N", "normal force sum_j D_jj P_j" + of + ", compression > 0"});
     columns.push_back({names[1], "m^2", "area in contact sum_(j active) D_jj" + of});
-    // The heat flow across the pair (W) joins this block with the heat across pairs.
+    columns.push_back({names[2], "W",
+                       "heat across the gap" + of +
+                           " from the secondary to the primary side (nan without Heat Transfer)"});
   }
   return columns;
 }

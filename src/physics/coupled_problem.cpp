@@ -175,12 +175,17 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
     terms_->add_boundary_conditions(thermal_->conditions());
     if (gap != nullptr)
       terms_->set_interface_kernel(*gap);
+    std::size_t pair_index = 0; // among the pairings with rows (each an interface)
     for (const PairingRows &pairing : pairings)
+    {
       if (pairing.heat != nullptr)
       {
         pair_heat_.push_back(pairing.heat);
+        pair_heat_pair_.push_back(pairing.rows.empty() ? std::size_t(-1) : pair_index);
         terms_->add_pair_heat(*pairing.heat);
       }
+      pair_index += pairing.rows.empty() ? 0 : 1;
+    }
   }
   if (mechanics_)
   {
@@ -593,7 +598,15 @@ StateSummary CoupledProblem::summary(const Vector &x)
     decide(x);
   else
     prepare(x);
-  return output().summary();
+  StateSummary s = output().summary();
+  if (!pair_heat_.empty())
+  {
+    const std::vector<double> flow = terms_->pair_heat_flow(*fields_);
+    for (std::size_t h = 0; h < flow.size(); ++h)
+      if (pair_heat_pair_[h] < s.pairs.size())
+        s.pairs[pair_heat_pair_[h]].heat_flow = flow[h];
+  }
+  return s;
 }
 
 int CoupledProblem::n_pairs() const

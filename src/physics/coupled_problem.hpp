@@ -216,6 +216,8 @@ private:
       pairings_; ///< per gap with pairs, then per pairing
   /// The heat across the pairs' gaps (those with a term on), kept for terms_.
   std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
+  /// Per term of pair_heat_, its pair's index in StateSummary::pairs.
+  std::vector<std::size_t> pair_heat_pair_;
   std::unique_ptr<Assembler> assembler_;
   /// The strategies across the gap (today one, the Contact/"Kind"), and their decision.
   std::vector<std::unique_ptr<InterfaceStrategy>> interfaces_;

@@ -30,7 +30,8 @@ struct PairFigures
   int n_active = 0;          ///< rows in contact
   double contact_area = 0.0; ///< sum over the rows in contact of D_jj [m^2]
   double normal_force = 0.0; ///< sum_j D_jj P_j, compression > 0 [N]
-  /// The heat across the pair (primary to secondary) [W]: NaN until the heat crosses pairs.
+  /// The heat across the pair from the secondary to the primary side [W]
+  /// (MortarGapHeat::heat_flow over its cells); NaN for a pair without Heat Transfer.
   double heat_flow = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -135,6 +135,10 @@ Figures run(const int n_angle, const int n_radial)
     const std::vector<double> flow = problem.pair_heat_flow(x);
     EXPECT_EQ(flow.size(), 1u);
     f.Q = flow.at(0);
+    // The history's heat_flow_<pair> column (StateSummary::pairs) is the same figure.
+    const kiln::StateSummary summary = problem.summary(x);
+    EXPECT_EQ(summary.pairs.size(), 1u);
+    EXPECT_DOUBLE_EQ(summary.pairs.at(0).heat_flow, f.Q);
     const std::vector<double> T = kiln_test::all_node_values(*sim, x);
     int n1 = 0, n2 = 0;
     for (int n = 0; n < sim->mesh().n_nodes(); ++n)

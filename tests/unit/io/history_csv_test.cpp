@@ -281,19 +281,20 @@ TEST(HistoryCsv, ColumnsPerContactPair)
   EXPECT_EQ(names(kiln::history_columns(std::vector<int>{10}, {})), base);
   const std::vector<std::string> pairs =
       names(kiln::history_columns(std::vector<int>{}, {"cut", "lid"}));
-  ASSERT_EQ(pairs.size(), base.size() + 4);
+  ASSERT_EQ(pairs.size(), base.size() + 6);
   EXPECT_TRUE(std::equal(base.begin(), base.end(), pairs.begin()));
-  const std::vector<std::string> tail = {"normal_force_cut", "contact_area_cut", "normal_force_lid",
-                                         "contact_area_lid"};
-  EXPECT_TRUE(std::equal(tail.begin(), tail.end(), pairs.end() - 4));
+  const std::vector<std::string> tail = {"normal_force_cut", "contact_area_cut", "heat_flow_cut",
+                                         "normal_force_lid", "contact_area_lid", "heat_flow_lid"};
+  EXPECT_TRUE(std::equal(tail.begin(), tail.end(), pairs.end() - 6));
   EXPECT_EQ(kiln::pair_history_columns("cut"),
-            (std::vector<std::string>{"normal_force_cut", "contact_area_cut"}));
+            (std::vector<std::string>{"normal_force_cut", "contact_area_cut", "heat_flow_cut"}));
   // After the gaps' blocks.
   const std::vector<std::string> both =
       names(kiln::history_columns(std::vector<int>{10, 12}, {"cut"}));
-  ASSERT_EQ(both.size(), base.size() + 12 + 2);
+  ASSERT_EQ(both.size(), base.size() + 12 + 3);
   EXPECT_EQ(both[base.size() + 12], "normal_force_cut");
   const auto columns = kiln::history_columns(std::vector<int>{}, {"cut"});
   EXPECT_EQ(columns[base.size()].unit, "N");
   EXPECT_EQ(columns[base.size() + 1].unit, "m^2");
+  EXPECT_EQ(columns[base.size() + 2].unit, "W");
 }
