@@ -13,7 +13,7 @@
 // one run with outputs every 10 s to 50 s, then at 55, 58, 59.5, 61, 62.5, 64, 66 and 150 s:
 // while every row is open, the secondary surface's mean opening sum_j D_jj g_j / A (D_jj the
 // pair output's nodal "area") against the hand calculation g0 - L (1 + nu) alpha (T_mean -
-// T_ref), T_mean the history's volume average, to 1e-9 of g0 (measured within 3.3e-18 m, 1e-12
+// T_ref), T_mean the history's volume average, to 1e-9 of g0 (measured within 3.7e-18 m, 1e-12
 // of g0, at every open output): exact for the discretization although the temperature is not
 // uniform (each half heated at its end face), since the rollers leave the sections free of
 // resultant force (doc/contact.md, "The finite gap's closing"). So the mean opening vanishes at
