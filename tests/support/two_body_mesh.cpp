@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iterator>
 #include <random>
 
 namespace kiln_test
@@ -102,6 +104,43 @@ kiln::Mesh two_cylinder_shells(const std::array<int, 2> &n1, const std::array<in
   kiln::Mesh mesh;
   add_body(mesh, {n1[0], n1[1], 1}, shell(1.5, 2.0), 1, 3, 1);
   add_body(mesh, {n2[0], n2[1], 1}, shell(2.0 + gap, 2.5), 2, 2, 4);
+  return mesh;
+}
+
+kiln::Mesh concentric_shells(const std::array<double, 4> &radii, const std::array<int, 2> &n1,
+                             const std::array<int, 2> &n2)
+{
+  // (angle, z, r) is right-handed like (x, y, z); zeta runs outwards.
+  const auto shell = [](const double r0, const double r1)
+  {
+    return [r0, r1](const double a, const double z, const double r)
+    {
+      const double radius = r0 + (r1 - r0) * r;
+      return kiln::Point{radius * std::cos(a), radius * std::sin(a), z};
+    };
+  };
+  kiln::Mesh mesh;
+  add_body(mesh, {n1[0], 1, n1[1]}, shell(radii[0], radii[1]), 1, 3, 1);
+  add_body(mesh, {n2[0], 1, n2[1]}, shell(radii[2], radii[3]), 2, 2, 4);
+  // The side faces on the planes: Exodus sides 1 to 4 (faces 0 to 3) of each cell.
+  const int face_nodes[4][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 3, 7, 4}};
+  // Side set 5 + plane: angle 0, angle 1 rad, z = 0 (7), z = 1 (7).
+  const std::array<std::function<bool(const kiln::Point &)>, 4> on_plane = {
+      [](const kiln::Point &x) { return std::abs(x[1]) < 1e-12; },
+      [](const kiln::Point &x)
+      { return std::abs(x[1] * std::cos(1.0) - x[0] * std::sin(1.0)) < 1e-12; },
+      [](const kiln::Point &x) { return std::abs(x[2]) < 1e-12; },
+      [](const kiln::Point &x) { return std::abs(x[2] - 1.0) < 1e-12; }};
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    for (int f = 0; f < 4; ++f)
+      for (int plane = 0; plane < 4; ++plane)
+        if (std::all_of(std::begin(face_nodes[f]), std::end(face_nodes[f]),
+                        [&](const int i)
+                        { return on_plane[plane](mesh.coordinates[mesh.cell_nodes(c)[i]]); }))
+        {
+          side_set(mesh, 5 + std::min(plane, 2)).cells.push_back(c);
+          side_set(mesh, 5 + std::min(plane, 2)).faces.push_back(f);
+        }
   return mesh;
 }
 

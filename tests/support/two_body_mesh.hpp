@@ -32,6 +32,15 @@ kiln::Mesh two_flat_bodies(const std::array<int, 2> &n1, const std::array<int, 2
 kiln::Mesh two_cylinder_shells(const std::array<int, 2> &n1, const std::array<int, 2> &n2,
                                double gap);
 
+/// Two concentric cylindrical shell arcs about the z axis over the angle [0, 1] rad and z in
+/// [0, 1] m, for a whole run: body 1 (block 1) on the radii [radii[0], radii[1]], body 2 (block
+/// 2) on [radii[2], radii[3]] [m], with n1 and n2 (angle, radius) cells and one along z. Side
+/// sets 1: body 1's outer face, 2: body 2's inner one (they face each other across the gap), 3:
+/// body 1's inner face, 4: body 2's outer one; and, of both bodies, 5: the faces on the plane
+/// angle 0, 6: on the plane angle 1 rad, 7: on z = 0 and z = 1 (for symmetry conditions).
+kiln::Mesh concentric_shells(const std::array<double, 4> &radii, const std::array<int, 2> &n1,
+                             const std::array<int, 2> &n2);
+
 /// Moves every node by a deterministic pseudo-random vector of components in
 /// [-amplitude, amplitude] [m].
 void perturb(kiln::Mesh &mesh, double amplitude);
