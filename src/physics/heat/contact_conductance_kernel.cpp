@@ -105,9 +105,11 @@ ContactConductanceKernel::ContactConductanceKernel(
               "the contact conductance takes models without state");
 }
 
-ContactConductanceKernel ContactConductanceKernel::for_materials(
-    const Parameters &p, const Material &material, const Mesh &mesh, const MaterialMap *materials,
-    const std::vector<int> &cells, const std::string &parameter, const std::string &asked_by)
+ContactConductanceKernel
+ContactConductanceKernel::for_materials(const Parameters &p, const Material &material,
+                                        const Mesh &mesh, const MaterialMap *materials,
+                                        const std::vector<int> &cells, const std::string &parameter,
+                                        const std::string &asked_by, const std::string &remedy)
 {
   std::vector<std::shared_ptr<const ConstitutiveModel>> models;
   std::map<int, int> model_of_block;
@@ -131,8 +133,8 @@ ContactConductanceKernel ContactConductanceKernel::for_materials(
                               << (materials != nullptr ? materials->name(i) : "Material")
                               << "\" beside the gap has a viscoplastic Model, whose stress needs "
                                  "the state at its quadrature points, which the gap's terms do "
-                                 "not read; use \"Constant\", or an elastic material beside the "
-                                 "gap");
+                                 "not read; "
+                              << remedy);
   return ContactConductanceKernel(p, mesh, std::move(models), std::move(model_of_block));
 }
 

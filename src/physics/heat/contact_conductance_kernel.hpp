@@ -56,12 +56,14 @@ public:
   /// is null). An InputError naming `parameter` (the input's path of the parameter that asked
   /// for this conductance, `asked_by` its value in words, e.g. "is \"Contact Dependent\"") and
   /// the material if one of the `cells` beside the gap has a model with state (viscoplastic):
-  /// its stress needs the state at its points, which the gap's terms do not read.
+  /// its stress needs the state at its points, which the gap's terms do not read; `remedy` ends
+  /// the message (what to do instead).
   static ContactConductanceKernel for_materials(const Parameters &p, const Material &material,
                                                 const Mesh &mesh, const MaterialMap *materials,
                                                 const std::vector<int> &cells,
                                                 const std::string &parameter,
-                                                const std::string &asked_by);
+                                                const std::string &asked_by,
+                                                const std::string &remedy);
 
   /// fv: the side-a face; fe_a, fe_b: its two cells, `cells` their global indices (their
   /// blocks' models). Local nodes: 0..n-1 the face's n nodes on side a, n..2n-1 their twins;

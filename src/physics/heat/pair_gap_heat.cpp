@@ -63,7 +63,10 @@ PairGapHeat::PairGapHeat(const Mesh &mesh, const int primary_side_set, const int
       beside.insert(beside.end(), pair.begin(), pair.end());
     contact_ = std::make_unique<const ContactConductanceKernel>(
         ContactConductanceKernel::for_materials(k, *material, mesh, materials, beside,
-                                                where + "/\"Gap Pressure Coefficient\"", "is > 0"));
+                                                where + "/\"Gap Pressure Coefficient\"", "is > 0",
+                                                "set it to 0 (a constant \"Conductance\" "
+                                                "instead), or use an elastic material beside "
+                                                "the pair"));
   }
 }
 

@@ -134,7 +134,7 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
       cells.insert(cells.end(), {face.cell_a, face.cell_b});
     gap_ = std::make_unique<ContactConductanceKernel>(ContactConductanceKernel::for_materials(
         k, material, mesh, materials, cells, where + "/\"Gap Conductance Model\"",
-        "is \"Contact Dependent\""));
+        "is \"Contact Dependent\"", "use \"Constant\", or an elastic material beside the gap"));
   }
   else
   {
