@@ -48,6 +48,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace kiln
@@ -183,9 +184,16 @@ void Simulation::setup()
       }
       if (layout_.temperature && pair.heat_transfer.numParams() > 0)
       {
+        // The contact conductance's pressure reads the materials' elastic laws.
+        std::optional<MaterialMap> materials;
+        if (pair.heat_transfer.isParameter("Gap Pressure Coefficient") &&
+            pair.heat_transfer.get<double>("Gap Pressure Coefficient") > 0.0)
+          materials.emplace(params_, mesh_.block_ids(), input_path_);
         auto heat = std::make_shared<const PairGapHeat>(
             mesh_, pair.primary_side_set, pair.secondary_side_set, pairing.search_distance(),
-            pair.heat_transfer, pair.where + "/Heat Transfer");
+            pair.heat_transfer, pair.where + "/Heat Transfer",
+            materials ? &materials->uniform_material() : nullptr,
+            materials ? &*materials : nullptr);
         if (heat->active())
           pairings.back().heat = std::move(heat);
       }

@@ -1,6 +1,7 @@
 #include "io/field_output.hpp"
 
 #include "contact/gap_opening.hpp"
+#include "mesh/contact_surface.hpp"
 #include "physics/mechanics/stress_measures.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
@@ -16,6 +17,15 @@ FieldOutput::FieldOutput(CoupledProblem &problem, const Mesh &mesh, const DofMan
     for (const int n : {mesh.gap_pairs[p].node_a, mesh.gap_pairs[p].node_b})
       if (shown_pair_[n] < 0 || mesh.gap_pairs[shown_pair_[n]].gap > mesh.gap_pairs[p].gap)
         shown_pair_[n] = static_cast<int>(p);
+  for (const ContactPairSurface &pair : mesh.contact_pairs)
+  {
+    if (pair_node_area_.empty())
+      pair_node_area_.assign(static_cast<std::size_t>(mesh.n_nodes()), 0.0);
+    const ContactSurface surface(mesh, pair.secondary_side_set, pair.surface_name());
+    for (int j = 0; j < surface.n_nodes(); ++j)
+      if (double &area = pair_node_area_[static_cast<std::size_t>(surface.nodes()[j])]; area == 0.0)
+        area = surface.nodal_area(j);
+  }
 }
 
 void FieldOutput::write_gap_field(ResultsWriter &writer, const std::string &name,
@@ -97,12 +107,21 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
   }
   else
     write_gap_field(writer, "gap_opening", gap_opening(u));
-  if (layout.temperature && !mesh_.gap_pairs.empty())
+  if (layout.temperature && (!mesh_.gap_pairs.empty() || !pair_node_area_.empty()))
   {
     std::vector<double> flux = problem_.gap_heat_flow(x);
     for (std::size_t p = 0; p < flux.size(); ++p)
       flux[p] /= mesh_.gap_pairs[p].area;
-    write_gap_field(writer, "gap_heat_flux", flux);
+    // At the pairs' secondary nodes: the node's heat flow over its share of the area.
+    std::vector<double> at_rows;
+    if (!pair_node_area_.empty())
+    {
+      at_rows = problem_.pair_node_heat_flow(x);
+      for (std::size_t n = 0; n < at_rows.size(); ++n)
+        at_rows[n] = pair_node_area_[n] > 0.0 ? at_rows[n] / pair_node_area_[n]
+                                              : std::numeric_limits<double>::quiet_NaN();
+    }
+    write_gap_field(writer, "gap_heat_flux", flux, at_rows.empty() ? nullptr : &at_rows);
   }
   writer.end_step();
 }

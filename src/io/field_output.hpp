@@ -15,7 +15,10 @@ namespace kiln
 /// are given per pair (ResultsWriter::write_gap_field()) and per node; a node in several
 /// pairs (where gaps cross) shows its pair of the first gap (Mesh::gap_side_sets order). At
 /// the node j of a contact pair's row (Mechanics/Contact/Pairs) the node fields gap_opening,
-/// contact_pressure and contact_active show the row's g_j, P_j and state.
+/// contact_pressure and contact_active show the row's g_j, P_j and state, and gap_heat_flux at
+/// each node of a pair's secondary surface the heat across the pair's gap there (its node's
+/// heat flow, CoupledProblem::pair_node_heat_flow, over its share of the surface's area; 0 on a
+/// pair without Heat Transfer).
 class FieldOutput
 {
 public:
@@ -42,5 +45,8 @@ private:
   /// Per mesh node, the pair (Mesh::gap_pairs) whose values its gap fields show: of the first
   /// gap it lies on; -1 off the gap.
   std::vector<int> shown_pair_;
+  /// Per mesh node, its share of the secondary surface's area of the first contact pair
+  /// (Mesh::contact_pairs) it lies on [m^2]; 0 off them.
+  std::vector<double> pair_node_area_;
 };
 } // namespace kiln

@@ -592,6 +592,13 @@ std::vector<double> CoupledProblem::pair_heat_flow(const Vector &x)
   return terms_->pair_heat_flow(*fields_);
 }
 
+std::vector<double> CoupledProblem::pair_node_heat_flow(const Vector &x)
+{
+  if (!pair_heat_.empty())
+    prepare(x);
+  return terms_->pair_node_heat_flow(*fields_);
+}
+
 StateSummary CoupledProblem::summary(const Vector &x)
 {
   if (!interfaces_.empty())

@@ -161,6 +161,11 @@ public:
   /// input's order of the pairs), from the secondary to the primary side, on every rank [W].
   /// Collective.
   std::vector<double> pair_heat_flow(const Vector &x);
+  /// The heat across the pairs' gaps at x at each node of their secondary surfaces,
+  /// Σ_q w_q N_i(xi_s) q over the cells of node i, secondary to primary side, per mesh node and
+  /// on every rank (0 off those surfaces and on pairs without heat transfer) [W]; divided by
+  /// the node's share of the surface's area, the gap_heat_flux [W/m^2]. Collective.
+  std::vector<double> pair_node_heat_flow(const Vector &x);
   /// The figures of the state x for a time history.
   StateSummary summary(const Vector &x);
   /// Pairs in contact at x (global), and of all pairs.

@@ -128,6 +128,17 @@ std::vector<double> ResidualTerms::pair_heat_flow(const NodalFields &fields) con
   return flow;
 }
 
+std::vector<double> ResidualTerms::pair_node_heat_flow(const NodalFields &fields) const
+{
+  const auto n = static_cast<std::size_t>(mesh_.n_nodes());
+  std::vector<double> local(n, 0.0), flow(n, 0.0);
+  for (const PairGapHeat *heat : pair_heat_)
+    heat->add_node_heat_flow(fields, slots_, owns_cell_, local);
+  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
+                     local.data(), flow.data());
+  return flow;
+}
+
 void ResidualTerms::evaluate(const NodalFields &fields, const bool jacobian, const Sink &sink) const
 {
   // An exception of a term on some ranks must not leave the others waiting in the export that

@@ -46,6 +46,10 @@ public:
   /// The heat across each pair's gap (add_pair_heat() order), secondary to primary side,
   /// summed over the ranks [W]. Collective.
   std::vector<double> pair_heat_flow(const NodalFields &fields) const;
+  /// The heat across the pairs' gaps at each secondary node (PairGapHeat::add_node_heat_flow),
+  /// a value per mesh node, summed over the pairs and the ranks (0 off their surfaces) [W].
+  /// Collective.
+  std::vector<double> pair_node_heat_flow(const NodalFields &fields) const;
   /// The Mesh::gap_faces that evaluate_gap_faces() gives the sink, in the order of its calls.
   const std::vector<int> &evaluated_gap_faces() const { return gap_faces_; }
 

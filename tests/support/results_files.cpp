@@ -7,8 +7,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -143,5 +146,28 @@ std::string read_text_attribute(const std::string &h5_path, const std::string &p
     ADD_FAILURE() << h5_path << ": " << path << " has no attribute " << name;
   H5Fclose(file);
   return text;
+}
+
+std::vector<double> csv_column(const std::string &path, const std::string &name)
+{
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << path;
+  std::string line, cell;
+  std::getline(in, line);
+  std::istringstream header(line);
+  int column = -1;
+  for (int c = 0; std::getline(header, cell, ','); ++c)
+    if (cell.rfind(name + " [", 0) == 0)
+      column = c;
+  EXPECT_GE(column, 0) << path << ": no column " << name;
+  std::vector<double> values;
+  while (std::getline(in, line))
+  {
+    std::istringstream row(line);
+    for (int c = 0; std::getline(row, cell, ','); ++c)
+      if (c == column)
+        values.push_back(cell == "nan" ? std::nan("") : std::stod(cell));
+  }
+  return values;
 }
 } // namespace kiln_test

@@ -35,6 +35,10 @@ std::vector<double> read_dataset(const std::string &h5_path, const std::string &
 std::string read_text_attribute(const std::string &h5_path, const std::string &path,
                                 const std::string &name);
 
+/// The numbers of column `name` of the CSV table `path` (a header "NAME [UNIT]" line, then
+/// rows; "nan" is NaN); a missing file or column is a test failure.
+std::vector<double> csv_column(const std::string &path, const std::string &name);
+
 /// The attributes of output step `step` in the writer tests: time, dt, cycle.
 inline double step_time(const int step)
 {

@@ -58,29 +58,6 @@ UniformState mix(const UniformState &a, const UniformState &b, const double f)
   s.contact_pressure += f * (b.contact_pressure - a.contact_pressure);
   return s;
 }
-/// The numbers of column `name` of the CSV table `path` (a header "NAME [UNIT]" line, then rows).
-std::vector<double> csv_column(const std::string &path, const std::string &name)
-{
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  std::string line, cell;
-  std::getline(in, line);
-  std::istringstream header(line);
-  int column = -1;
-  for (int c = 0; std::getline(header, cell, ','); ++c)
-    if (cell.rfind(name + " [", 0) == 0)
-      column = c;
-  EXPECT_GE(column, 0) << path << ": no column " << name;
-  std::vector<double> values;
-  while (std::getline(in, line))
-  {
-    std::istringstream row(line);
-    for (int c = 0; std::getline(row, cell, ','); ++c)
-      if (c == column)
-        values.push_back(cell == "nan" ? std::nan("") : std::stod(cell));
-  }
-  return values;
-}
 
 /// The output of the pair "cut" (issue 30, item 5) in the results at `base` of the run to
 /// 0, 50, 53, 150 s: its secondary surface /pair_cut (HDF5, the XDMF grid, the CSV table) at

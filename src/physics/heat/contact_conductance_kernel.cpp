@@ -2,9 +2,11 @@
 
 #include "base/errors.hpp"
 #include "contact/gap_opening.hpp"
+#include "physics/materials/material_map.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace kiln
 {
@@ -103,6 +105,39 @@ ContactConductanceKernel::ContactConductanceKernel(
               "the contact conductance takes models without state");
 }
 
+ContactConductanceKernel
+ContactConductanceKernel::for_materials(const Parameters &p, const Material &material,
+                                        const Mesh &mesh, const MaterialMap *materials,
+                                        const std::vector<int> &cells, const std::string &parameter,
+                                        const std::string &asked_by, const std::string &remedy)
+{
+  std::vector<std::shared_ptr<const ConstitutiveModel>> models;
+  std::map<int, int> model_of_block;
+  if (materials == nullptr)
+    models.push_back(material.mechanical_model());
+  else
+  {
+    for (int i = 0; i < materials->n_materials(); ++i)
+      models.push_back(materials->material(i).mechanical_model());
+    for (const int block : mesh.block_ids())
+      model_of_block[block] = materials->index_of_block(block);
+  }
+  std::set<int> at_gap;
+  for (const int cell : cells)
+    if (cell >= 0)
+      at_gap.insert(materials != nullptr ? model_of_block.at(mesh.block_id[cell]) : 0);
+  for (const int i : at_gap)
+    KILN_CHECK_INPUT(models[i]->n_state() == 0, parameter,
+                     asked_by << ", whose contact pressure takes the stress of the cells beside "
+                                 "the gap from their material's elastic law, but material \""
+                              << (materials != nullptr ? materials->name(i) : "Material")
+                              << "\" beside the gap has a viscoplastic Model, whose stress needs "
+                                 "the state at its quadrature points, which the gap's terms do "
+                                 "not read; "
+                              << remedy);
+  return ContactConductanceKernel(p, mesh, std::move(models), std::move(model_of_block));
+}
+
 std::vector<int> ContactConductanceKernel::nodes(const Mesh &mesh, const GapFace &face) const
 {
   std::vector<int> result = InterfaceKernel::nodes(mesh, face);
@@ -125,30 +160,20 @@ double ContactConductanceKernel::conductance(const double g, const double p) con
          p_.pressure_coefficient * std::max(p, 0.0);
 }
 
-void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValues &fe_a,
-                                        const ElementValues &fe_b, const Span<const int> cell_a,
-                                        const Span<const int> cell_b,
-                                        const std::array<int, 2> &cells,
-                                        const std::vector<double> &T, const std::vector<Point> &u,
-                                        const int T_slot, const int u_slot,
-                                        LocalSystem &local) const
+double ContactConductanceKernel::conductance_pressure_derivative(const double p) const
 {
-  const int n_local = local.n_nodes();
-  const int n_face = fv.n_shape(); // local nodes 0..n_face-1 on side a, then their twins
-  // The face's mean normal (a plane face: its normal).
-  Point n{};
-  for (int q = 0; q < fv.n_qpoints(); ++q)
-    for (int d = 0; d < 3; ++d)
-      n[d] += fv.normal(q)[d] * fv.JxW(q);
-  const double length = std::sqrt(dot(n, n));
-  for (double &x : n)
-    x /= length;
+  return p > 0.0 ? p_.pressure_coefficient : 0.0;
+}
 
-  // p = (p_a + p_b)/2, p_X = −n.σ̄_X n, σ̄_X the volume average of cell X's stress from its
-  // material's model: dp/du_j (a vector) and dp/dT_j per local node.
-  std::vector<Point> dp_du(n_local, Point{});
-  std::vector<double> dp_dT(n_local, 0.0);
-  SidePressure side(n, u, T, dp_du, dp_dT);
+double ContactConductanceKernel::pressure(const Point &normal, const ElementValues &fe_a,
+                                          const ElementValues &fe_b, const Span<const int> cell_a,
+                                          const Span<const int> cell_b,
+                                          const std::array<int, 2> &cells,
+                                          const std::vector<double> &T, const std::vector<Point> &u,
+                                          std::vector<Point> &dp_du,
+                                          std::vector<double> &dp_dT) const
+{
+  SidePressure side(normal, u, T, dp_du, dp_dT);
   std::vector<double> mean_phi;
   std::vector<Point> mean_grad;
   const auto add_cell = [&](const ElementValues &fe, const Span<const int> cell, const int index)
@@ -180,8 +205,34 @@ void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValue
   };
   add_cell(fe_a, cell_a, cells[0]);
   add_cell(fe_b, cell_b, cells[1]);
-  const double p = side.pressure();
-  const double dh_dp = p > 0.0 ? p_.pressure_coefficient : 0.0;
+  return side.pressure();
+}
+
+void ContactConductanceKernel::evaluate(const FaceValues &fv, const ElementValues &fe_a,
+                                        const ElementValues &fe_b, const Span<const int> cell_a,
+                                        const Span<const int> cell_b,
+                                        const std::array<int, 2> &cells,
+                                        const std::vector<double> &T, const std::vector<Point> &u,
+                                        const int T_slot, const int u_slot,
+                                        LocalSystem &local) const
+{
+  const int n_local = local.n_nodes();
+  const int n_face = fv.n_shape(); // local nodes 0..n_face-1 on side a, then their twins
+  // The face's mean normal (a plane face: its normal).
+  Point n{};
+  for (int q = 0; q < fv.n_qpoints(); ++q)
+    for (int d = 0; d < 3; ++d)
+      n[d] += fv.normal(q)[d] * fv.JxW(q);
+  const double length = std::sqrt(dot(n, n));
+  for (double &x : n)
+    x /= length;
+
+  // p = (p_a + p_b)/2 from the two cells' materials: dp/du_j (a vector) and dp/dT_j per local
+  // node.
+  std::vector<Point> dp_du(n_local, Point{});
+  std::vector<double> dp_dT(n_local, 0.0);
+  const double p = pressure(n, fe_a, fe_b, cell_a, cell_b, cells, T, u, dp_du, dp_dT);
+  const double dh_dp = conductance_pressure_derivative(p);
 
   for (int q = 0; q < fv.n_qpoints(); ++q)
   {

@@ -10,10 +10,14 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace kiln
 {
+class Material;
+class MaterialMap;
+
 /// The flux from side a to side b is h (T_a - T_b) as in GapConductanceKernel, with
 ///
 ///   h(g, p) = h0 L / (L + max(g, 0)) + h_p max(p, 0)
@@ -48,6 +52,18 @@ public:
   ContactConductanceKernel(const Parameters &p, const Mesh &mesh,
                            std::vector<std::shared_ptr<const ConstitutiveModel>> models,
                            std::map<int, int> model_of_block);
+  /// With the mechanical model of each material of `materials` (or `material`'s alone if it
+  /// is null). An InputError naming `parameter` (the input's path of the parameter that asked
+  /// for this conductance, `asked_by` its value in words, e.g. "is \"Contact Dependent\"") and
+  /// the material if one of the `cells` beside the gap has a model with state (viscoplastic):
+  /// its stress needs the state at its points, which the gap's terms do not read; `remedy` ends
+  /// the message (what to do instead).
+  static ContactConductanceKernel for_materials(const Parameters &p, const Material &material,
+                                                const Mesh &mesh, const MaterialMap *materials,
+                                                const std::vector<int> &cells,
+                                                const std::string &parameter,
+                                                const std::string &asked_by,
+                                                const std::string &remedy);
 
   /// fv: the side-a face; fe_a, fe_b: its two cells, `cells` their global indices (their
   /// blocks' models). Local nodes: 0..n-1 the face's n nodes on side a, n..2n-1 their twins;
@@ -67,6 +83,18 @@ public:
 
   /// h at one point [W/(m^2 K)] for an opening g [m] and a pressure p [Pa].
   double conductance(double g, double p) const;
+  /// dh/dp at a pressure p [W/(m^2 K Pa)] (0 at p <= 0).
+  double conductance_pressure_derivative(double p) const;
+
+  /// p = (p_a + p_b)/2, p_X = -n.σ̄_X n, σ̄_X the volume average of the stress of cell X (global
+  /// index cells[X], its block's material's model) [Pa]; `normal` a unit normal of the face
+  /// (either sign). fe_a, fe_b: the two cells; cell_a[i], cell_b[i]: the local node of each
+  /// cell's node i; T [K] and u [m] per local node. Adds dp/du [Pa/m] and dp/dT [Pa/K] per local
+  /// node to dp_du and dp_dT (sized to the local nodes by the caller).
+  double pressure(const Point &normal, const ElementValues &fe_a, const ElementValues &fe_b,
+                  Span<const int> cell_a, Span<const int> cell_b, const std::array<int, 2> &cells,
+                  const std::vector<double> &T, const std::vector<Point> &u,
+                  std::vector<Point> &dp_du, std::vector<double> &dp_dT) const;
 
 private:
   Parameters p_;

@@ -41,6 +41,13 @@ Teuchos::ParameterList MortarGapHeat::valid_parameters()
   p.set("Secondary Emissivity", 0.0,
         "eps_s of the secondary surface, 0 <= eps_s <= 1 (see \"Primary Emissivity\") [-]",
         double_range_validator(0.0, 1.0));
+  p.set("Gap Pressure Coefficient", 0.0,
+        "h_p, the contact conductance's rise per contact pressure, as in Thermal/\"Gap "
+        "Conductance Model\" \"Contact Dependent\" on a split gap: h_p max(p, 0) adds to the "
+        "conductance, p the normal compression of the two cells at the faces (the mean of their "
+        "volume-averaged stresses, from their materials; about 0 while the gap is open); must "
+        "be >= 0; 0: no such term [W/(m^2 K Pa)]",
+        nonnegative_double_validator());
   return p;
 }
 
@@ -61,6 +68,7 @@ MortarGapHeat::Parameters read_parameters(const Teuchos::ParameterList &p, const
   r.jump_distance = p.get<double>("Jump Distance");
   r.primary_emissivity = p.get<double>("Primary Emissivity");
   r.secondary_emissivity = p.get<double>("Secondary Emissivity");
+  r.pressure_coefficient = p.get<double>("Gap Pressure Coefficient");
   const bool gas = has_gas(r.gas_conductivity);
   std::ostringstream jump;
   jump << where << "/\"Jump Distance\" = " << r.jump_distance;
@@ -104,17 +112,18 @@ double MortarGapHeat::effective_emissivity(const double secondary, const double 
 
 bool MortarGapHeat::active() const
 {
-  return p_.conductance > 0.0 || gas_ || sigma_eps_ > 0.0;
+  return p_.conductance > 0.0 || gas_ || sigma_eps_ > 0.0 || p_.pressure_coefficient > 0.0;
 }
 
-MortarGapHeat::PointFlux MortarGapHeat::flux(const double T_s, const double T_m,
-                                             const double g) const
+MortarGapHeat::PointFlux MortarGapHeat::flux(const double T_s, const double T_m, const double g,
+                                             const double h_contact) const
 {
   const double jump = T_s - T_m;
+  const double h_constant = p_.conductance + h_contact;
   PointFlux f;
-  f.q = p_.conductance * jump;
-  f.dq_dTs = p_.conductance;
-  f.dq_dTm = -p_.conductance;
+  f.q = h_constant * jump;
+  f.dq_dTs = h_constant;
+  f.dq_dTm = -h_constant;
   if (gas_)
   {
     const double width = std::max(g, 0.0) + p_.jump_distance;
@@ -200,7 +209,7 @@ PointState point_state(const MortarGapCell &cell, const MortarPoint &point,
   PointState s;
   s.n_secondary = fe_s.n_shape();
   s.n_local = fe_s.n_shape() + fe_m.n_shape();
-  KILN_ASSERT(static_cast<int>(T.size()) == s.n_local && static_cast<int>(x.size()) == s.n_local,
+  KILN_ASSERT(static_cast<int>(T.size()) >= s.n_local && static_cast<int>(x.size()) >= s.n_local,
               "MortarGapHeat: a value per local node");
   std::array<double, max_cell_nodes> N{};
   fe_s.values(point.xi_s, N.data());
@@ -225,14 +234,19 @@ PointState point_state(const MortarGapCell &cell, const MortarPoint &point,
 
 void MortarGapHeat::evaluate(const MortarGapCell &cell, const std::vector<double> &T,
                              const std::vector<Point> &x, const FieldSlots &slots,
-                             LocalSystem &local) const
+                             LocalSystem &local, const ContactTerm *contact) const
 {
   const int T_slot = slots.T;
+  const double h_contact = contact != nullptr ? contact->h : 0.0;
+  KILN_ASSERT(contact == nullptr || (static_cast<int>(contact->dh_dT.size()) == local.n_nodes() &&
+                                     static_cast<int>(contact->dh_du.size()) == local.n_nodes()),
+              "MortarGapHeat: the contact term's derivatives per local node");
   for (const MortarPoint &point : cell.points)
   {
     const PointState s = point_state(cell, point, T, x);
-    KILN_ASSERT(local.n_nodes() == s.n_local, "MortarGapHeat: a local system of both faces");
-    const PointFlux f = flux(s.T_s, s.T_m, s.gap);
+    KILN_ASSERT(local.n_nodes() >= s.n_local, "MortarGapHeat: a local system of both faces");
+    const PointFlux f = flux(s.T_s, s.T_m, s.gap, h_contact);
+    const double jump = s.T_s - s.T_m;
     for (int a = 0; a < s.n_local; ++a)
     {
       const double row = s.signed_shape[a] * point.weight;
@@ -249,18 +263,28 @@ void MortarGapHeat::evaluate(const MortarGapCell &cell, const std::vector<double
             local.jacobian(T_slot, a, slots.u + d, b) +=
                 row * f.dq_dg * s.signed_shape[b] * cell.normal[d];
       }
+      // The contact conductance: q = h jump, h = h_p max(p, 0) with p from the cells' nodes.
+      if (contact != nullptr)
+        for (int l = 0; l < local.n_nodes(); ++l)
+        {
+          local.jacobian(T_slot, a, T_slot, l) += row * jump * contact->dh_dT[l];
+          if (slots.u >= 0)
+            for (int d = 0; d < 3; ++d)
+              local.jacobian(T_slot, a, slots.u + d, l) += row * jump * contact->dh_du[l][d];
+        }
     }
   }
 }
 
 double MortarGapHeat::heat_flow(const MortarGapCell &cell, const std::vector<double> &T,
-                                const std::vector<Point> &x) const
+                                const std::vector<Point> &x, const ContactTerm *contact) const
 {
+  const double h_contact = contact != nullptr ? contact->h : 0.0;
   double total = 0.0;
   for (const MortarPoint &point : cell.points)
   {
     const PointState s = point_state(cell, point, T, x);
-    total += point.weight * flux(s.T_s, s.T_m, s.gap).q;
+    total += point.weight * flux(s.T_s, s.T_m, s.gap, h_contact).q;
   }
   return total;
 }

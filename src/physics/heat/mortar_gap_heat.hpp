@@ -52,9 +52,13 @@ struct MortarGapCell
 /// Small sliding, as the mortar pairing's D and M: the points (xi_s, xi_m, w) and n are those
 /// of the configuration the cells were built in (cells(), at a search), and g follows the
 /// current positions at those reference coordinates; the Jacobian is exact for that (the
-/// segments' own motion between searches is not differentiated). Not here: the contact
-/// conductance when closed (pressure-dependent, h_p max(p, 0) from the cells' stress, as
-/// ContactConductanceKernel does on the split gap).
+/// segments' own motion between searches is not differentiated).
+///
+/// With a "Gap Pressure Coefficient" h_p, the contact conductance h_p max(p, 0) of the split
+/// gap's "Contact Dependent" model adds to h, p the normal compression of the two cells at the
+/// cell's faces (ContactConductanceKernel::pressure: the mean of their volume-averaged
+/// stresses; PairGapHeat computes it and passes it as a ContactTerm): dR/du and dR/dT of every
+/// node of the two cells through p.
 class MortarGapHeat
 {
 public:
@@ -68,6 +72,16 @@ public:
     double jump_distance = 0.0;                                                ///< g_jump [m]
     double primary_emissivity = 0.0;                                           ///< ε_m [-]
     double secondary_emissivity = 0.0;                                         ///< ε_s [-]
+    double pressure_coefficient = 0.0; ///< h_p of the contact conductance [W/(m^2 K Pa)]
+  };
+
+  /// The contact conductance of a cell, h = h_p max(p, 0) at its pressure p (constant over
+  /// the cell), and its derivatives per local node (the cell's local nodes, then any others).
+  struct ContactTerm
+  {
+    double h = 0.0;            ///< [W/(m^2 K)]
+    std::vector<Point> dh_du;  ///< [W/(m^3 K)]
+    std::vector<double> dh_dT; ///< [W/(m^2 K^2)]
   };
 
   /// The value of q and its derivatives at one point.
@@ -102,20 +116,28 @@ public:
   /// temperatures T [K] and current positions x = X + u [m]: the residual in field slots.T [W],
   /// and with a Jacobian its T-T [W/K] and, if slots.u >= 0 and the gas term is on, its T-u
   /// [W/m] blocks (fields slots.u .. slots.u + 2).
+  /// With a `contact` term, its h adds to q's conductance and its derivatives give the T-u and
+  /// T-T entries of every local node it lists (the local system may then have more nodes than
+  /// the two faces': the cells' other nodes, after them).
   void evaluate(const MortarGapCell &cell, const std::vector<double> &T,
-                const std::vector<Point> &x, const FieldSlots &slots, LocalSystem &local) const;
+                const std::vector<Point> &x, const FieldSlots &slots, LocalSystem &local,
+                const ContactTerm *contact = nullptr) const;
   /// The heat flow across the cell from the secondary to the primary side, Σ_q w_q q [W].
   double heat_flow(const MortarGapCell &cell, const std::vector<double> &T,
-                   const std::vector<Point> &x) const;
+                   const std::vector<Point> &x, const ContactTerm *contact = nullptr) const;
 
-  /// q and its derivatives at T_s, T_m [K] and an opening g [m].
-  PointFlux flux(double T_s, double T_m, double g) const;
+  /// q and its derivatives at T_s, T_m [K] and an opening g [m]; h_contact [W/(m^2 K)] the
+  /// contact conductance (ContactTerm::h).
+  PointFlux flux(double T_s, double T_m, double g, double h_contact = 0.0) const;
+  /// h_p [W/(m^2 K Pa)].
+  double pressure_coefficient() const { return p_.pressure_coefficient; }
   /// ε = 1 / (1/ε_s + 1/ε_m - 1), 0 if either is 0 [-].
   static double effective_emissivity(double secondary, double primary);
   /// Whether some term is on (else every cell adds 0).
   bool active() const;
-  /// Whether q depends on the displacement (the gas term: the graph needs the T-u links).
-  bool depends_on_displacement() const { return gas_; }
+  /// Whether q depends on the displacement (the gas term, the contact conductance: the graph
+  /// needs the T-u links).
+  bool depends_on_displacement() const { return gas_ || p_.pressure_coefficient > 0.0; }
 
 private:
   Parameters p_;

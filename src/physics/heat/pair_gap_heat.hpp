@@ -4,17 +4,22 @@
 /// MortarGapHeat cells, built once at set-up in the reference configuration (as the pair's
 /// rows), each assembled by the rank that owns the cell of its secondary face.
 #include "mesh/mesh.hpp"
+#include "physics/heat/contact_conductance_kernel.hpp"
 #include "physics/heat/mortar_gap_heat.hpp"
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace kiln
 {
+class Material;
+class MaterialMap;
 class NodalFields;
 
 class PairGapHeat
@@ -26,9 +31,16 @@ public:
   /// The cells of the pair of side sets (as MortarPairing's: the primary faces facing each
   /// secondary face within `search_distance` [m]) with the validated "Heat Transfer" sublist
   /// `heat_transfer`; `where` names that sublist in messages. Without an active term, no cells.
+  /// With a "Gap Pressure Coefficient" h_p > 0 the contact conductance h_p max(p, 0) of the split
+  /// gap's "Contact Dependent" model (ContactConductanceKernel, its pressure p from the cells of
+  /// each cell's two faces and their materials: those of `materials`, or `material` alone if it
+  /// is null; `material` must then be given) adds to the conductance, and each cell's local
+  /// nodes are its faces' then the other nodes of the faces' two mesh cells. An InputError
+  /// names the parameter and the material if one beside the pair is viscoplastic.
   PairGapHeat(const Mesh &mesh, int primary_side_set, int secondary_side_set,
               double search_distance, const Teuchos::ParameterList &heat_transfer,
-              const std::string &where);
+              const std::string &where, const Material *material = nullptr,
+              const MaterialMap *materials = nullptr);
 
   /// Whether a term is on (else no cells and nothing to assemble).
   bool active() const { return heat_.active(); }
@@ -51,13 +63,28 @@ public:
   /// share: sum over the ranks).
   double heat_flow(const NodalFields &fields, const FieldSlots &slots,
                    const std::vector<char> &owns_cell) const;
+  /// Adds to `flow` (a value per mesh node) the heat across the cells `owns_cell` marks at each
+  /// secondary node i, Σ_q w_q N_i(xi_s) q, secondary to primary side [W] (this rank's share:
+  /// sum over the ranks); the nodes' sum is heat_flow().
+  void add_node_heat_flow(const NodalFields &fields, const FieldSlots &slots,
+                          const std::vector<char> &owns_cell, std::vector<double> &flow) const;
 
 private:
+  /// The local nodes' T [K], u [m] and x = X + u [m] of cell k.
   void cell_state(const NodalFields &fields, const FieldSlots &slots, std::size_t k,
-                  std::vector<double> &T, std::vector<Point> &x) const;
+                  std::vector<double> &T, std::vector<Point> &u, std::vector<Point> &x) const;
+  /// The contact conductance of cell k at T and u (none without h_p).
+  std::unique_ptr<MortarGapHeat::ContactTerm>
+  contact_term(std::size_t k, const std::vector<double> &T, const std::vector<Point> &u) const;
 
   const Mesh &mesh_;
   MortarGapHeat heat_;
+  /// The contact conductance (h0 = 0: h_p max(p, 0) alone), with h_p > 0.
+  std::unique_ptr<const ContactConductanceKernel> contact_;
+  /// With contact_, per cell: the mesh cells of its secondary and primary faces, and the local
+  /// node of each of their nodes.
+  std::vector<std::array<int, 2>> mesh_cells_;
+  std::vector<std::array<std::vector<int>, 2>> cell_locals_;
   std::vector<MortarGapCell> cells_;
   std::vector<std::vector<int>> nodes_;
   std::vector<int> owning_cells_;

@@ -108,42 +108,6 @@ BlockHeatConductionKernel conduction_kernels(const Teuchos::ParameterList &therm
       kernel_of_block[block] = materials->index_of_block(block);
   return BlockHeatConductionKernel(mesh, std::move(kernels), std::move(kernel_of_block));
 }
-
-/// The Contact Dependent conductance's models: each material's mechanical model (of
-/// `materials`, or `material`'s alone) and the material of each block. An InputError naming
-/// the material if one beside a gap has a model with state (viscoplastic): its stress needs
-/// the state at its points, which the gap's terms do not read.
-ContactConductanceKernel contact_conductance_kernel(const ContactConductanceKernel::Parameters &k,
-                                                    const Material &material, const Mesh &mesh,
-                                                    const MaterialMap *materials,
-                                                    const std::string &where)
-{
-  std::vector<std::shared_ptr<const ConstitutiveModel>> models;
-  std::map<int, int> model_of_block;
-  if (materials == nullptr)
-    models.push_back(material.mechanical_model());
-  else
-  {
-    for (int i = 0; i < materials->n_materials(); ++i)
-      models.push_back(materials->material(i).mechanical_model());
-    for (const int block : mesh.block_ids())
-      model_of_block[block] = materials->index_of_block(block);
-  }
-  std::set<int> at_gap;
-  for (const GapFace &face : mesh.gap_faces)
-    for (const int cell : {face.cell_a, face.cell_b})
-      if (cell >= 0)
-        at_gap.insert(materials != nullptr ? model_of_block.at(mesh.block_id[cell]) : 0);
-  for (const int i : at_gap)
-    KILN_CHECK_INPUT(models[i]->n_state() == 0, where + "/\"Gap Conductance Model\"",
-                     "is \"Contact Dependent\", whose contact pressure takes the stress of the "
-                     "cells beside the gap from their material's elastic law, but material \""
-                         << (materials != nullptr ? materials->name(i) : "Material")
-                         << "\" beside the gap has a viscoplastic Model, whose stress needs the "
-                            "state at its quadrature points, which the gap's terms do not read; "
-                            "use \"Constant\", or an elastic material beside the gap");
-  return ContactConductanceKernel(k, mesh, std::move(models), std::move(model_of_block));
-}
 } // namespace
 
 ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Material &material,
@@ -165,8 +129,12 @@ ThermalPhysics::ThermalPhysics(const Teuchos::ParameterList &thermal, const Mate
     k.h0 = h;
     k.length = thermal.get<double>("Gap Width Scale");
     k.pressure_coefficient = thermal.get<double>("Gap Pressure Coefficient");
-    gap_ = std::make_unique<ContactConductanceKernel>(
-        contact_conductance_kernel(k, material, mesh, materials, where));
+    std::vector<int> cells;
+    for (const GapFace &face : mesh.gap_faces)
+      cells.insert(cells.end(), {face.cell_a, face.cell_b});
+    gap_ = std::make_unique<ContactConductanceKernel>(ContactConductanceKernel::for_materials(
+        k, material, mesh, materials, cells, where + "/\"Gap Conductance Model\"",
+        "is \"Contact Dependent\"", "use \"Constant\", or an elastic material beside the gap"));
   }
   else
   {

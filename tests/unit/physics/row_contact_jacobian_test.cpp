@@ -15,6 +15,10 @@
 // and radiation) open and mixed: its T-T and T-u blocks (through Couplings::cell_blocks and
 // the heat's links), to 1e-7 (about 7e-8 measured: the T-u entries, k dT/(g + g_jump)^2 with
 // dT < 0.4 K, from differences of residuals of steps 1e-9 m, are at the round-off's level).
+// With the contact conductance h_p max(p, 0) as well ("Gap Pressure Coefficient"; p from the
+// stress of the two cells of each mortar cell's faces, at 1 K above T_ref so that p > 0 in every
+// cell): open, closed and mixed, its T-u and T-T blocks over both cells' nodes, np 1 and 2
+// (measured 1.0e-8, 1.3e-9, 3.1e-8; with its derivatives left out, 1.2, 1 and 1.2).
 // KILN_TEST_NP: 1 2
 #include "base/log.hpp"
 #include "base/parameters.hpp"
@@ -80,6 +84,14 @@ struct State
   /// Heat across the pair's gap (PairGapHeat): gas (0.2 W/(m K), jump distance 1e-4 m) and
   /// radiation (emissivities 0.8), so that its T-T and T-u blocks are in the Jacobian.
   bool heat = false;
+  /// With the heat: the contact conductance too ("Gap Pressure Coefficient" 1e-4 W/(m^2 K Pa):
+  /// h_p p about 450 W/(m^2 K) at the pressure p of 1 K above T_ref in the cells), its
+  /// T-u and T-T blocks over both cells' nodes.
+  bool contact_conductance = false;
+  /// Added to every node's temperature [K]: T_ref + 1 K puts p = 3 K alpha (T - T_ref) > 0 in
+  /// every cell (the cells' strain, from noise of 2e-8 m, adds 1e4 Pa at most), away from the
+  /// kink of max(p, 0).
+  double T_offset = 0.0;
 };
 
 /// The pair's heat across the gap if `state` asks for it (else null).
@@ -92,10 +104,14 @@ std::shared_ptr<const kiln::PairGapHeat> gap_heat(const kiln::Mesh &mesh, const 
   p.set("Jump Distance", 1.0e-4);
   p.set("Primary Emissivity", 0.8);
   p.set("Secondary Emissivity", 0.8);
+  if (state.contact_conductance)
+    p.set("Gap Pressure Coefficient", 1.0e-4);
   const std::string where = "Kiln/Mechanics/Contact/Pairs/test/Heat Transfer";
+  static const kiln::Material material = TableMaterial::make();
   return std::make_shared<const kiln::PairGapHeat>(
       mesh, 1, 2, 0.5,
-      kiln::validated(p, kiln::MortarGapHeat::valid_parameters(), "test.xml", where), where);
+      kiln::validated(p, kiln::MortarGapHeat::valid_parameters(), "test.xml", where), where,
+      &material);
 }
 
 /// The DofManager's links: the rows' partners and the heat's.
@@ -286,7 +302,7 @@ double run_case(const std::string &name, const std::string &kind, const std::str
   {
     const int n = owned[i];
     const auto c = frame_components(frames[i], u_noise[n]);
-    x.replaceLocalValue(static_cast<LO>(4 * i), TableMaterial::T_ref + T_noise[n]);
+    x.replaceLocalValue(static_cast<LO>(4 * i), TableMaterial::T_ref + state.T_offset + T_noise[n]);
     for (int k = 0; k < 3; ++k)
       x.replaceLocalValue(static_cast<LO>(4 * i + 1 + k), c[k]);
   }
@@ -332,6 +348,30 @@ TEST(RowContactJacobian, SomeRowsClosedWithGapHeat)
   State state{0.0, 4.0e-4};
   state.heat = true;
   EXPECT_LT(run_case("mixed, heat across the gap", "Contact", "Min", state), tolerance);
+}
+
+TEST(RowContactJacobian, AllRowsOpenWithContactConductance)
+{
+  State state{g0, 0.0};
+  state.heat = state.contact_conductance = true;
+  state.T_offset = 1.0;
+  EXPECT_LT(run_case("open, heat with contact conductance", "Contact", "Min", state), tolerance);
+}
+
+TEST(RowContactJacobian, AllRowsClosedWithContactConductance)
+{
+  State state{-1.0e-4, 0.0};
+  state.heat = state.contact_conductance = true;
+  state.T_offset = 1.0;
+  EXPECT_LT(run_case("closed, heat with contact conductance", "Contact", "Min", state), tolerance);
+}
+
+TEST(RowContactJacobian, SomeRowsClosedWithContactConductance)
+{
+  State state{0.0, 4.0e-4};
+  state.heat = state.contact_conductance = true;
+  state.T_offset = 1.0;
+  EXPECT_LT(run_case("mixed, heat with contact conductance", "Contact", "Min", state), tolerance);
 }
 
 TEST(RowContactJacobian, AllRowsClosed)
