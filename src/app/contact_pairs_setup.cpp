@@ -1,0 +1,64 @@
+#include "app/contact_pairs_setup.hpp"
+
+#include "base/errors.hpp"
+#include "contact/contact_interface.hpp"
+#include "contact/contact_pairs.hpp"
+#include "contact/interface_parameters.hpp"
+#include "contact/mortar_pairing.hpp"
+#include "physics/heat/pair_gap_heat.hpp"
+
+#include <memory>
+
+namespace kiln
+{
+std::vector<PairingRows> setup_contact_pairs(Mesh &mesh, const Teuchos::ParameterList &contact,
+                                             const DofLayout &layout, const std::string &input_path)
+{
+  std::vector<PairingRows> pairings;
+  for (const ContactPairInput &pair :
+       contact_pairs(contact, input_path + ": Kiln/Mechanics/Contact"))
+  {
+    const MortarPairing pairing(mesh, pair.primary_side_set, pair.secondary_side_set, pair.options,
+                                pair.where);
+    const std::string name = "pair \"" + pair.name + "\"";
+    pairings.push_back({name, pairing.rows(), pair_interface_parameters(contact), nullptr});
+    mesh.contact_pairs.push_back({pair.name, pair.secondary_side_set});
+    // The heat across its gap, on the cells of the same search.
+    if (pair.heat_transfer.numParams() > 0)
+    {
+      KILN_CHECK_INPUT(
+          layout.temperature ||
+              !MortarGapHeat(pair.heat_transfer, pair.where + "/Heat Transfer").active(),
+          pair.where + "/Heat Transfer",
+          "carries heat across the pair, but the run has no temperature "
+          "(Kiln/\"Physics\" = \"Elasticity\"); set Physics to "
+          "\"Thermo-Elasticity\", or remove the Heat Transfer sublist");
+    }
+    if (layout.temperature && pair.heat_transfer.numParams() > 0)
+    {
+      auto heat = std::make_shared<const PairGapHeat>(
+          mesh, pair.primary_side_set, pair.secondary_side_set, pairing.search_distance(),
+          pair.heat_transfer, pair.where + "/Heat Transfer");
+      if (heat->active())
+        pairings.back().heat = std::move(heat);
+    }
+  }
+  return pairings;
+}
+
+std::vector<std::pair<int, int>> pairing_links(const std::vector<PairingRows> &pairings)
+{
+  std::vector<std::pair<int, int>> links;
+  for (const PairingRows &pairing : pairings)
+  {
+    const auto more = partner_links(pairing.rows);
+    links.insert(links.end(), more.begin(), more.end());
+    if (pairing.heat != nullptr)
+    {
+      const auto heat = pairing.heat->links();
+      links.insert(links.end(), heat.begin(), heat.end());
+    }
+  }
+  return links;
+}
+} // namespace kiln
