@@ -5,6 +5,7 @@
 #include "contact/contact_pairs.hpp"
 #include "contact/interface_parameters.hpp"
 #include "contact/mortar_pairing.hpp"
+#include "contact/pair_research.hpp"
 #include "physics/heat/pair_gap_heat.hpp"
 
 #include <memory>
@@ -21,7 +22,8 @@ std::vector<PairingRows> setup_contact_pairs(Mesh &mesh, const Teuchos::Paramete
     const MortarPairing pairing(mesh, pair.primary_side_set, pair.secondary_side_set, pair.options,
                                 pair.where);
     const std::string name = "pair \"" + pair.name + "\"";
-    pairings.push_back({name, pairing.rows(), pair_interface_parameters(contact), nullptr});
+    pairings.push_back(
+        {name, pairing.rows(), pair_interface_parameters(contact), nullptr, nullptr});
     mesh.contact_pairs.push_back({pair.name, pair.secondary_side_set});
     // The heat across its gap, on the cells of the same search.
     if (pair.heat_transfer.numParams() > 0)
@@ -42,6 +44,12 @@ std::vector<PairingRows> setup_contact_pairs(Mesh &mesh, const Teuchos::Paramete
       if (heat->active())
         pairings.back().heat = std::move(heat);
     }
+    // The search redone during a run, within the margins; not for a pair whose heat cells
+    // are fixed at set-up (its rows are fixed too, their slip checked against the limit).
+    if (pairings.back().heat == nullptr)
+      pairings.back().research =
+          std::make_shared<const PairResearch>(mesh, pair.primary_side_set, pair.secondary_side_set,
+                                               pair.options, pair.where, name, pairing.margins());
   }
   return pairings;
 }
@@ -51,7 +59,8 @@ std::vector<std::pair<int, int>> pairing_links(const std::vector<PairingRows> &p
   std::vector<std::pair<int, int>> links;
   for (const PairingRows &pairing : pairings)
   {
-    const auto more = partner_links(pairing.rows);
+    const auto more = pairing.research != nullptr ? pairing.research->links(pairing.rows)
+                                                  : partner_links(pairing.rows);
     links.insert(links.end(), more.begin(), more.end());
     if (pairing.heat != nullptr)
     {

@@ -23,8 +23,11 @@ struct ContactRow
   /// The small-sliding limit of a mortar pairing's row (check_small_sliding): the largest
   /// tangential slip of j relative to its twin point accepted, `Search Update Fraction` times
   /// `face_size`, the smallest diameter of j's secondary faces [m]; 0: not checked (a split
-  /// gap, whose sides share their nodes' positions).
+  /// gap, whose sides share their nodes' positions). Since the last search (PairResearch).
   double slip_limit = 0;
   double face_size = 0;
+  /// The relative displacement u_j - sum_k w_jk u_k at the state of the row's last search [m]
+  /// (0 at set-up): the slip is measured from it (row_slip).
+  Point slip0{};
 };
 } // namespace kiln

@@ -108,6 +108,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
       pairings_.push_back(std::make_unique<ContactInterface>(
           mesh, dofs, pairing.rows, modulus,
           pairing.parameters.get<double>("Complementarity Scale"), pairing.name));
+      research_.resize(pairings_.size());
+      research_.back() = pairing.research;
       interfaces_.push_back(interface_kinds().create(
           pairing.parameters.get<std::string>("Kind"), *pairings_.back(), dofs, constraints_,
           pairing.parameters, where + "/Mechanics/Contact (" + pairing.name + ")"));
@@ -239,6 +241,7 @@ void CoupledProblem::check_free_motions(const Teuchos::ParameterList &mechanics,
 
 void CoupledProblem::set_log(Teuchos::RCP<Teuchos::FancyOStream> out)
 {
+  log_ = out;
   for (const auto &strategy : interfaces_)
     strategy->set_log(out);
 }
@@ -469,16 +472,24 @@ void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSyst
 
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
-  // The rows of a pairing are fixed: beyond its small-sliding limit the state would be wrong,
-  // so it is refused before anything is committed.
+  // A pairing whose rows have slid beyond the fraction of a face since its last search is
+  // searched again in the current configuration (within its margins, else a RunError); one
+  // whose rows are fixed is refused beyond the limit, before anything is committed.
   if (std::any_of(pairings_.begin(), pairings_.end(),
                   [](const auto &pairing) { return !pairing->split(); }))
   {
     prepare(x);
     const auto u = [this](const int node) { return fields_->u(node); };
-    for (const auto &pairing : pairings_)
-      if (!pairing->split())
-        check_small_sliding(*pairing, u, time, *dofs_.owned_dof_map()->getComm());
+    const auto &comm = *dofs_.owned_dof_map()->getComm();
+    for (std::size_t p = 0; p < pairings_.size(); ++p)
+    {
+      if (pairings_[p]->split())
+        continue;
+      if (p >= research_.size() || research_[p] == nullptr)
+        check_small_sliding(*pairings_[p], u, time, comm);
+      else if (slid_beyond_limit(*pairings_[p], u, comm))
+        search_again(p, time);
+    }
   }
   accepted_time_ = time;
   if (quadrature_state_)
@@ -491,6 +502,108 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
   for (const auto &strategy : interfaces_)
     strategy->step_accepted(time);
   check_open_gap(time);
+}
+
+void CoupledProblem::search_again(const std::size_t p, const double time)
+{
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: contact search again"));
+  const PairResearch &research = *research_[p];
+  ContactInterface &pairing = *pairings_[p];
+  // The displacement of the two surfaces on every rank: each node from its owner.
+  const std::vector<int> &nodes = research.surface_nodes();
+  const int rank = dofs_.owned_dof_map()->getComm()->getRank();
+  std::vector<double> mine(3 * nodes.size(), 0.0), all(mine.size(), 0.0);
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (dofs_.node_owner()[nodes[i]] == rank)
+    {
+      const Point u = fields_->u(nodes[i]);
+      for (int c = 0; c < 3; ++c)
+        mine[3 * i + c] = u[c];
+    }
+  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
+                     static_cast<int>(mine.size()), mine.data(), all.data());
+  std::vector<Point> u(static_cast<std::size_t>(mesh_.n_nodes()), Point{0.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    u[nodes[i]] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
+  pairing.replace_rows(research.rows_at(
+      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), u, time));
+  decided_ = false;
+  if (log_ != Teuchos::null)
+    *log_ << "  " << pairing.name() << ": search " << pairing.searches() << " at t = " << time
+          << " s (a row slid beyond its \"Search Update Fraction\" since the last search)\n";
+}
+
+std::vector<double> CoupledProblem::pair_rows_state() const
+{
+  std::vector<double> state;
+  for (std::size_t p = 0; p < pairings_.size(); ++p)
+  {
+    if (pairings_[p]->split())
+      continue;
+    state.push_back(pairings_[p]->searches());
+    state.push_back(pairings_[p]->n_rows());
+    for (const ContactRow &row : pairings_[p]->rows())
+    {
+      state.push_back(static_cast<double>(row.partners.size()));
+      state.insert(state.end(), row.partners.begin(), row.partners.end());
+      state.insert(state.end(), row.weights.begin(), row.weights.end());
+      state.insert(state.end(), {row.area, row.gap0, row.slip0[0], row.slip0[1], row.slip0[2]});
+    }
+  }
+  return state;
+}
+
+void CoupledProblem::restore_pair_rows(const std::vector<double> &state, const std::string &where)
+{
+  if (state.empty())
+    return; // a checkpoint without pairings, or of a run without searches written
+  std::size_t at = 0;
+  const auto next = [&]()
+  {
+    KILN_CHECK_INPUT(at < state.size(), where,
+                     "its rows of the contact pairs (contact/pair_rows) are shorter than this "
+                     "run's pairs need: a checkpoint of another run or a damaged one");
+    return state[at++];
+  };
+  for (std::size_t p = 0; p < pairings_.size(); ++p)
+  {
+    if (pairings_[p]->split())
+      continue;
+    ContactInterface &pairing = *pairings_[p];
+    const int searches = static_cast<int>(next());
+    KILN_CHECK_INPUT(static_cast<int>(next()) == pairing.n_rows(), where,
+                     "its rows of " << pairing.name()
+                                    << " (contact/pair_rows) are not as many as this run's: a "
+                                       "checkpoint of another run or a damaged one");
+    if (searches == 1)
+    {
+      // The set-up's rows: skip them.
+      for (int k = 0; k < pairing.n_rows(); ++k)
+        at += 2 * static_cast<std::size_t>(next()) + 5;
+      continue;
+    }
+    std::vector<ContactRow> rows(pairing.rows().begin(), pairing.rows().end());
+    for (ContactRow &row : rows)
+    {
+      const auto n = static_cast<std::size_t>(next());
+      row.partners.resize(n);
+      row.weights.resize(n);
+      for (int &k : row.partners)
+        k = static_cast<int>(next());
+      for (double &w : row.weights)
+        w = next();
+      row.area = next();
+      row.gap0 = next();
+      for (double &v : row.slip0)
+        v = next();
+    }
+    pairing.replace_rows(std::move(rows));
+    pairing.set_searches(searches);
+  }
+  KILN_CHECK_INPUT(at == state.size(), where,
+                   "its rows of the contact pairs (contact/pair_rows) are longer than this run's "
+                   "pairs need: a checkpoint of another run or a damaged one");
+  decided_ = false;
 }
 
 bool CoupledProblem::models_read_old_temperature() const

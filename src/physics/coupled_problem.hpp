@@ -4,6 +4,7 @@
 /// stepper.
 #include "contact/contact_interface.hpp"
 #include "contact/interface_strategy.hpp"
+#include "contact/pair_research.hpp"
 #include "contact/pairing_rows.hpp"
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
@@ -132,6 +133,14 @@ public:
   /// constitutive models' next time step starts there, from its temperature). Returns the
   /// pairs in contact. Collective.
   int resume(double time, const Vector &x);
+  /// The rows of the pairs whose search was redone during the run (doc/contact.md, "Small
+  /// sliding"), flattened for a checkpoint (the same on every rank): per pairing, its count of
+  /// searches and its rows' partners, weights, areas, g0 and slip0, so that a restart
+  /// rebuilds the same rows. Empty without pairings.
+  std::vector<double> pair_rows_state() const;
+  /// Restores the rows of pair_rows_state() (a restart, before resume()). Throws InputError
+  /// naming `where` (the checkpoint) if they do not fit this run's pairings.
+  void restore_pair_rows(const std::vector<double> &state, const std::string &where);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;
@@ -214,6 +223,11 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::vector<std::unique_ptr<ContactInterface>>
       pairings_; ///< per gap with pairs, then per pairing
+  /// Per entry of pairings_, the search redone during the run, or null (a split gap, rows fixed).
+  std::vector<std::shared_ptr<const PairResearch>> research_;
+  Teuchos::RCP<Teuchos::FancyOStream> log_;
+  /// Redoes the search of pairings_[p] at the accepted state the fields hold (time [s]).
+  void search_again(std::size_t p, double time);
   /// The heat across the pairs' gaps (those with a term on), kept for terms_.
   std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
   /// Per term of pair_heat_, its pair's index in StateSummary::pairs.

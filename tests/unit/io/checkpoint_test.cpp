@@ -94,7 +94,7 @@ TEST(Checkpoint, ReadBackBitForBit)
   const kiln::TimeStepper::State s = f.state();
   const double rank = f.comm->getRank();
   kiln::CheckpointInfo info{"1.2.3", "2026-11-23T00:00:00Z", "deck.xml", "<Kiln/>", 3, {},
-                            {},      {1, 0.5, 0.25, rank}};
+                            {},      {1, 0.5, 0.25, rank},   {}};
   for (std::size_t k = 0; k < f.mesh.gap_pairs.size(); ++k)
   {
     info.active.push_back(k % 2);
@@ -375,7 +375,7 @@ struct OneRank
 /// A checkpoint's info with the contact state of the mesh's gap pairs (all open).
 kiln::CheckpointInfo plain_info(const kiln::Mesh &mesh)
 {
-  kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}};
+  kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}, {}};
   info.active.assign(mesh.gap_pairs.size(), 0);
   info.traction.assign(mesh.gap_pairs.size(), 0.0);
   return info;
