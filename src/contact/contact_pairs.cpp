@@ -35,8 +35,9 @@ Teuchos::ParameterList contact_pair_parameters()
         "when the search is redone: after an accepted step where a secondary node has slid "
         "relative to its twin point on the primary surface by more than this fraction of the "
         "size of its faces (their smallest diameter) since the last search, the pair's rows "
-        "(partners, weights, areas) are rebuilt in the current configuration "
-        "(doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
+        "(partners, weights, areas) are rebuilt in the current configuration; a pair with a "
+        "Heat Transfer term keeps its rows of set-up and a run that slides further ends with an "
+        "error (exit 2) (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
         double_range_validator(0.0, 1.0));
   p.set("Sliding Distance", defaults.sliding_distance,
         "the small-sliding limit: how far the pair may slide in all. The rows redone during a "

@@ -150,7 +150,7 @@ TEST(Checkpoint, ForeignDamagedAndOtherRunsAreRefusedOnEveryRank)
 {
   Fixture f;
   const std::string path = f.folder + "/good.h5";
-  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}, {}},
+  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}},
                          f.fingerprint, *f.comm);
   if (f.comm->getRank() == 0)
   {
@@ -221,6 +221,7 @@ TEST(Checkpoint, DamagedStateOrScalarsAreRefused)
                           0,
                           std::vector<int>(n_pairs, 1),
                           std::vector<double>(n_pairs, 2.5e6),
+                          {},
                           {}},
                          f.fingerprint, *f.comm);
   const double nan = std::nan("");
@@ -308,7 +309,7 @@ TEST(Checkpoint, NonFiniteStateIsNotWritten)
   const std::string path = f.folder + "/nan_state.h5";
   try
   {
-    kiln::write_checkpoint(path, s, {"1", "now", "deck.xml", "", 0, {}, {}, {}}, f.fingerprint,
+    kiln::write_checkpoint(path, s, {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}}, f.fingerprint,
                            *f.comm);
     ADD_FAILURE() << "a NaN state was written";
   }
@@ -328,7 +329,7 @@ TEST(Checkpoint, UnwritableFolderIsAWriteError)
   try
   {
     kiln::write_checkpoint(f.folder + "/no/such/folder/c.h5", f.state(),
-                           {"1", "now", "deck.xml", "", 0, {}, {}, {}}, f.fingerprint, *f.comm);
+                           {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}}, f.fingerprint, *f.comm);
     ADD_FAILURE() << "no error";
   }
   catch (const kiln::WriteError &e)
