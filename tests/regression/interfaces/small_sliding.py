@@ -14,7 +14,10 @@ with "stopped by an error at t = 7 s" and t = 0 .. 7 s in them, the history up t
 checkpoint of the last good state, all readable. The same with backward Euler steps of 0.75 s
 (a time-dependent run): searched at 2, 4 and 6 s, it ends at its last accepted step before
 8 s, results and history up to it. Pushed by u_y = 5e-4 t m instead (5 mm by 10 s) the deck runs
-to the end, searched again once, at 8 s.
+to the end, searched again once, at 8 s. A pair with a Heat Transfer term keeps its rows of
+set-up (its heat cells are not searched again): thermo-elastic at 298 K, pushed at 2 mm/s, it
+ends at 2 s (4 mm, beyond 0.25 of its faces' 14.9 mm) with the message of the fixed rows, its
+results up to 1 s.
 usage: small_sliding.py KILN WORKDIR NP MPIEXEC"""
 import csv
 import re
@@ -32,8 +35,10 @@ work.mkdir(parents=True, exist_ok=True)
 check = kd.Checks()
 
 
-def deck(base, speed=2e-3, stepping=None):
+def deck(base, speed=2e-3, stepping=None, heat=False):
     pair = {"Primary Side Set": 10, "Secondary Side Set": 20}
+    if heat:
+        pair["Heat Transfer"] = {"Conductance": 1e4}
     mesh = kd.box_mesh((0.04, 0.04, 0.04), (8, 4, 4))
     mesh["Box"]["Second Half Cells"] = [5, 3, 6]
     return {"Physics": "Elasticity",
@@ -129,4 +134,25 @@ check(searches(run.log) == [8.0], f"within: searched again at 8 s ({searches(run
 with h5py.File(work / (base + ".h5"), "r") as h5:
     times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
 check(times == [float(t) for t in range(11)], f"within: results at t = 0 .. 10 s")
+# A pair with heat: rows fixed at set-up, the run ends beyond the fraction of a face.
+base = "heat"
+d = deck(base, heat=True)
+d["Physics"] = "Thermo-Elasticity"
+d["Material"].update({"Thermal Expansion": 2.2e-5, "Reference Temperature": 298.0,
+                      "Density": 2.7e3, "Specific Heat": 9.0e2,
+                      "Conductivity": {"Type": "Constant", "Value": 2.4e2}})
+d["Thermal"] = {"Initial Temperature": 298.0,
+                "Boundary Conditions": {"ends": kd.temperature([1, 2], 298.0)}}
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), d), n_ranks, mpiexec, cwd=work, expect=2)
+errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+message = errors[0] if errors else ""
+print(message)
+check(searches(run.log) == [], f"heat: no search redone ({searches(run.log)})")
+for part in ['pair "slide": at t = 2 s secondary node ', "beyond the small-sliding limit 0.0037",
+             "The rows of a pair with a Heat Transfer term", "its heat cells are not searched",
+             "raise the pair's \"Search Update Fraction\""]:
+    check(part in message, f"heat: the message says {part!r}")
+with h5py.File(work / (base + ".h5"), "r") as h5:
+    times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
+check(times == [0.0, 1.0], f"heat: results at t = 0, 1 s ({times})")
 sys.exit(1 if check.failed else 0)
