@@ -385,6 +385,13 @@ TEST(MortarPairing, InTheCurrentConfiguration)
   }
 }
 
+/// The search of the flat bodies' pair (side sets 1 and 2) redone within `pairing`'s margins.
+kiln::PairResearch research_of(const Mesh &mesh, const MortarPairing &pairing,
+                               const MortarPairingOptions &options)
+{
+  return kiln::PairResearch(mesh, 1, 2, options, pair, "pair \"test\"", pairing.margins());
+}
+
 TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
 {
   // Body 2 (the secondary, 5 x 3 faces) slid by 0.1 m along x and 0.004 m towards body 1:
@@ -394,7 +401,7 @@ TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
   MortarPairingOptions options;
   options.sliding_distance = 0.3;
   const MortarPairing pairing(mesh, 1, 2, options, pair);
-  const kiln::PairResearch research(mesh, 1, 2, options, pair, "pair \"test\"", pairing.margins());
+  const kiln::PairResearch research = research_of(mesh, pairing, options);
   const std::vector<Point> u = moved_block(mesh, 2, {0.1, 0.0, -0.004});
   const auto u_of = [&u](const int node) { return u[node]; };
   const std::vector<ContactRow> rows = research.rows_at(pairing.rows(), u, 3.0);
@@ -433,13 +440,14 @@ TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
 
 TEST(PairResearch, PartnersBeyondTheMarginEndTheRun)
 {
-  // The default margin (the faces within one secondary face diameter, 0.39 m) with a reach
-  // of 0.01 m: a slide by 0.45 m along x pairs nodes with primary nodes outside it.
+  // A reach of 0.011 m and no sliding distance: the margins are the primary faces within
+  // 0.011 m of each node's faces, and a slide by 0.45 m along x (almost two primary faces)
+  // pairs nodes with primary nodes outside them (or off the primary surface).
   const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
   MortarPairingOptions options;
   options.search_distance = 0.011;
   const MortarPairing pairing(mesh, 1, 2, options, pair);
-  const kiln::PairResearch research(mesh, 1, 2, options, pair, "pair \"test\"", pairing.margins());
+  const kiln::PairResearch research = research_of(mesh, pairing, options);
   try
   {
     (void)research.rows_at(pairing.rows(), moved_block(mesh, 2, {0.45, 0.0, 0.0}), 7.5);
@@ -456,6 +464,6 @@ TEST(PairResearch, PartnersBeyondTheMarginEndTheRun)
   // Within the margin of a larger sliding distance: no error.
   options.sliding_distance = 0.5;
   const MortarPairing wide(mesh, 1, 2, options, pair);
-  const kiln::PairResearch within(mesh, 1, 2, options, pair, "pair \"test\"", wide.margins());
+  const kiln::PairResearch within = research_of(mesh, wide, options);
   EXPECT_NO_THROW((void)within.rows_at(wide.rows(), moved_block(mesh, 2, {0.05, 0.0, 0.0}), 1.0));
 }
