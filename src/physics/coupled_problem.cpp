@@ -372,6 +372,10 @@ std::vector<double> CoupledProblem::preconditioner_dependencies(const Vector &x)
     const std::vector<double> c = strategy->jacobian_dependencies();
     d.insert(d.end(), c.begin(), c.end());
   }
+  // A pairing searched again has new rows (partners, weights): another Jacobian.
+  for (const auto &pairing : pairings_)
+    if (!pairing->split())
+      d.push_back(pairing->searches());
   return d;
 }
 

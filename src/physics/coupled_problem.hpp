@@ -80,11 +80,13 @@ public:
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
-  /// whether the temperature is held (freeze_temperature()) and the contact decision's
-  /// (InterfaceStrategy::jacobian_dependencies()); otherwise none.
+  /// whether the temperature is held (freeze_temperature()), the contact decision's
+  /// (InterfaceStrategy::jacobian_dependencies()) and the count of searches of each pairing
+  /// (its rows); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
-  /// a, whether the temperature is held and the contact decision's, whatever the terms (the
-  /// dependencies above of a problem with varying terms: viscoplastic flow, E(T), k(T)).
+  /// a, whether the temperature is held, the contact decision's and the pairings' searches,
+  /// whatever the terms (the dependencies above of a problem with varying terms: viscoplastic
+  /// flow, E(T), k(T)).
   std::vector<double> preconditioner_dependencies(const Vector &x) override;
   /// a, the first of the dependencies.
   std::size_t smooth_dependencies() const override { return 1; }
