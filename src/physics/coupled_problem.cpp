@@ -529,8 +529,36 @@ void CoupledProblem::search_again(const std::size_t p, const double time)
   std::vector<Point> u(static_cast<std::size_t>(mesh_.n_nodes()), Point{0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < nodes.size(); ++i)
     u[nodes[i]] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
-  pairing.replace_rows(research.rows_at(
-      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), u, time));
+  std::vector<ContactRow> rows = research.rows_at(
+      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), u, time);
+  // A new partner may not be a node of another pair or gap (the rows of one would overwrite
+  // the other's), as at set-up.
+  std::vector<int> other(static_cast<std::size_t>(mesh_.n_nodes()), -1);
+  for (std::size_t q = 0; q < pairings_.size(); ++q)
+    if (q != p)
+      for (const ContactRow &row : pairings_[q]->rows())
+      {
+        other[row.node] = static_cast<int>(q);
+        for (const int k : row.partners)
+          other[k] = static_cast<int>(q);
+      }
+  for (const ContactRow &row : rows)
+    for (const int k : row.partners)
+      if (other[k] >= 0)
+      {
+        const Point &X = mesh_.coordinates[k];
+        std::ostringstream message;
+        message << pairing.name() << ": at t = " << time
+                << " s the search redone pairs secondary node " << row.node + 1 << " with node "
+                << k + 1 << " at (" << X[0] << ", " << X[1] << ", " << X[2] << ") m, which is on "
+                << pairings_[other[k]]->name()
+                << ": a node of a pair between separately meshed bodies cannot be on another pair "
+                   "or gap (the rows of one would overwrite the other's); keep the sliding away "
+                   "from the other pair or gap, or give the pairs and gaps side sets without "
+                   "common nodes. The results up to the last accepted step are kept";
+        throw RunError(message.str());
+      }
+  pairing.replace_rows(std::move(rows));
   decided_ = false;
   if (log_ != Teuchos::null)
     *log_ << "  " << pairing.name() << ": search " << pairing.searches() << " at t = " << time
