@@ -75,16 +75,21 @@ void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int
     primary_x[p] = face_positions(primary, p);
   std::vector<NodeSums> sums(secondary.n_nodes());
   // The margins: per secondary node, the primary surface nodes of the faces facing its faces
-  // within the reach plus the sliding distance (at set-up only).
+  // within the reach plus the sliding distance (at set-up only; without a sliding distance,
+  // the faces of the search below).
   std::vector<std::vector<int>> margin(displacement == nullptr ? secondary.n_nodes() : 0);
-  if (displacement == nullptr)
+  const auto add_margin = [&](const int s, const int p)
+  {
+    for (const int n : secondary.face_nodes(s))
+      for (const int k : primary.face_nodes(p))
+        margin[n].push_back(k);
+  };
+  if (displacement == nullptr && options.sliding_distance > 0.0)
     for (int s = 0; s < secondary.n_faces(); ++s)
       for (const int p :
            search.candidates(secondary.face_box(s), search_distance_ + options.sliding_distance))
         if (dot(secondary.face_area_vector(s), primary.face_area_vector(p)) < 0.0)
-          for (const int n : secondary.face_nodes(s))
-            for (const int k : primary.face_nodes(p))
-              margin[n].push_back(k);
+          add_margin(s, p);
   // The size of each secondary node's faces: the smallest diameter among them.
   std::vector<double> face_size(secondary.n_nodes(), secondary.max_face_diameter());
   for (int s = 0; s < secondary.n_faces(); ++s)
@@ -101,6 +106,8 @@ void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int
       {
         faces.push_back(p);
         primaries.push_back({primary.face_type(p), primary_x[p]});
+        if (displacement == nullptr && !(options.sliding_distance > 0.0))
+          add_margin(s, p);
       }
     if (faces.empty())
       continue;
