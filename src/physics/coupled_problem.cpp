@@ -478,34 +478,62 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
   // A pairing whose rows have slid beyond the fraction of a face since its last search is
   // searched again in the current configuration (within its margins, else a RunError); one
-  // whose rows are fixed is refused beyond the limit, before anything is committed.
-  if (std::any_of(pairings_.begin(), pairings_.end(),
-                  [](const auto &pairing) { return !pairing->split(); }))
+  // whose rows are fixed is refused beyond the limit, before anything is committed. A state
+  // refused after a search (another pairing's limit, an open gap) gets the rows back as they
+  // were, so that the last accepted state's checkpoint has its own.
+  struct Before
   {
-    prepare(x);
-    const auto u = [this](const int node) { return fields_->u(node); };
-    const auto &comm = *dofs_.owned_dof_map()->getComm();
-    for (std::size_t p = 0; p < pairings_.size(); ++p)
+    std::size_t pairing;
+    std::vector<ContactRow> rows;
+    int searches;
+  };
+  std::vector<Before> searched;
+  try
+  {
+    if (std::any_of(pairings_.begin(), pairings_.end(),
+                    [](const auto &pairing) { return !pairing->split(); }))
     {
-      if (pairings_[p]->split())
-        continue;
-      if (p >= research_.size() || research_[p] == nullptr)
-        check_small_sliding(*pairings_[p], u, time, comm);
-      else if (slid_beyond_limit(*pairings_[p], u, comm))
-        search_again(p, time);
+      prepare(x);
+      const auto u = [this](const int node) { return fields_->u(node); };
+      const auto &comm = *dofs_.owned_dof_map()->getComm();
+      for (std::size_t p = 0; p < pairings_.size(); ++p)
+      {
+        if (pairings_[p]->split())
+          continue;
+        if (p >= research_.size() || research_[p] == nullptr)
+          check_small_sliding(*pairings_[p], u, time, comm);
+        else if (slid_beyond_limit(*pairings_[p], u, comm))
+        {
+          searched.push_back(
+              {p, std::vector<ContactRow>(pairings_[p]->rows().begin(), pairings_[p]->rows().end()),
+               pairings_[p]->searches()});
+          search_again(p, time);
+        }
+      }
     }
+    accepted_time_ = time;
+    if (quadrature_state_)
+      quadrature_state_->commit();
+    if (models_read_old_temperature())
+      fields_->set_accepted(x);
+    if (interfaces_.empty())
+      return;
+    decide(x);
+    for (const auto &strategy : interfaces_)
+      strategy->step_accepted(time);
+    check_open_gap(time);
   }
-  accepted_time_ = time;
-  if (quadrature_state_)
-    quadrature_state_->commit();
-  if (models_read_old_temperature())
-    fields_->set_accepted(x);
-  if (interfaces_.empty())
-    return;
-  decide(x);
-  for (const auto &strategy : interfaces_)
-    strategy->step_accepted(time);
-  check_open_gap(time);
+  catch (...)
+  {
+    for (Before &before : searched)
+    {
+      pairings_[before.pairing]->replace_rows(std::move(before.rows));
+      pairings_[before.pairing]->set_searches(before.searches);
+    }
+    if (!searched.empty())
+      decided_ = false;
+    throw;
+  }
 }
 
 void CoupledProblem::search_again(const std::size_t p, const double time)
