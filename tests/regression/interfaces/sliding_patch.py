@@ -22,7 +22,8 @@ apart from the wall time.
 Beyond the margin: with "Search Distance" 1 mm and no "Sliding Distance" the rows' margins
 hold the primary faces within 1 mm of each node's faces only: the search at 4 s (8 mm slid)
 pairs a node outside them, and the run ends with exit 2 and the message (the pair, the node,
-the time, what to change), its results and history up to 3 s.
+the time, what to change), its results and history up to 3 s, its checkpoint of 3 s with the
+rows of the search at 2 s.
 usage: sliding_patch.py KILN WORKDIR NP MPIEXEC"""
 import csv
 import math
@@ -212,4 +213,10 @@ check(status.startswith('stopped by an error at t = 3 s: pair "slide": at t = 4 
 check(times == [float(t) for t in range(4)], f"results at t = 0 .. 3 s ({times})")
 check(math.isclose(float(history(work / (base + ".history.csv"))[-1][1]), 3.0),
       "the history ends at 3 s")
+# The checkpoint of the last good state carries the rows of its last search (the second, at 2 s).
+with h5py.File(work / (base + ".checkpoint.h5"), "r") as h5:
+    rows = h5["contact/pair_rows"][...]
+    when = float(h5["state"].attrs["time"])
+check(when == 3.0 and rows[0] == 2 and rows[1] == 28,
+      f"the checkpoint at 3 s with the rows of search 2 ({when}, {rows[:2]})")
 sys.exit(1 if check.failed else 0)
