@@ -23,7 +23,9 @@ Beyond the margin: with "Search Distance" 1 mm and no "Sliding Distance" the row
 hold the primary faces within 1 mm of each node's faces only: the search at 4 s (8 mm slid)
 pairs a node outside them, and the run ends with exit 2 and the message (the pair, the node,
 the time, what to change), its results and history up to 3 s, its checkpoint of 3 s with the
-rows of the search at 2 s.
+rows of the search at 2 s. Onto another gap: body 1 split at y = 3.55 cm (a split gap whose
+nodes on the contact face the rows reach once the sliding body's edge passes 2.82 cm): the
+search at 6 s ends the run with the message naming the gap, the files up to 5 s.
 usage: sliding_patch.py KILN WORKDIR NP MPIEXEC"""
 import csv
 import math
@@ -66,7 +68,9 @@ def block(x0, x1, y0, y1, z0, z1, n, first_node):
     return nodes, cells
 
 
-def write_mesh(path):
+def write_mesh(path, gap_y=None):
+    """The two bodies; with gap_y, side set 30: the faces y = gap_y of body 1's cells below it
+    (a gap to split body 1 at)."""
     nodes1, cells1 = block(-0.04, 0.0, -0.03, 0.05, -0.02, 0.02, (4, 11, 4), 1)
     nodes2, cells2 = block(0.0, 0.04, -0.02, 0.02, -0.02, 0.02, (5, 6, 3), len(nodes1) + 1)
     nodes = nodes1 + nodes2
@@ -80,16 +84,21 @@ def write_mesh(path):
                  (10,) + sides(cells1, 1, lambda p: abs(p[0]) < tol),
                  (2,) + sides(cells2, first2, lambda p: abs(p[0] - 0.04) < tol),
                  (20,) + sides(cells2, first2, lambda p: abs(p[0]) < tol)]
+    if gap_y is not None:
+        elems, faces = sides(cells1, 1, lambda p: abs(p[1] - gap_y) < tol)
+        below = [(e, f) for e, f in zip(elems, faces)
+                 if sum(nodes[n - 1][1] for n in cells1[e - 1]) / 8 < gap_y]
+        side_sets.append((30, [e for e, _ in below], [f for _, f in below]))
     exodus_mesh.write(str(path), nodes, [(1, "HEX8", cells1), (2, "HEX8", cells2)], side_sets,
                       title="sliding patch")
 
 
-def deck(base, times, pair=None, checkpoint=None):
+def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=0):
     entry = {"Primary Side Set": 10, "Secondary Side Set": 20, "Sliding Distance": 0.025}
     if pair is not None:
         entry = {"Primary Side Set": 10, "Secondary Side Set": 20, **pair}
     d = {"Physics": "Elasticity",
-         "Mesh": kd.exodus_mesh("sliding-patch.exo"),
+         "Mesh": kd.exodus_mesh(mesh, gap),
          "Material": kd.lame(0.0, G),
          "Mechanics": {
              "Boundary Conditions": {
@@ -219,4 +228,22 @@ with h5py.File(work / (base + ".checkpoint.h5"), "r") as h5:
     when = float(h5["state"].attrs["time"])
 check(when == 3.0 and rows[0] == 2 and rows[1] == 28,
       f"the checkpoint at 3 s with the rows of search 2 ({when}, {rows[:2]})")
+# Onto another gap: body 1 split at y = 3.55 cm (its grid line 9 of 11; a split gap, side set
+# 30), a node of which the sliding body's rows reach at 6 s (its edge at 3.2 cm): exit 2 with
+# the message naming both, the files up to 5 s.
+write_mesh(work / "sliding-patch-gap.exo", gap_y=-0.03 + 9 * 0.08 / 11)
+base = "onto-gap"
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11),
+                                                            mesh="sliding-patch-gap.exo", gap=30)),
+                  n_ranks, mpiexec, cwd=work, expect=2)
+errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+message = errors[0] if errors else ""
+print(message)
+for part in ['pair "slide": at t = 6 s the search redone pairs secondary node ',
+             "which is on gap side set 30", "cannot be on another pair or gap"]:
+    check(part in message, f"onto a gap: the message says {part!r}")
+check(searches(run.log) == [2.0, 4.0], f"onto a gap: searched at 2 and 4 s ({searches(run.log)})")
+with h5py.File(run.results, "r") as h5:
+    times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
+check(times == [float(t) for t in range(6)], f"onto a gap: results at t = 0 .. 5 s ({times})")
 sys.exit(1 if check.failed else 0)
