@@ -147,6 +147,7 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
     info.active.push_back(contact.pair_active[p] == 1.0 ? 1 : 0);
     info.traction.push_back(contact.pair_traction[p]);
   }
+  info.pair_rows = c_.problem.pair_rows_state();
   write_checkpoint(path, state, info, c_.fingerprint, *c_.comm, c_.problem.quadrature_state());
   // BASE.h5 names the latest: a hard link (a copy where links are not possible), replaced
   // in one rename.

@@ -1,6 +1,7 @@
 #include "app/simulation.hpp"
 
 #include "app/checkpoint_schedule.hpp"
+#include "app/contact_pairs_setup.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/output_schedule.hpp"
 #include "app/progress_report.hpp"
@@ -11,10 +12,6 @@
 #include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "base/stop_request.hpp"
-#include "contact/contact_interface.hpp"
-#include "contact/contact_pairs.hpp"
-#include "contact/interface_parameters.hpp"
-#include "contact/mortar_pairing.hpp"
 #include "io/checkpoint.hpp"
 #include "io/exodus_results_replay.hpp"
 #include "io/exodus_results_writer.hpp"
@@ -28,7 +25,6 @@
 #include "mesh/mesh_factory.hpp"
 #include "mesh/metis_partitioner.hpp"
 #include "physics/coupled_problem.hpp"
-#include "physics/heat/pair_gap_heat.hpp"
 #include "physics/materials/material_map.hpp"
 #include "solvers/fault_injection.hpp"
 #include "solvers/newton_solver.hpp"
@@ -156,62 +152,17 @@ void Simulation::setup()
                      ? partition_cells_by_block(mesh_, *comm_, where)
                      : partition_cells(mesh_, *comm_, where);
   }
-  // The rows of the contact pairs between separately meshed bodies, fixed at set-up: their
-  // partners join the DofManager's graph and overlap before its maps are built.
+  // The rows of the contact pairs between separately meshed bodies: their partners join the
+  // DofManager's graph and overlap before its maps are built.
   std::vector<PairingRows> pairings;
   if (layout_.contact)
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 contact pairs"));
-    const Teuchos::ParameterList &contact = params_.sublist("Mechanics").sublist("Contact");
-    for (const ContactPairInput &pair :
-         contact_pairs(contact, input_path_ + ": Kiln/Mechanics/Contact"))
-    {
-      const MortarPairing pairing(mesh_, pair.primary_side_set, pair.secondary_side_set,
-                                  pair.options, pair.where);
-      pairings.push_back({"pair \"" + pair.name + "\"", pairing.rows(),
-                          pair_interface_parameters(contact), nullptr});
-      mesh_.contact_pairs.push_back({pair.name, pair.secondary_side_set});
-      // The heat across its gap, on the cells of the same search.
-      if (pair.heat_transfer.numParams() > 0)
-      {
-        KILN_CHECK_INPUT(
-            layout_.temperature ||
-                !MortarGapHeat(pair.heat_transfer, pair.where + "/Heat Transfer").active(),
-            pair.where + "/Heat Transfer",
-            "carries heat across the pair, but the run has no temperature "
-            "(Kiln/\"Physics\" = \"Elasticity\"); set Physics to "
-            "\"Thermo-Elasticity\", or remove the Heat Transfer sublist");
-      }
-      if (layout_.temperature && pair.heat_transfer.numParams() > 0)
-      {
-        // The contact conductance's pressure reads the materials' elastic laws.
-        std::optional<MaterialMap> materials;
-        if (pair.heat_transfer.isParameter("Gap Pressure Coefficient") &&
-            pair.heat_transfer.get<double>("Gap Pressure Coefficient") > 0.0)
-          materials.emplace(params_, mesh_.block_ids(), input_path_);
-        auto heat = std::make_shared<const PairGapHeat>(
-            mesh_, pair.primary_side_set, pair.secondary_side_set, pairing.search_distance(),
-            pair.heat_transfer, pair.where + "/Heat Transfer",
-            materials ? &materials->uniform_material() : nullptr,
-            materials ? &*materials : nullptr);
-        if (heat->active())
-          pairings.back().heat = std::move(heat);
-      }
-    }
+    pairings = setup_contact_pairs(mesh_, params_, layout_, input_path_);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 2 partition"));
-    std::vector<std::pair<int, int>> links;
-    for (const PairingRows &pairing : pairings)
-    {
-      const auto more = partner_links(pairing.rows);
-      links.insert(links.end(), more.begin(), more.end());
-      if (pairing.heat != nullptr)
-      {
-        const auto heat = pairing.heat->links();
-        links.insert(links.end(), heat.begin(), heat.end());
-      }
-    }
+    const std::vector<std::pair<int, int>> links = pairing_links(pairings);
     dofs_ = std::make_unique<DofManager>(mesh_, cell_rank_, comm_, layout_, links);
   }
   {
@@ -335,11 +286,11 @@ Simulation::Ending Simulation::run()
   ProgressReport progress(out_, {params_.sublist("Time Stepping").get<std::string>("Method"),
                                  state.time, outputs_->end_time(), state.statistics.steps,
                                  log_is_terminal(), started_});
-  RunObserver observer({*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints,
-                        history, progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
-                        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}},
-                        comm_, out_},
-                       output_steps);
+  RunObserver observer(
+      {*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints, history,
+       progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
+       CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}}, comm_, out_},
+      output_steps);
   observer.start(state, fresh);
   bool finished = false;
   try
@@ -496,6 +447,7 @@ TimeStepper::State Simulation::resume()
 {
   Checkpoint c = restart_plan_->read(RunFingerprint::of(mesh_, layout_, params_),
                                      problem_->solution_map(), problem_->quadrature_state());
+  problem_->restore_pair_rows(c.info.pair_rows, restart_);
   const int active = problem_->resume(c.state.time, *c.state.x);
   int saved_active = 0;
   for (const int a : c.info.active)

@@ -38,6 +38,15 @@ public:
   ContactInterface(const Mesh &mesh, const DofManager &dofs, std::vector<ContactRow> rows,
                    double modulus, double scale, std::string name);
 
+  /// Replaces a pairing's rows by `rows` of the same nodes in the same order (its search
+  /// redone during a run, PairResearch); c follows the new areas. Their partners must be among
+  /// the links the DofManager was given (the margins). Counts a search.
+  void replace_rows(std::vector<ContactRow> rows);
+  /// The searches that made the rows: 1 at set-up, one more per replace_rows().
+  int searches() const { return searches_; }
+  /// Sets the count of searches (a restart, from the checkpoint).
+  void set_searches(const int searches) { searches_ = searches; }
+
   const Mesh &mesh() const { return mesh_; }
   const std::vector<Row> &rows() const { return rows_; }
   int n_rows() const { return static_cast<int>(rows_.size()); }
@@ -59,6 +68,7 @@ public:
 
 private:
   void index(const DofManager &dofs);
+  void index_partners();
 
   const Mesh &mesh_;
   int gap_ = -1;
@@ -68,6 +78,8 @@ private:
   std::vector<int> offsets_;         ///< per mesh node, into rows_of_partner_ (CSR)
   std::vector<int> rows_of_partner_; ///< the rows of each partner node, increasing
   std::vector<int> row_of_node_;     ///< per mesh node, its row as node j, or -1
+  int searches_ = 1;
+  double c_scale_ = 0.0; ///< a pairing's s (lambda + 2G) [Pa]: c = this / sqrt(D_jj)
 };
 
 /// The links (j, k) of rows to their partners, for DofManager (which makes both ways).

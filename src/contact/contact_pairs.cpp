@@ -32,13 +32,21 @@ Teuchos::ParameterList contact_pair_parameters()
         "about h^2 / (8 R) (h the face size, R the radius): raise it to that [m]",
         nonnegative_double_validator());
   p.set("Search Update Fraction", defaults.search_update_fraction,
-        "the small-sliding limit: the pair's rows are built once, in the reference "
-        "configuration, so a secondary node may slide relative to its twin point on the "
-        "primary surface by at most this fraction of the size of its faces (their smallest "
-        "diameter); checked after every accepted step, and a run that slides further ends with "
-        "an error (exit 2) naming the pair and the node, its results up to the last accepted "
-        "step kept (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
+        "when the search is redone: after an accepted step where a secondary node has slid "
+        "relative to its twin point on the primary surface by more than this fraction of the "
+        "size of its faces (their smallest diameter) since the last search, the pair's rows "
+        "(partners, weights, areas) are rebuilt in the current configuration; a pair with a "
+        "Heat Transfer term keeps its rows of set-up and a run that slides further ends with an "
+        "error (exit 2) (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
         double_range_validator(0.0, 1.0));
+  p.set("Sliding Distance", defaults.sliding_distance,
+        "the small-sliding limit: how far the pair may slide in all. The rows redone during a "
+        "run may only take partners among the primary nodes linked at set-up: those of the "
+        "primary faces within \"Search Distance\" plus this of each secondary node's faces; a "
+        "run that slides further ends with an error (exit 2) naming the pair and the node, its "
+        "results up to the last accepted step kept. 0: the faces the search finds (about a "
+        "ring of faces around the overlap). A larger distance costs a larger matrix graph [m]",
+        nonnegative_double_validator());
   return p;
 }
 
@@ -76,6 +84,7 @@ std::vector<ContactPairInput> contact_pairs(const Teuchos::ParameterList &contac
     pair.options.search_distance = entry.get<double>("Search Distance");
     pair.options.penetration_tolerance = entry.get<double>("Penetration Tolerance");
     pair.options.search_update_fraction = entry.get<double>("Search Update Fraction");
+    pair.options.sliding_distance = entry.get<double>("Sliding Distance");
     KILN_CHECK_INPUT(pair.options.search_update_fraction > 0.0,
                      pair.where + "/\"Search Update Fraction\"",
                      "is 0; give the fraction of a face the secondary nodes may slide, in (0, 1] "

@@ -28,7 +28,7 @@ struct ContactPairInput
 
 /// The parameters of one pair (declared as Contact's "Pairs", interface_parameters()):
 /// "Primary Side Set", "Secondary Side Set" (both required), "Search Distance", "Penetration
-/// Tolerance", "Search Update Fraction".
+/// Tolerance", "Search Update Fraction", "Sliding Distance".
 Teuchos::ParameterList contact_pair_parameters();
 
 /// The pairs of the validated Contact sublist `contact`, in the input's order; `path` names

@@ -20,11 +20,14 @@ struct ContactRow
   double gap0 = 0;
   std::vector<int> partners;   ///< the primary mesh nodes k (the split gap: node a)
   std::vector<double> weights; ///< w_jk, as many as partners, summing to 1 [-]
-  /// The small-sliding limit of a mortar pairing's row (check_small_sliding): the largest
-  /// tangential slip of j relative to its twin point accepted, `Search Update Fraction` times
-  /// `face_size`, the smallest diameter of j's secondary faces [m]; 0: not checked (a split
-  /// gap, whose sides share their nodes' positions).
+  /// The slip of a mortar pairing's row since its last search beyond which it is searched
+  /// again (PairResearch; or, with rows fixed at set-up, the run ends: check_small_sliding):
+  /// `Search Update Fraction` times `face_size`, the smallest diameter of j's secondary faces
+  /// [m]; 0: not checked (a split gap, whose sides share their nodes' positions).
   double slip_limit = 0;
   double face_size = 0;
+  /// The relative displacement u_j - sum_k w_jk u_k at the state of the row's last search [m]
+  /// (0 at set-up): the slip is measured from it (row_slip).
+  Point slip0{};
 };
 } // namespace kiln

@@ -37,9 +37,34 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
                              const int secondary_side_set, const MortarPairingOptions &options,
                              const std::string &where)
 {
+  pair(mesh, primary_side_set, secondary_side_set, options, where, nullptr);
+}
+
+MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
+                             const int secondary_side_set, const MortarPairingOptions &options,
+                             const std::string &where, const std::vector<Point> &displacement)
+{
+  KILN_ASSERT(displacement.size() == static_cast<std::size_t>(mesh.n_nodes()),
+              "a displacement per mesh node");
+  pair(mesh, primary_side_set, secondary_side_set, options, where, &displacement);
+}
+
+void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int secondary_side_set,
+                         const MortarPairingOptions &options, const std::string &where,
+                         const std::vector<Point> *displacement)
+{
   check_distinct_side_sets(primary_side_set, secondary_side_set, where);
-  const ContactSurface primary(mesh, primary_side_set, where + "/\"Primary Side Set\"");
-  const ContactSurface secondary(mesh, secondary_side_set, where + "/\"Secondary Side Set\"");
+  ContactSurface primary(mesh, primary_side_set, where + "/\"Primary Side Set\"");
+  ContactSurface secondary(mesh, secondary_side_set, where + "/\"Secondary Side Set\"");
+  if (displacement != nullptr)
+    for (ContactSurface *surface : {&primary, &secondary})
+    {
+      std::vector<Point> u;
+      u.reserve(surface->nodes().size());
+      for (const int n : surface->nodes())
+        u.push_back((*displacement)[n]);
+      surface->set_displacement(u);
+    }
   search_distance_ =
       options.search_distance > 0 ? options.search_distance : secondary.max_face_diameter();
   check_surfaces_face_each_other(primary, secondary, search_distance_, where);
@@ -49,6 +74,22 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
   for (int p = 0; p < primary.n_faces(); ++p)
     primary_x[p] = face_positions(primary, p);
   std::vector<NodeSums> sums(secondary.n_nodes());
+  // The margins: per secondary node, the primary surface nodes of the faces facing its faces
+  // within the reach plus the sliding distance (at set-up only; without a sliding distance,
+  // the faces of the search below).
+  std::vector<std::vector<int>> margin(displacement == nullptr ? secondary.n_nodes() : 0);
+  const auto add_margin = [&](const int s, const int p)
+  {
+    for (const int n : secondary.face_nodes(s))
+      for (const int k : primary.face_nodes(p))
+        margin[n].push_back(k);
+  };
+  if (displacement == nullptr && options.sliding_distance > 0.0)
+    for (int s = 0; s < secondary.n_faces(); ++s)
+      for (const int p :
+           search.candidates(secondary.face_box(s), search_distance_ + options.sliding_distance))
+        if (dot(secondary.face_area_vector(s), primary.face_area_vector(p)) < 0.0)
+          add_margin(s, p);
   // The size of each secondary node's faces: the smallest diameter among them.
   std::vector<double> face_size(secondary.n_nodes(), secondary.max_face_diameter());
   for (int s = 0; s < secondary.n_faces(); ++s)
@@ -65,6 +106,8 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
       {
         faces.push_back(p);
         primaries.push_back({primary.face_type(p), primary_x[p]});
+        if (displacement == nullptr && !(options.sliding_distance > 0.0))
+          add_margin(s, p);
       }
     if (faces.empty())
       continue;
@@ -110,7 +153,18 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
       row.partners.push_back(primary.nodes()[k]);
       row.weights.push_back(M / sum.D);
     }
-    KILN_CHECK_INPUT(row.gap0 >= -options.penetration_tolerance, where,
+    if (displacement == nullptr)
+    {
+      std::vector<int> &linked = margin[j];
+      std::sort(linked.begin(), linked.end());
+      linked.erase(std::unique(linked.begin(), linked.end()), linked.end());
+      std::vector<int> nodes;
+      nodes.reserve(linked.size());
+      for (const int k : linked)
+        nodes.push_back(primary.nodes()[k]);
+      margins_.push_back(std::move(nodes));
+    }
+    KILN_CHECK_INPUT(displacement != nullptr || row.gap0 >= -options.penetration_tolerance, where,
                      "the bodies interpenetrate: secondary node "
                          << row.node + 1 << " (side set " << secondary_side_set << ") at ("
                          << mesh.coordinates[row.node][0] << ", " << mesh.coordinates[row.node][1]

@@ -13,13 +13,14 @@
 /// covers too little of it for its multiplier to be sound). On flat surfaces g0_j = n_j . (X_j -
 /// sum_k w_jk X_k).
 ///
-/// In the reference configuration X, once (the search redone as the bodies move is a later
-/// step): each row's slip_limit is `search_update_fraction` times the smallest diameter of its
-/// node's secondary faces, checked after every accepted step (check_small_sliding). The mesh is
-/// replicated, so every rank computes the rows of the whole secondary surface, in the same order
-/// (deterministic: the same rows on every rank and for every number of ranks). When the mesh is
-/// distributed, a rank will integrate the secondary faces of its owned cells and sum D, M and g~ of
-/// a node whose faces lie on two ranks to its owner (an Export with ADD), as the design says.
+/// In the reference configuration X at set-up, and in X + u when the search is redone during a
+/// run (PairResearch, doc/contact.md "Small sliding"): each row's slip_limit is
+/// `search_update_fraction` times the smallest diameter of its node's secondary faces, checked
+/// after every accepted step (check_small_sliding). The mesh is replicated, so every rank computes
+/// the rows of the whole secondary surface, in the same order (deterministic: the same rows on
+/// every rank and for every number of ranks). When the mesh is distributed, a rank will integrate
+/// the secondary faces of its owned cells and sum D, M and g~ of a node whose faces lie on two
+/// ranks to its owner (an Export with ADD), as the design says.
 #include "contact/contact_row.hpp"
 #include "mesh/mesh.hpp"
 
@@ -39,6 +40,12 @@ struct MortarPairingOptions
   /// The small-sliding limit as a fraction of the size of a secondary node's faces, in (0, 1]
   /// [-]: ContactRow::slip_limit (doc/contact.md, "Small sliding").
   double search_update_fraction = 0.25;
+  /// How far the pair may slide in all [m]: the margin of each row's partner links (margins())
+  /// reaches the primary faces within search_distance + this of its node's faces; the search
+  /// redone during a run finds partners within it, or the run ends (PairResearch). 0: the
+  /// margin is the faces the search finds (with the default reach, a ring of faces around the
+  /// overlap).
+  double sliding_distance = 0.0;
 };
 
 class MortarPairing
@@ -53,10 +60,22 @@ public:
   /// covers no secondary node.
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where);
+  /// The same in the current configuration X + u, `displacement` u per mesh node [m] (the
+  /// search redone during a run, PairResearch): the rows' normals are the current
+  /// configuration's, their slip limits are computed alike; the interpenetration of the
+  /// state is not checked (it is the solver's) and no margins are computed.
+  MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
+                const MortarPairingOptions &options, const std::string &where,
+                const std::vector<Point> &displacement);
 
   /// One row per covered secondary node, in increasing mesh node id; partners in increasing
   /// mesh node id.
   const std::vector<ContactRow> &rows() const { return rows_; }
+  /// Per row (in rows() order), the primary mesh nodes its node j is linked to at set-up,
+  /// increasing: the nodes of the primary faces facing j's faces whose boxes are within
+  /// search_distance() + the option's sliding_distance of theirs (a superset of the row's
+  /// partners). Empty for a pairing in a displaced configuration.
+  const std::vector<std::vector<int>> &margins() const { return margins_; }
   /// The reach the search used [m] (the option, or its default).
   double search_distance() const { return search_distance_; }
 
@@ -65,7 +84,12 @@ public:
   static constexpr double multiplier_fraction() { return 1e-6; }
 
 private:
+  void pair(const Mesh &mesh, int primary_side_set, int secondary_side_set,
+            const MortarPairingOptions &options, const std::string &where,
+            const std::vector<Point> *displacement);
+
   std::vector<ContactRow> rows_;
+  std::vector<std::vector<int>> margins_;
   double search_distance_ = 0.0;
 };
 } // namespace kiln

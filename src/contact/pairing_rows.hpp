@@ -12,6 +12,7 @@
 namespace kiln
 {
 class PairGapHeat;
+class PairResearch;
 
 /// A pairing's rows (e.g. MortarPairing's, fixed at set-up) and its interface parameters
 /// ("Kind", "Complementarity Scale" and the kind's own, validated as the "Contact" sublist's).
@@ -24,5 +25,9 @@ struct PairingRows
   /// The heat across the pair's gap (physics/heat/pair_gap_heat.hpp), null without a term
   /// on; the DofManager must have been given its links() too.
   std::shared_ptr<const PairGapHeat> heat;
+  /// The search redone during a run (contact/pair_research.hpp), null for rows fixed at
+  /// set-up (a pair with a heat term: their slip is checked against the limit instead); the
+  /// DofManager must have been given its links() (the margins) instead of partner_links(rows).
+  std::shared_ptr<const PairResearch> research;
 };
 } // namespace kiln

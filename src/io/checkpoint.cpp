@@ -228,6 +228,12 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
                          H5Gclose, "group contact");
         write_array(contact, "active", info.active, 1);
         write_array(contact, "gap_normal_traction", info.traction, 1);
+        if (!info.pair_rows.empty())
+        {
+          // The pairs' rows (the same on every rank), with their length.
+          write_attribute(contact, "n_pair_rows", static_cast<int>(info.pair_rows.size()));
+          write_array(contact, "pair_rows", info.pair_rows, 1);
+        }
         if (!origins.empty())
         {
           // One row per rank (NewtonSolver::preconditioner_origin()).
@@ -344,6 +350,10 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
     const H5 contact(H5Gopen2(file, "contact", H5P_DEFAULT), H5Gclose, "group contact");
     c.info.active = read_array<int>(contact, "active", f.n_pairs);
     c.info.traction = read_array<double>(contact, "gap_normal_traction", f.n_pairs);
+    if (H5Lexists(contact, "pair_rows", H5P_DEFAULT) > 0)
+      c.info.pair_rows =
+          read_array<double>(contact, "pair_rows",
+                             static_cast<std::size_t>(read_attribute<int>(contact, "n_pair_rows")));
     for (std::size_t i = 0; i < c.info.active.size(); ++i)
       if ((c.info.active[i] != 0 && c.info.active[i] != 1) || !std::isfinite(c.info.traction[i]))
         throw std::runtime_error("its contact state of gap pair " + std::to_string(i) +

@@ -27,6 +27,9 @@ struct CheckpointInfo
   /// This rank's NewtonSolver::preconditioner_origin() (written for every rank; read back
   /// only on as many ranks, else empty).
   std::vector<double> preconditioner_origin;
+  /// The rows of the contact pairs between bodies meshed apart as their last search left
+  /// them (CoupledProblem::pair_rows_state()); empty without pairings.
+  std::vector<double> pair_rows;
 };
 
 /// Writes `state` (on the owned map of the unknowns), `info` and `fingerprint` to `path`:

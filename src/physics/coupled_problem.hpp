@@ -4,6 +4,7 @@
 /// stepper.
 #include "contact/contact_interface.hpp"
 #include "contact/interface_strategy.hpp"
+#include "contact/pair_research.hpp"
 #include "contact/pairing_rows.hpp"
 #include "discretization/assembler.hpp"
 #include "discretization/nodal_constraints.hpp"
@@ -79,11 +80,13 @@ public:
   Teuchos::RCP<const Vector> time_error_mask() const override { return hints_->time_error_mask(); }
   void evaluate(const Vector &x, Vector *f, Matrix *J) override;
   /// With terms whose Jacobians are all constant (ResidualTerms::constant_jacobian()): a,
-  /// whether the temperature is held (freeze_temperature()) and the contact decision's
-  /// (InterfaceStrategy::jacobian_dependencies()); otherwise none.
+  /// whether the temperature is held (freeze_temperature()), the contact decision's
+  /// (InterfaceStrategy::jacobian_dependencies()) and the count of searches of each pairing
+  /// (its rows); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
-  /// a, whether the temperature is held and the contact decision's, whatever the terms (the
-  /// dependencies above of a problem with varying terms: viscoplastic flow, E(T), k(T)).
+  /// a, whether the temperature is held, the contact decision's and the pairings' searches,
+  /// whatever the terms (the dependencies above of a problem with varying terms: viscoplastic
+  /// flow, E(T), k(T)).
   std::vector<double> preconditioner_dependencies(const Vector &x) override;
   /// a, the first of the dependencies.
   std::size_t smooth_dependencies() const override { return 1; }
@@ -132,6 +135,14 @@ public:
   /// constitutive models' next time step starts there, from its temperature). Returns the
   /// pairs in contact. Collective.
   int resume(double time, const Vector &x);
+  /// The rows of the pairs whose search was redone during the run (doc/contact.md, "Small
+  /// sliding"), flattened for a checkpoint (the same on every rank): per pairing, its count of
+  /// searches and its rows' partners, weights, areas, g0 and slip0, so that a restart
+  /// rebuilds the same rows. Empty without pairings.
+  std::vector<double> pair_rows_state() const;
+  /// Restores the rows of pair_rows_state() (a restart, before resume()). Throws InputError
+  /// naming `where` (the checkpoint) if they do not fit this run's pairings.
+  void restore_pair_rows(const std::vector<double> &state, const std::string &where);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;
@@ -219,6 +230,11 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::vector<std::unique_ptr<ContactInterface>>
       pairings_; ///< per gap with pairs, then per pairing
+  /// Per entry of pairings_, the search redone during the run, or null (a split gap, rows fixed).
+  std::vector<std::shared_ptr<const PairResearch>> research_;
+  Teuchos::RCP<Teuchos::FancyOStream> log_;
+  /// Redoes the search of pairings_[p] at the accepted state the fields hold (time [s]).
+  void search_again(std::size_t p, double time);
   /// The heat across the pairs' gaps (those with a term on), kept for terms_.
   std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
   /// Per term of pair_heat_, its pair's index in StateSummary::pairs.

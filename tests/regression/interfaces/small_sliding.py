@@ -4,15 +4,20 @@ doc/contact.md, "Small sliding"), in whole runs. The contact box's halves meshed
 (4 cm cube, x < 0 in 4 x 4 x 4 cells, x > 0 in 5 x 3 x 6: the secondary faces 6.67 x 13.3 mm,
 diameter 14.9 mm), frictionless ("Contact"), steady elasticity: the half x < 0 held on its end
 face (side set 1), the half x > 0 pressed onto it by u_x = -1e-5 m on its end face (2) and
-pushed sideways by u_y = 5e-4 t m there (u_z = 0), so that it slides along the pair by about
-u_y(t). With the default "Search Update Fraction" 0.25 the limit is 3.73 mm: the solves at
-t = 0 .. 7 s (3.5 mm) are accepted, t = 8 s (4 mm) is beyond it: exit 2 and the message (the
-pair, the node, the time, the slip, the limit, what to change), the results finished with
-"stopped by an error at t = 7 s" and t = 0 .. 7 s in them, the history up to 7 s and a
+pushed sideways by u_y = 2e-3 t m there (u_z = 0), so that it slides along the pair by about
+u_y(t). With the default "Search Update Fraction" 0.25 the search is redone when a row has slid
+3.73 mm since the last one: at t = 2, 4 and 6 s, and at t = 8 s (16 mm), where the secondary
+nodes at y = 2 cm have slid off the primary surface (beyond its edge by more than their faces'
+13.3 mm along y):
+exit 2 and the message (the pair, the node, the time, what to change), the results finished
+with "stopped by an error at t = 7 s" and t = 0 .. 7 s in them, the history up to 7 s and a
 checkpoint of the last good state, all readable. The same with backward Euler steps of 0.75 s
-(a time-dependent run): it ends at its last accepted step below the limit, results and history
-up to it. With "Search Update Fraction" 0.5 (limit 7.45 mm) the steady deck runs to 10 s
-(5 mm).
+(a time-dependent run): searched at 2, 4 and 6 s, it ends at its last accepted step before
+8 s, results and history up to it. Pushed by u_y = 5e-4 t m instead (5 mm by 10 s) the deck runs
+to the end, searched again once, at 8 s. A pair with a Heat Transfer term keeps its rows of
+set-up (its heat cells are not searched again): thermo-elastic at 298 K, pushed at 2 mm/s, it
+ends at 2 s (4 mm, beyond 0.25 of its faces' 14.9 mm) with the message of the fixed rows, its
+results up to 1 s.
 usage: small_sliding.py KILN WORKDIR NP MPIEXEC"""
 import csv
 import re
@@ -30,10 +35,10 @@ work.mkdir(parents=True, exist_ok=True)
 check = kd.Checks()
 
 
-def deck(base, fraction=None, stepping=None):
+def deck(base, speed=2e-3, stepping=None, heat=False):
     pair = {"Primary Side Set": 10, "Secondary Side Set": 20}
-    if fraction is not None:
-        pair["Search Update Fraction"] = fraction
+    if heat:
+        pair["Heat Transfer"] = {"Conductance": 1e4}
     mesh = kd.box_mesh((0.04, 0.04, 0.04), (8, 4, 4))
     mesh["Box"]["Second Half Cells"] = [5, 3, 6]
     return {"Physics": "Elasticity",
@@ -43,7 +48,7 @@ def deck(base, fraction=None, stepping=None):
                 "Boundary Conditions": {
                     "held": kd.displacement([1], ["x", "y", "z"]),
                     "pressed": kd.displacement([2], ["x"], kd.constant(-1e-5)),
-                    "pushed": kd.displacement([2], ["y"], kd.expression("5e-4*t")),
+                    "pushed": kd.displacement([2], ["y"], kd.expression(f"{speed}*t")),
                     "level": kd.displacement([2], ["z"])},
                 "Contact": {"Pairs": {"slide": pair}}},
             "Time Stepping": stepping or {"Method": "Steady"},
@@ -55,6 +60,10 @@ def status_of(h5):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
+def searches(log):
+    return [float(t) for t in re.findall(r'pair "slide": search \d+ at t = ([0-9.e+-]+) s', log)]
+
+
 # Beyond the limit: exit 2, the message, the results up to 7 s kept.
 base = "beyond"
 run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base)), n_ranks, mpiexec,
@@ -63,10 +72,10 @@ errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:
 check(len(errors) == 1, f"one error line ({len(errors)})")
 message = errors[0] if errors else ""
 print(message)
-for part in ['pair "slide": at t = 8 s secondary node ', "has slid 0.00", " beyond the small-sliding limit 0.0037",
-             '("Search Update Fraction" 0.25 times its faces\' size 0.0149',
-             "The pairs support small sliding only",
-             "raise the pair's \"Search Update Fraction\""]:
+check(searches(run.log) == [2.0, 4.0, 6.0], f"searched again at 2, 4, 6 s ({searches(run.log)})")
+for part in ['pair "slide": at t = 8 s secondary node ', "has slid off the primary surface",
+             "no longer covered", "needs a larger primary surface",
+             "raise the pair's \"Sliding Distance\"", "The results up to the last accepted step"]:
     check(part in message, f"the message says {part!r}")
 results = work / (base + ".h5")
 check(results.is_file() and not (work / (base + ".running.h5")).exists(), "results finished")
@@ -78,11 +87,11 @@ check(status.startswith('stopped by an error at t = 7 s: pair "slide": at t = 8 
 check(times == [float(t) for t in range(8)], f"results at t = 0 .. 7 s ({times})")
 last = kd.read_step(str(results))
 check(abs(last["time"] - 7.0) < 1e-12 and "displacement" in last, "the last step readable")
-# The last good state is that of 7 s: body 2 pushed by u_y = 3.5 mm.
+# The last good state is that of 7 s: body 2 pushed by u_y = 14 mm.
 end_face = abs(last["x"][:, 0] - 0.02) < 1e-12
 uy = last["displacement"][end_face, 1]
-check(end_face.sum() == 28 and abs(uy - 3.5e-3).max() < 1e-12,
-      f"at 7 s u_y = 3.5 mm on the end face ({end_face.sum()} nodes)")
+check(end_face.sum() == 28 and abs(uy - 1.4e-2).max() < 1e-12,
+      f"at 7 s u_y = 14 mm on the end face ({end_face.sum()} nodes)")
 with open(work / (base + ".history.csv"), encoding="utf-8") as f:
     rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
 history_times = [float(r[1]) for r in rows[1:]]  # step, time, ...: the initial state, 0 .. 7 s
@@ -106,9 +115,10 @@ with h5py.File(work / (base + ".h5"), "r") as h5:
     times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
 m = re.match(r"stopped by an error at t = ([0-9.e+-]+) s: pair \"slide\": at t = ([0-9.e+-]+) s",
              status)
-check(m is not None and 7.0 < float(m.group(2)) <= 8.0 and
-      float(m.group(1)) < float(m.group(2)) and 5e-4 * float(m.group(1)) <= 3.727e-3,
-      f"stepped: stopped at the last accepted step below the limit ({status[:70]!r})")
+check(m is not None and 7.0 < float(m.group(2)) <= 8.0 and float(m.group(1)) < float(m.group(2)),
+      f"stepped: stopped at the last accepted step before the limit ({status[:70]!r})")
+check(searches(run.log) == [2.0, 4.0, 6.0],
+      f"stepped: searched again at 2, 4, 6 s ({searches(run.log)})")
 check(times[:8] == [float(t) for t in range(8)] and times[-1] == float(m.group(1)) if m else False,
       f"stepped: results at 0 .. 7 s and the last accepted step ({times})")
 with open(work / (base + ".history.csv"), encoding="utf-8") as f:
@@ -116,11 +126,33 @@ with open(work / (base + ".history.csv"), encoding="utf-8") as f:
 check(m is not None and float(rows[-1][1]) == float(m.group(1)),
       f"stepped: the history ends at the last accepted step ({rows[-1][1]})")
 
-# Within a larger limit: the same deck runs to the end.
+# Slower, within the limit: the same deck runs to the end, searched again at 8 s.
 base = "within"
-run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, 0.5)), n_ranks, mpiexec,
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, 5e-4)), n_ranks, mpiexec,
                   cwd=work, expect=0)
+check(searches(run.log) == [8.0], f"within: searched again at 8 s ({searches(run.log)})")
 with h5py.File(work / (base + ".h5"), "r") as h5:
     times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
-check(times == [float(t) for t in range(11)], f"with fraction 0.5: results at t = 0 .. 10 s")
+check(times == [float(t) for t in range(11)], f"within: results at t = 0 .. 10 s")
+# A pair with heat: rows fixed at set-up, the run ends beyond the fraction of a face.
+base = "heat"
+d = deck(base, heat=True)
+d["Physics"] = "Thermo-Elasticity"
+d["Material"].update({"Thermal Expansion": 2.2e-5, "Reference Temperature": 298.0,
+                      "Density": 2.7e3, "Specific Heat": 9.0e2,
+                      "Conductivity": {"Type": "Constant", "Value": 2.4e2}})
+d["Thermal"] = {"Initial Temperature": 298.0,
+                "Boundary Conditions": {"ends": kd.temperature([1, 2], 298.0)}}
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), d), n_ranks, mpiexec, cwd=work, expect=2)
+errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+message = errors[0] if errors else ""
+print(message)
+check(searches(run.log) == [], f"heat: no search redone ({searches(run.log)})")
+for part in ['pair "slide": at t = 2 s secondary node ', "beyond the small-sliding limit 0.0037",
+             "The rows of a pair with a Heat Transfer term", "its heat cells are not searched",
+             "raise the pair's \"Search Update Fraction\""]:
+    check(part in message, f"heat: the message says {part!r}")
+with h5py.File(work / (base + ".h5"), "r") as h5:
+    times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
+check(times == [0.0, 1.0], f"heat: results at t = 0, 1 s ({times})")
 sys.exit(1 if check.failed else 0)

@@ -33,6 +33,7 @@ Teuchos::ParameterList contact(const std::string &misspelled = "")
   flange.set("Search Distance", 0.002);
   flange.set("Penetration Tolerance", 1e-5);
   flange.set("Search Update Fraction", 0.5);
+  flange.set("Sliding Distance", 0.03);
   if (!misspelled.empty())
     flange.set(misspelled, 1);
   return kiln::validated(user, kiln::interface_parameters(), "in.xml", path);
@@ -51,12 +52,26 @@ TEST(ContactPairs, ReadInOrderWithDefaults)
   EXPECT_EQ(pairs[0].options.search_distance, 0.0);
   EXPECT_EQ(pairs[0].options.penetration_tolerance, 1e-9);
   EXPECT_EQ(pairs[0].options.search_update_fraction, 0.25);
+  EXPECT_EQ(pairs[0].options.sliding_distance, 0.0);
   EXPECT_EQ(pairs[1].name, "Flange");
   EXPECT_EQ(pairs[1].primary_side_set, 5);
   EXPECT_EQ(pairs[1].secondary_side_set, 6);
   EXPECT_EQ(pairs[1].options.search_distance, 0.002);
   EXPECT_EQ(pairs[1].options.penetration_tolerance, 1e-5);
   EXPECT_EQ(pairs[1].options.search_update_fraction, 0.5);
+  EXPECT_EQ(pairs[1].options.sliding_distance, 0.03);
+}
+
+TEST(ContactPairs, NegativeSlidingDistance)
+{
+  Teuchos::ParameterList user("Contact");
+  Teuchos::ParameterList &pellet = user.sublist("Pairs").sublist("Pellet");
+  pellet.set("Primary Side Set", 3);
+  pellet.set("Secondary Side Set", 4);
+  pellet.set("Sliding Distance", -0.01);
+  const std::string message = kiln_test::input_error_message(
+      [&] { (void)kiln::validated(user, kiln::interface_parameters(), "in.xml", path); });
+  EXPECT_THAT(message, HasSubstr("Sliding Distance"));
 }
 
 TEST(ContactPairs, NoPairs)

@@ -7,7 +7,10 @@
 // the facets' sag. Each row's small-sliding limit: Search Update Fraction times the smallest
 // diameter of its node's faces. Each input error once. Every rank computes the same rows (np 2).
 // KILN_TEST_NP: 1 2
+#include "base/errors.hpp"
 #include "contact/mortar_pairing.hpp"
+#include "contact/pair_research.hpp"
+#include "contact/small_sliding.hpp"
 
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/contact_surface.hpp"
@@ -325,4 +328,142 @@ TEST(MortarPairing, NoSecondaryNodeCovered)
   const std::string message = pairing_error(mesh, 1, 2);
   EXPECT_THAT(message, HasSubstr(pair + ": no node of the secondary side set 2 is covered by "
                                         "the primary side set 1"));
+}
+
+/// The displacement per mesh node: `a` on the nodes of block `block`'s cells, 0 elsewhere.
+std::vector<Point> moved_block(const Mesh &mesh, const int block, const Point &a)
+{
+  std::vector<Point> u(static_cast<std::size_t>(mesh.n_nodes()), Point{0, 0, 0});
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.block_id[c] == block)
+      for (const int n : mesh.cell_nodes(c))
+        u[n] = a;
+  return u;
+}
+
+TEST(MortarPairing, MarginsHoldThePartnersAndGrowWithTheSlidingDistance)
+{
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  MortarPairingOptions wider;
+  wider.sliding_distance = 0.3;
+  const MortarPairing pairing(mesh, 1, 2, {}, pair), wide(mesh, 1, 2, wider, pair);
+  ASSERT_EQ(pairing.margins().size(), pairing.rows().size());
+  ASSERT_EQ(wide.rows().size(), pairing.rows().size());
+  std::size_t grown = 0;
+  for (std::size_t r = 0; r < pairing.rows().size(); ++r)
+  {
+    const std::vector<int> &margin = pairing.margins()[r];
+    EXPECT_TRUE(std::is_sorted(margin.begin(), margin.end()));
+    for (const int k : pairing.rows()[r].partners)
+      EXPECT_TRUE(std::binary_search(margin.begin(), margin.end(), k))
+          << "partner " << k << " of row " << r << " outside its margin";
+    EXPECT_TRUE(std::includes(wide.margins()[r].begin(), wide.margins()[r].end(), margin.begin(),
+                              margin.end()));
+    grown += wide.margins()[r].size() > margin.size() ? 1 : 0;
+  }
+  EXPECT_GT(grown, 0u);
+}
+
+TEST(MortarPairing, InTheCurrentConfiguration)
+{
+  // Both bodies moved alike: the same rows as in the reference configuration.
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  const MortarPairing reference(mesh, 1, 2, {}, pair);
+  std::vector<Point> u(static_cast<std::size_t>(mesh.n_nodes()), Point{0.03, -0.02, 0.05});
+  const MortarPairing moved(mesh, 1, 2, {}, pair, u);
+  EXPECT_TRUE(moved.margins().empty());
+  ASSERT_EQ(moved.rows().size(), reference.rows().size());
+  for (std::size_t r = 0; r < moved.rows().size(); ++r)
+  {
+    const ContactRow &a = moved.rows()[r], &b = reference.rows()[r];
+    EXPECT_EQ(a.node, b.node);
+    EXPECT_EQ(a.partners, b.partners);
+    EXPECT_NEAR(a.area, b.area, 1e-14);
+    EXPECT_NEAR(a.gap0, b.gap0, 1e-14);
+    for (std::size_t k = 0; k < a.weights.size(); ++k)
+      EXPECT_NEAR(a.weights[k], b.weights[k], 1e-12);
+  }
+}
+
+/// The search of the flat bodies' pair (side sets 1 and 2) redone within `pairing`'s margins.
+kiln::PairResearch research_of(const Mesh &mesh, const MortarPairing &pairing,
+                               const MortarPairingOptions &options)
+{
+  return kiln::PairResearch(mesh, 1, 2, options, pair, "pair \"test\"", pairing.margins());
+}
+
+TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
+{
+  // Body 2 (the secondary, 5 x 3 faces) slid by 0.1 m along x and 0.004 m towards body 1:
+  // the new rows pair each node with the primary nodes under its current position, the gap
+  // at that state is the old rows' (g0' + n.d' = g0 + n.d) and the slip is measured from it.
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  MortarPairingOptions options;
+  options.sliding_distance = 0.3;
+  const MortarPairing pairing(mesh, 1, 2, options, pair);
+  const kiln::PairResearch research = research_of(mesh, pairing, options);
+  const std::vector<Point> u = moved_block(mesh, 2, {0.1, 0.0, -0.004});
+  const auto u_of = [&u](const int node) { return u[node]; };
+  const std::vector<ContactRow> rows = research.rows_at(pairing.rows(), u, 3.0);
+  ASSERT_EQ(rows.size(), pairing.rows().size());
+  int moved_partners = 0;
+  for (std::size_t r = 0; r < rows.size(); ++r)
+  {
+    const ContactRow &old = pairing.rows()[r], &row = rows[r];
+    EXPECT_EQ(row.node, old.node);
+    EXPECT_EQ(row.normal, old.normal);
+    EXPECT_EQ(row.slip_limit, old.slip_limit);
+    const Point d_old = kiln::row_relative_displacement(old, u_of);
+    const Point d_new = kiln::row_relative_displacement(row, u_of);
+    EXPECT_NEAR(row.gap0 + dot(row.normal, d_new), old.gap0 + dot(old.normal, d_old), 1e-15);
+    EXPECT_NEAR(row.gap0 + dot(row.normal, d_new), 0.006, 1e-14);
+    EXPECT_EQ(row.slip0, d_new);
+    EXPECT_EQ(kiln::row_slip(row, u_of), 0.0);
+    // The twin point of the new weights in X + u: below node j's current position.
+    Point twin{0, 0, 0};
+    for (std::size_t k = 0; k < row.partners.size(); ++k)
+      for (int i = 0; i < 2; ++i)
+        twin[i] += row.weights[k] * (mesh.coordinates[row.partners[k]][i] + u[row.partners[k]][i]);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(twin[i], mesh.coordinates[row.node][i] + u[row.node][i], 1e-12) << "row " << r;
+    moved_partners += row.partners != old.partners ? 1 : 0;
+  }
+  EXPECT_GT(moved_partners, 0);
+  // The same from the rows of that search, for a state that has not moved since: unchanged.
+  const std::vector<ContactRow> again = research.rows_at(rows, u, 4.0);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+  {
+    EXPECT_EQ(again[r].partners, rows[r].partners);
+    EXPECT_NEAR(again[r].gap0, rows[r].gap0, 1e-15);
+  }
+}
+
+TEST(PairResearch, PartnersBeyondTheMarginEndTheRun)
+{
+  // A reach of 0.011 m and no sliding distance: the margins are the primary faces within
+  // 0.011 m of each node's faces, and a slide by 0.45 m along x (almost two primary faces)
+  // pairs nodes with primary nodes outside them (or off the primary surface).
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  MortarPairingOptions options;
+  options.search_distance = 0.011;
+  const MortarPairing pairing(mesh, 1, 2, options, pair);
+  const kiln::PairResearch research = research_of(mesh, pairing, options);
+  try
+  {
+    (void)research.rows_at(pairing.rows(), moved_block(mesh, 2, {0.45, 0.0, 0.0}), 7.5);
+    ADD_FAILURE() << "no error";
+  }
+  catch (const kiln::RunError &e)
+  {
+    const std::string what = e.what();
+    EXPECT_THAT(what, HasSubstr("pair \"test\": at t = 7.5 s secondary node "));
+    EXPECT_THAT(what, testing::AnyOf(HasSubstr("outside the margin of primary faces"),
+                                     HasSubstr("has slid off the primary surface")));
+    EXPECT_THAT(what, HasSubstr("\"Sliding Distance\""));
+  }
+  // Within the margin of a larger sliding distance: no error.
+  options.sliding_distance = 0.5;
+  const MortarPairing wide(mesh, 1, 2, options, pair);
+  const kiln::PairResearch within = research_of(mesh, wide, options);
+  EXPECT_NO_THROW((void)within.rows_at(wide.rows(), moved_block(mesh, 2, {0.05, 0.0, 0.0}), 1.0));
 }

@@ -228,7 +228,7 @@ kiln::PairingRows pairing(const std::vector<kiln::ContactRow> &rows, const std::
   if (kind == "Contact")
     p.set("Complementarity Function", function);
   p.validateParametersAndSetDefaults(kiln::interface_parameters());
-  return {"pair \"test\"", rows, p, nullptr};
+  return {"pair \"test\"", rows, p, nullptr, nullptr};
 }
 
 /// A problem on the two bodies with the Thermal and Mechanics lists (validated here) and the

@@ -1,0 +1,249 @@
+#!/usr/bin/env python3
+"""The search of a contact pair redone during a run (issue 30; doc/contact.md, "Small
+sliding"): a patch test under sliding. Two bodies meshed apart (Exodus mesh written here):
+body 1 (the primary side) x in [-4, 0] cm, y in [-3, 5] cm, z in [-2, 2] cm, 4 x 11 x 4 cells;
+body 2 (the secondary side) x in [0, 4] cm, y in [-2, 2] cm, z in [-2, 2] cm, 5 x 6 x 3 cells
+(faces 6.67 x 13.3 mm, diameter 14.9 mm: with "Search Update Fraction" 0.25 the search is
+redone once a row has slid 3.73 mm). Steady elasticity with Poisson's ratio 0 (Lame lambda 0,
+G = 26 GPa), frictionless ("Contact"). Body 1 moves as a whole along y by -5e-4 t m (held on its
+end face 1 and on its contact face 10 at u_y = -5e-4 t, u_x = 0 on 1 and -2e-6 m on 10, u_z = 0
+on 1): uniform strain -5e-5 along x. Body 2 is pressed onto it by u_x = -1e-5 m and pushed
+along y by 1.5e-3 t m on its end face 2 (u_z = 0): it slides along the pair by 2 mm a second,
+20 mm (three of body 1's faces) by t = 10 s, its whole contact face on body 1's at every time.
+The exact state: in body 2 sigma_xx = 2 G (2e-6 - 1e-5) / 0.04 = -1.04e7 Pa, the other
+components 0, the contact pressure p = 1.04e7 Pa at every row; in body 1 sigma_xx = 2 G
+(-2e-6 / 0.04) = -2.6e6 Pa. Checked at every output time t = 0 .. 10 s to 1e-9 (of p): the
+contact pressure of every row and the stress of every cell; the log's searches ("search N at
+t = ..."): at t = 2, 4, 6, 8 and 10 s (6 in all with the set-up's).
+With np 2 the same run on 1 rank as well: the displacements agree to 1e-12 m (the solver's
+tolerance). A restart from the checkpoint at 5 s (after two searches) continues to 10 s with
+the same results as the run without it (kiln-diff with zero tolerance) and the same history
+apart from the wall time.
+Beyond the margin: with "Search Distance" 1 mm and no "Sliding Distance" the rows' margins
+hold the primary faces within 1 mm of each node's faces only: the search at 4 s (8 mm slid)
+pairs a node outside them, and the run ends with exit 2 and the message (the pair, the node,
+the time, what to change), its results and history up to 3 s, its checkpoint of 3 s with the
+rows of the search at 2 s. Onto another gap: body 1 split at y = 3.55 cm (a split gap whose
+nodes on the contact face the rows reach once the sliding body's edge passes 2.82 cm): the
+search at 6 s ends the run with the message naming the gap, the files up to 5 s.
+usage: sliding_patch.py KILN WORKDIR NP MPIEXEC"""
+import csv
+import math
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "support"))
+import exodus_mesh  # noqa: E402  (tests/support/exodus_mesh.py)
+import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
+
+kiln, work, n_ranks, mpiexec = sys.argv[1:5]
+work = Path(work)
+work.mkdir(parents=True, exist_ok=True)
+kiln_diff = Path(__file__).resolve().parents[3] / "tools" / "kiln-diff"
+check = kd.Checks()
+
+G = 2.6e10
+DELTA, D = 2e-6, 1e-5  # body 1's contact face moved by -DELTA along x, body 2's end by -D
+P = 2.0 * G * (D - DELTA) / 0.04
+SIGMA_1 = -2.0 * G * DELTA / 0.04
+
+
+def block(x0, x1, y0, y1, z0, z1, n, first_node):
+    """A structured HEX8 block: its node coordinates and 1-based connectivity."""
+    nx, ny, nz = n
+    nodes = [(x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny, z0 + (z1 - z0) * k / nz)
+             for k in range(nz + 1) for j in range(ny + 1) for i in range(nx + 1)]
+
+    def at(i, j, k):
+        return first_node + i + (nx + 1) * (j + (ny + 1) * k)
+
+    cells = [[at(i, j, k), at(i + 1, j, k), at(i + 1, j + 1, k), at(i, j + 1, k),
+              at(i, j, k + 1), at(i + 1, j, k + 1), at(i + 1, j + 1, k + 1), at(i, j + 1, k + 1)]
+             for k in range(nz) for j in range(ny) for i in range(nx)]
+    return nodes, cells
+
+
+def write_mesh(path, gap_y=None):
+    """The two bodies; with gap_y, side set 30: the faces y = gap_y of body 1's cells below it
+    (a gap to split body 1 at)."""
+    nodes1, cells1 = block(-0.04, 0.0, -0.03, 0.05, -0.02, 0.02, (4, 11, 4), 1)
+    nodes2, cells2 = block(0.0, 0.04, -0.02, 0.02, -0.02, 0.02, (5, 6, 3), len(nodes1) + 1)
+    nodes = nodes1 + nodes2
+    tol = 1e-12
+
+    def sides(cells, first, on_face):
+        return exodus_mesh.hex8_sides_where(cells, nodes, on_face, first)
+
+    first2 = len(cells1) + 1
+    side_sets = [(1,) + sides(cells1, 1, lambda p: abs(p[0] + 0.04) < tol),
+                 (10,) + sides(cells1, 1, lambda p: abs(p[0]) < tol),
+                 (2,) + sides(cells2, first2, lambda p: abs(p[0] - 0.04) < tol),
+                 (20,) + sides(cells2, first2, lambda p: abs(p[0]) < tol)]
+    if gap_y is not None:
+        elems, faces = sides(cells1, 1, lambda p: abs(p[1] - gap_y) < tol)
+        below = [(e, f) for e, f in zip(elems, faces)
+                 if sum(nodes[n - 1][1] for n in cells1[e - 1]) / 8 < gap_y]
+        side_sets.append((30, [e for e, _ in below], [f for _, f in below]))
+    exodus_mesh.write(str(path), nodes, [(1, "HEX8", cells1), (2, "HEX8", cells2)], side_sets,
+                      title="sliding patch")
+
+
+def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=0):
+    entry = {"Primary Side Set": 10, "Secondary Side Set": 20, "Sliding Distance": 0.025}
+    if pair is not None:
+        entry = {"Primary Side Set": 10, "Secondary Side Set": 20, **pair}
+    d = {"Physics": "Elasticity",
+         "Mesh": kd.exodus_mesh(mesh, gap),
+         "Material": kd.lame(0.0, G),
+         "Mechanics": {
+             "Boundary Conditions": {
+                 "body 1 end": kd.displacement([1], ["x", "z"]),
+                 "body 1 face": kd.displacement([10], ["x"], kd.constant(-DELTA)),
+                 "body 1 along": kd.displacement([1, 10], ["y"], kd.expression("-5e-4*t")),
+                 "pressed": kd.displacement([2], ["x"], kd.constant(-D)),
+                 "pushed": kd.displacement([2], ["y"], kd.expression("1.5e-3*t")),
+                 "level": kd.displacement([2], ["z"])},
+             "Contact": {"Pairs": {"slide": entry}}},
+         "Time Stepping": {"Method": "Steady"},
+         "Output": {"File Base": base, "Times": [float(t) for t in times]}}
+    if checkpoint is not None:
+        d["Checkpoint"] = checkpoint
+    return d
+
+
+def searches(log):
+    return [float(t) for t in re.findall(r'pair "slide": search \d+ at t = ([0-9.e+-]+) s', log)]
+
+
+def history(path):
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    wall = rows[0].index("wall_time [s]")
+    return [[v for i, v in enumerate(r) if i != wall] for r in rows]
+
+
+write_mesh(work / "sliding-patch.exo")
+
+# The run: uniform state at every output time, the searches logged.
+base = "slide"
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11))), n_ranks,
+                  mpiexec, cwd=work, expect=0, log=work / "slide.log")
+found = searches(run.log)
+check(found == [2.0, 4.0, 6.0, 8.0, 10.0], f"searches redone at t = 2, 4, 6, 8, 10 s ({found})")
+check('pair "slide": search 6 at t = 10 s' in run.log, "the sixth search (with the set-up's)")
+with h5py.File(run.results, "r") as h5:
+    steps = kd.step_names(h5)
+check(len(steps) == 11, f"results at t = 0 .. 10 s ({len(steps)} steps)")
+worst_p, worst_sigma = 0.0, 0.0
+for k in range(len(steps)):
+    step = kd.read_step(str(run.results), k)
+    pressure = step["contact_pressure"]
+    rows = np.isfinite(pressure)
+    body2 = step["block"] == 2
+    sigma = step["stress"]
+    exact = np.zeros_like(sigma)
+    exact[:, 0] = np.where(body2, -P, SIGMA_1)
+    worst_p = max(worst_p, float(np.abs(pressure[rows] - P).max()) / P)
+    worst_sigma = max(worst_sigma, float(np.abs(sigma - exact).max()) / P)
+    check(rows.sum() == 28, f"t = {step['time']} s: 28 rows ({rows.sum()})")
+    # The table of the pair's rows: the same pressure at every row.
+    with open(work / f"slide.pair_slide-{k:06d}.csv", encoding="utf-8") as f:
+        table = [r for r in csv.DictReader(f)]
+    table_p = np.array([float(r["contact_pressure [Pa]"]) for r in table])
+    worst_p = max(worst_p, float(np.abs(table_p - P).max()) / P)
+print(f"p = {P:.6g} Pa: max |p_j - p| / p = {worst_p:.3g}, max |sigma - exact| / p = "
+      f"{worst_sigma:.3g} over t = 0 .. 10 s")
+check(worst_p < 1e-9, f"the contact pressure uniform to 1e-9 ({worst_p:.3g})")
+check(worst_sigma < 1e-9, f"the stress uniform to 1e-9 ({worst_sigma:.3g})")
+last = kd.read_step(str(run.results))
+end_face = np.abs(last["x"][:, 0] - 0.04) < 1e-12
+check(abs(last["displacement"][end_face, 1] - 1.5e-2).max() < 1e-12, "slid to u_y = 15 mm")
+
+# np 2 against np 1: the same state to the solver's tolerance.
+if int(n_ranks) > 1:
+    one = kd.run_kiln(kiln, kd.write_deck(str(work / "one"), deck("one", range(11))), 1,
+                      mpiexec, cwd=work, expect=0)
+    check(searches(one.log) == found, f"np 1 searches at the same times ({searches(one.log)})")
+    apart = 0.0
+    with h5py.File(one.results, "r") as h5:
+        n_steps = len(kd.step_names(h5))
+    for k in range(n_steps):
+        a, b = kd.read_step(str(run.results), k), kd.read_step(str(one.results), k)
+        order_a = np.lexsort(a["x"].T)
+        order_b = np.lexsort(b["x"].T)
+        apart = max(apart, float(np.abs(a["displacement"][order_a] -
+                                        b["displacement"][order_b]).max()))
+    print(f"np {n_ranks} against np 1: max |u| apart {apart:.3g} m")
+    check(apart < 1e-12, f"np {n_ranks} = np 1 to 1e-12 m ({apart:.3g})")
+
+# A restart after two searches: the same results and history as the run without it.
+base = "restarted"
+kd.run_kiln(kiln, kd.write_deck(str(work / "part1"),
+                                deck(base, range(6), checkpoint={"At End": True})),
+            n_ranks, mpiexec, cwd=work, expect=0)
+checkpoint = work / (base + ".checkpoint.h5")
+check(checkpoint.is_file(), "the checkpoint at 5 s")
+part2 = kd.run_kiln(kiln, kd.write_deck(str(work / "part2"), deck(base, range(11))), n_ranks,
+                    mpiexec, args=["--restart", checkpoint.name], cwd=work, expect=0)
+check(searches(part2.log) == [6.0, 8.0, 10.0],
+      f"the restart searches at 6, 8, 10 s ({searches(part2.log)})")
+diff = subprocess.run([sys.executable, str(kiln_diff), "--abs", "0", "--rel", "0",
+                       str(work / (base + ".h5")), str(work / "slide.h5")],
+                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+check(diff.returncode == 0, "the restart's results = the run's, bit for bit "
+      f"(kiln-diff --abs 0 --rel 0: {diff.stdout.strip()[-300:]})")
+check(history(work / (base + ".history.csv")) == history(work / "slide.history.csv"),
+      "the restart's history = the run's (apart from the wall time)")
+
+# Beyond the margin: exit 2 at the search that pairs a node outside it, the files up to 3 s.
+base = "beyond"
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base),
+                                      deck(base, range(11), pair={"Search Distance": 0.001})),
+                  n_ranks, mpiexec, cwd=work, expect=2)
+errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+check(len(errors) == 1, f"one error line ({len(errors)})")
+message = errors[0] if errors else ""
+print(message)
+for part in ['pair "slide": at t = 4 s secondary node ', "has slid beyond the small-sliding limit",
+             "outside the margin of primary faces linked to it at set-up",
+             "raise the pair's \"Sliding Distance\"", "results up to the last accepted step"]:
+    check(part in message, f"the message says {part!r}")
+with h5py.File(run.results, "r") as h5:
+    status = h5.attrs["status"]
+    status = status.decode() if isinstance(status, bytes) else str(status)
+    times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
+check(status.startswith('stopped by an error at t = 3 s: pair "slide": at t = 4 s'),
+      f"status {status[:60]!r}...")
+check(times == [float(t) for t in range(4)], f"results at t = 0 .. 3 s ({times})")
+check(math.isclose(float(history(work / (base + ".history.csv"))[-1][1]), 3.0),
+      "the history ends at 3 s")
+# The checkpoint of the last good state carries the rows of its last search (the second, at 2 s).
+with h5py.File(work / (base + ".checkpoint.h5"), "r") as h5:
+    rows = h5["contact/pair_rows"][...]
+    when = float(h5["state"].attrs["time"])
+check(when == 3.0 and rows[0] == 2 and rows[1] == 28,
+      f"the checkpoint at 3 s with the rows of search 2 ({when}, {rows[:2]})")
+# Onto another gap: body 1 split at y = 3.55 cm (its grid line 9 of 11; a split gap, side set
+# 30), a node of which the sliding body's rows reach at 6 s (its edge at 3.2 cm): exit 2 with
+# the message naming both, the files up to 5 s.
+write_mesh(work / "sliding-patch-gap.exo", gap_y=-0.03 + 9 * 0.08 / 11)
+base = "onto-gap"
+run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11),
+                                                            mesh="sliding-patch-gap.exo", gap=30)),
+                  n_ranks, mpiexec, cwd=work, expect=2)
+errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+message = errors[0] if errors else ""
+print(message)
+for part in ['pair "slide": at t = 6 s the search redone pairs secondary node ',
+             "which is on gap side set 30", "cannot be on another pair or gap"]:
+    check(part in message, f"onto a gap: the message says {part!r}")
+check(searches(run.log) == [2.0, 4.0], f"onto a gap: searched at 2 and 4 s ({searches(run.log)})")
+with h5py.File(run.results, "r") as h5:
+    times = [float(h5["steps"][k].attrs["time"]) for k in kd.step_names(h5)]
+check(times == [float(t) for t in range(6)], f"onto a gap: results at t = 0 .. 5 s ({times})")
+sys.exit(1 if check.failed else 0)
