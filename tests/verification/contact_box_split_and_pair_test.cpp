@@ -12,7 +12,8 @@
 //   grids /gap and /gap_21 (HDF5, XDMF, CSV tables, each table's sum of pressure x area = the
 //   history's normal_force_gap11 / _gap21) and the pair's /pair_cut (check_pair_output); the
 //   log names each kind ("gap pairs" of the split gaps, the pair's "secondary nodes"), and so
-//   does the end-of-run list of files ("gap tables", "pair tables (cut)").
+//   do the step lines, the summary ("gap closed at", "pair "cut" closed at") and the end-of-run
+//   list of files ("gap tables", "pair tables (cut)").
 // - Restarted from the checkpoint at 53 s (both kinds closed), the same state at 150 s as the
 //   uninterrupted run; the restart line counts both kinds apart.
 // - Split gaps that cross the pair (the planes z = 0 of either half, which meet the cut faces):
@@ -218,6 +219,11 @@ TEST(ContactBoxSplitAndPair, ClosedStateWithSplitGapsAndAPairRestarted)
       EXPECT_TRUE(has(log, ": the pair has closed\n")) << log;
       EXPECT_TRUE(has(log, "of 25 gap pairs in contact")) << log;
       EXPECT_TRUE(has(log, "of 28 gap pairs in contact")) << log;
+      // The step lines and the summary: the split gaps' node pairs and the pair's nodes.
+      EXPECT_TRUE(has(log, "53/53 pairs in contact, 28/28 contact-pair nodes in contact")) << log;
+      EXPECT_TRUE(has(log, "\ngap closed at: 53 s\ngap opened at: never\n")) << log;
+      EXPECT_TRUE(has(log, "\npair \"cut\" closed at: 53 s\npair \"cut\" opened at: never\n"))
+          << log;
       EXPECT_TRUE(has(log, "gap tables: " + part + ".gap-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "gap tables (2): " + part + ".gap_21-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "pair tables (cut): " + part + ".pair_cut-000000.csv to ")) << log;
