@@ -21,7 +21,8 @@ public:
 
   /// Log lines go to `out` (nothing is logged without one).
   void set_log(Teuchos::RCP<Teuchos::FancyOStream> out) { out_ = std::move(out); }
-  /// Names the gap in the log lines ("contact (gap side set 12)"), where there are several.
+  /// Names the gap in the log lines ("contact (gap side set 12)"), where there are several or
+  /// contact pairs beside it.
   void set_gap_name(std::string name) { gap_name_ = std::move(name); }
   /// Names a contact pair between bodies meshed apart instead ("contact (pair "cut")"): its
   /// rows are counted as its secondary nodes, not as gap pairs.

@@ -37,7 +37,7 @@ NormalContact::NormalContact(const ContactInterface &interface, const DofManager
   const Mesh &mesh = interface.mesh();
   if (!interface.split())
     monitor_.set_pair_name(" (" + interface.name() + ")");
-  else if (mesh.gap_side_sets.size() > 1)
+  else if (mesh.gap_side_sets.size() > 1 || !mesh.contact_pairs.empty()) // named beside a pair
     monitor_.set_gap_name(" (" + interface.name() + ")");
 }
 

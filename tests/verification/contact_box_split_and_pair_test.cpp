@@ -16,6 +16,7 @@
 //   list of files ("gap tables", "pair tables (cut)").
 // - Restarted from the checkpoint at 53 s (both kinds closed), the same state at 150 s as the
 //   uninterrupted run; the restart line counts both kinds apart.
+// - One split gap (x = -L/4) and the pair to 53 s: the gap's log lines name it beside the pair.
 // - Split gaps that cross the pair (the planes z = 0 of either half, which meet the cut faces):
 //   a node of a pair on a split gap is refused, on every rank, naming the node, the gap and the
 //   pair.
@@ -259,6 +260,25 @@ TEST(ContactBoxSplitAndPair, ClosedStateWithSplitGapsAndAPairRestarted)
               << " m (max |u| " << scale << " m)\n";
   }
   remove_results(part, *comm);
+  remove_results(base, *comm);
+}
+
+TEST(ContactBoxSplitAndPair, OneSplitGapIsNamedBesideThePair)
+{
+  // One split gap (x = -L/4) and the pair, to 53 s: the gap's lines name it, as with several.
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string base = temporary_base("one_split_and_pair", *comm);
+  const std::string mesh = base + ".mesh.exo";
+  write_mesh(mesh, {{11, 1, 0, -L / 4}});
+  kiln::Simulation sim(deck(mesh, {11}, base, {0.0, 53.0}), "one split gap and the pair", comm);
+  const std::string log = run_logged(sim);
+  if (comm->getRank() == 0)
+  {
+    EXPECT_TRUE(has(log, "contact (gap side set 11) at t = 53 s: 25 of 25 gap pairs in contact"))
+        << log;
+    EXPECT_TRUE(has(log, "contact (pair \"cut\") at t = 53 s: 28 of 28 secondary nodes")) << log;
+    EXPECT_FALSE(has(log, "\ncontact at t = ")) << log;
+  }
   remove_results(base, *comm);
 }
 
