@@ -18,7 +18,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent.parent
 STEP = re.compile(r"^step (\d+): t = (\S+) s, .*Newton (\d+) \((\d+) linear\)")
-CONTACT = re.compile(r'^\s*contact \(pair "cut"\).*: (\d+) of (\d+) (?:gap pairs )?in contact')
+CONTACT = re.compile(r'^\s*contact \(pair "cut"\).*: (\d+) of (\d+) (?:gap pairs |secondary nodes )?in contact')
 
 
 def deck(n, base):

@@ -73,6 +73,9 @@ double ProgressReport::wall_time() const
 void ProgressReport::start(const StateSummary &summary)
 {
   last_active_ = summary.n_pairs > 0 ? summary.n_active : -1;
+  pairs_.clear();
+  for (const PairFigures &pair : summary.pairs)
+    pairs_.push_back({pair.name, pair.n_active, {}, {}});
 }
 
 std::vector<StatusField> ProgressReport::figures(const double time,
@@ -91,6 +94,17 @@ std::vector<StatusField> ProgressReport::figures(const double time,
     const std::string pairs =
         std::to_string(summary.n_active) + "/" + std::to_string(summary.n_pairs);
     fields.push_back({pairs + " pairs in contact", pairs + " in contact", 20});
+  }
+  int pair_active = 0, pair_rows = 0;
+  for (const PairFigures &pair : summary.pairs)
+  {
+    pair_active += pair.n_active;
+    pair_rows += pair.n_rows;
+  }
+  if (pair_rows > 0)
+  {
+    const std::string nodes = std::to_string(pair_active) + "/" + std::to_string(pair_rows);
+    fields.push_back({nodes + " contact-pair nodes in contact", nodes + " pair nodes", 20});
   }
   fields.push_back({"wall " + internal::duration_text(wall_time()), "", 10});
   const double left = time_left_.seconds_left();
@@ -137,6 +151,16 @@ void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::R
     if (last_active_ > 0 && summary.n_active == 0)
       opened_.push_back(state.time);
     last_active_ = summary.n_active;
+  }
+  for (std::size_t p = 0; p < pairs_.size() && p < summary.pairs.size(); ++p)
+  {
+    PairEvents &events = pairs_[p];
+    const PairFigures &pair = summary.pairs[p];
+    if (pair.n_active == pair.n_rows && events.last_active < pair.n_rows)
+      events.closed.push_back(state.time);
+    if (events.last_active > 0 && pair.n_active == 0)
+      events.opened.push_back(state.time);
+    events.last_active = pair.n_active;
   }
   time_left_.step(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(),
@@ -200,6 +224,11 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   {
     out << "gap closed at: " << internal::times_list(closed_) << "\n";
     out << "gap opened at: " << internal::times_list(opened_) << "\n";
+  }
+  for (const PairEvents &pair : pairs_)
+  {
+    out << pair.name << " closed at: " << internal::times_list(pair.closed) << "\n";
+    out << pair.name << " opened at: " << internal::times_list(pair.opened) << "\n";
   }
   std::string per_rank;
   for (const double p : peaks)

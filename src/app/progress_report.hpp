@@ -32,12 +32,14 @@ double peak_rss_bytes();
 /// - On a terminal: the same figures on one status line, rewritten in place at each step,
 ///   below the log's other lines, fitted to the terminal's width (fit_status_line): shortened
 ///   first ("35%", "25/25 in contact", "N 3/41"), then without, in this order, the wall time,
-///   the pairs in contact, the time step, the Newton iterations, the time left and the share
-///   done; "step N: t = T s" stays.
+///   the pairs in contact (the split gaps' node pairs, then the contact pairs' secondary nodes,
+///   "25/25 pairs in contact, 28/28 contact-pair nodes in contact"), the time step, the Newton
+///   iterations, the time left and the share done; "step N: t = T s" stays.
 /// - The time left (TimeLeftEstimate) is printed once the steps after the first two give a
 ///   pace.
-/// - At the end: "key: value" lines (status, times, steps, iterations, the times the gap
-///   closed and opened, the peak memory per rank and summed, the files written).
+/// - At the end: "key: value" lines (status, times, steps, iterations, the times the split gaps
+///   closed and opened ("gap closed at"), those of each contact pair ("pair "NAME" closed at"),
+///   the peak memory per rank and summed, the files written).
 class ProgressReport
 {
 public:
@@ -85,5 +87,14 @@ private:
   TimeLeftEstimate time_left_;
   int last_active_ = -1; ///< pairs in contact at the last state (-1: none yet)
   std::vector<double> closed_, opened_;
+  /// Per contact pair (StateSummary::pairs): its name, its rows in contact at the last state,
+  /// the times it closed (all rows in contact) and opened (none).
+  struct PairEvents
+  {
+    std::string name;
+    int last_active = 0;
+    std::vector<double> closed, opened;
+  };
+  std::vector<PairEvents> pairs_;
 };
 } // namespace kiln

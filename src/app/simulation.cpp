@@ -428,11 +428,15 @@ Simulation::files_written(const std::string &checkpoint) const
       {"history", history_file_.empty() ? outputs_->history_path() : history_file_}};
   if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
   {
-    // A line per gap: "gap tables" (the first), "gap tables (2)" ...
+    // A line per split gap: "gap tables" (the first), "gap tables (2)" ...; then one per
+    // contact pair: "pair tables (NAME)" (its tables follow the split gaps').
     const int n = gap_tables_->next_step() - first_gap_step_;
+    const int n_split = static_cast<int>(mesh_.gap_side_sets.size());
     for (int g = 0; g < gap_tables_->n_gaps(); ++g)
-      files.emplace_back(g == 0 ? std::string("gap tables")
-                                : "gap tables (" + std::to_string(g + 1) + ")",
+      files.emplace_back(g >= n_split
+                             ? "pair tables (" + mesh_.contact_pairs[g - n_split].name + ")"
+                         : g == 0 ? std::string("gap tables")
+                                  : "gap tables (" + std::to_string(g + 1) + ")",
                          n == 1 ? gap_tables_->path(first_gap_step_, g)
                                 : gap_tables_->path(first_gap_step_, g) + " to " +
                                       gap_tables_->path(gap_tables_->next_step() - 1, g) + " (" +
@@ -455,15 +459,28 @@ TimeStepper::State Simulation::resume()
   *out_ << "restart from " << restart_ << ": t = " << c.state.time << " s after step "
         << c.state.statistics.steps << " (written " << c.info.created << " by Kiln "
         << c.info.kiln_version << " from " << c.info.input_path << ")";
-  if (problem_->has_contact())
-    *out_ << "; " << active << " of " << problem_->n_pairs() << " gap pairs in contact";
-  *out_ << "\n";
   // The checkpoint counts the split gaps' pairs (Mesh::gap_pairs); the rows of the contact
-  // pairs between bodies meshed apart are not in it.
-  int split_active = active;
+  // pairs between bodies meshed apart (a secondary node each) are not in it.
+  int split_active = active, split_rows = problem_->n_pairs(), pair_active = 0, pair_rows = 0;
   if (problem_->has_contact())
     for (const PairFigures &pair : problem_->summary(*c.state.x).pairs)
-      split_active -= pair.n_active;
+    {
+      pair_active += pair.n_active;
+      pair_rows += pair.n_rows;
+    }
+  split_active -= pair_active;
+  split_rows -= pair_rows;
+  if (problem_->has_contact() && split_rows + pair_rows > 0)
+  {
+    *out_ << "; ";
+    if (split_rows > 0)
+      *out_ << split_active << " of " << split_rows << " gap pairs"
+            << (pair_rows > 0 ? " and " : "");
+    if (pair_rows > 0)
+      *out_ << pair_active << " of " << pair_rows << " contact-pair nodes";
+    *out_ << " in contact";
+  }
+  *out_ << "\n";
   if (split_active != saved_active)
     *out_ << "warning: the checkpoint says " << saved_active
           << " gap pairs were in contact; its state gives " << split_active << "\n";

@@ -51,8 +51,8 @@ void ActiveSetMonitor::jacobian_evaluated(const std::vector<char> &active)
     const int n_active = count(active);
     if (!out_.is_null())
       *out_ << "  contact" << gap_name_ << ", Newton iteration " << jacobians_ << ": " << closed
-            << " pairs closed, " << opened << " opened; " << n_active << " of " << n_pairs_
-            << " in contact\n";
+            << (pair_ ? " nodes closed, " : " pairs closed, ") << opened << " opened; " << n_active
+            << " of " << n_pairs_ << " in contact\n";
   }
   const int repeated = history_.record(active, *comm_);
   if (repeated > 0 && !fallback_)
@@ -79,10 +79,13 @@ void ActiveSetMonitor::step_accepted(const double time, const std::vector<char> 
   if (n_active != accepted_active_ && !out_.is_null())
   {
     *out_ << "contact" << gap_name_ << " at t = " << time << " s: " << n_active << " of "
-          << n_pairs_ << " gap pairs in contact (was " << accepted_active_ << ")"
-          << (n_active == n_pairs_ && accepted_active_ < n_pairs_ ? ": the gap has closed"
-              : n_active == 0 && accepted_active_ > 0             ? ": the gap has opened"
-                                                                  : "")
+          << n_pairs_ << (pair_ ? " secondary nodes" : " gap pairs") << " in contact (was "
+          << accepted_active_ << ")"
+          << (n_active == n_pairs_ && accepted_active_ < n_pairs_
+                  ? (pair_ ? ": the pair has closed" : ": the gap has closed")
+              : n_active == 0 && accepted_active_ > 0
+                  ? (pair_ ? ": the pair has opened" : ": the gap has opened")
+                  : "")
           << "\n";
   }
   accepted_active_ = n_active;

@@ -21,8 +21,16 @@ public:
 
   /// Log lines go to `out` (nothing is logged without one).
   void set_log(Teuchos::RCP<Teuchos::FancyOStream> out) { out_ = std::move(out); }
-  /// Names the gap in the log lines ("contact (gap side set 12)"), where there are several.
+  /// Names the gap in the log lines ("contact (gap side set 12)"), where there are several or
+  /// contact pairs beside it.
   void set_gap_name(std::string name) { gap_name_ = std::move(name); }
+  /// Names a contact pair between bodies meshed apart instead ("contact (pair "cut")"): its
+  /// rows are counted as its secondary nodes, not as gap pairs.
+  void set_pair_name(std::string name)
+  {
+    gap_name_ = std::move(name);
+    pair_ = true;
+  }
   /// A new step's Newton solve begins: no history, no fallback.
   void start_step();
   /// The active set at a Jacobian evaluation: logs what changed since the last one; a set of
@@ -44,6 +52,7 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   std::string gap_name_; ///< "" with one gap
+  bool pair_ = false;    ///< a contact pair's rows (secondary nodes), not a split gap's pairs
   int n_pairs_;
   ActiveSetHistory history_; ///< the sets at this step's Jacobians
   std::vector<char> last_;   ///< the set at the last Jacobian (or accepted step)

@@ -35,7 +35,9 @@ NormalContact::NormalContact(const ContactInterface &interface, const DofManager
   claim_normals(constraints, where);
   finish_claims();
   const Mesh &mesh = interface.mesh();
-  if (mesh.gap_side_sets.size() > 1 || !interface.split())
+  if (!interface.split())
+    monitor_.set_pair_name(" (" + interface.name() + ")");
+  else if (mesh.gap_side_sets.size() > 1 || !mesh.contact_pairs.empty()) // named beside a pair
     monitor_.set_gap_name(" (" + interface.name() + ")");
 }
 

@@ -92,6 +92,7 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
     if (!interface.split())
     {
       PairFigures pair;
+      pair.name = interface.name();
       pair.n_rows = interface.n_rows();
       summary.pairs.push_back(pair);
       double sums_of_pair[3] = {0.0, 0.0, 0.0};

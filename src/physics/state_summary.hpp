@@ -7,6 +7,7 @@
 #include "physics/nodal_fields.hpp"
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace kiln
@@ -26,6 +27,7 @@ struct GapFigures
 /// rows j (the secondary side's nodes with a row).
 struct PairFigures
 {
+  std::string name;          ///< the interface's name in the log: pair "NAME"
   int n_rows = 0;            ///< rows of the pairing
   int n_active = 0;          ///< rows in contact
   double contact_area = 0.0; ///< sum over the rows in contact of D_jj [m^2]

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -317,5 +319,79 @@ void check_closing_box(const std::string &deck, const MeshKind mesh)
     check_uniform_state(label, h5, 3, 150.0, 308.0, spec_closed_gap_state(308.0), true, 1e-9, r);
   }
   remove_results(base, *comm);
+}
+void check_pair_output(const std::string &label, const std::string &base, const double pressure,
+                       const bool open_at_start)
+{
+  SCOPED_TRACE(label + ": the output of the pair \"cut\"");
+  const std::string h5 = base + ".h5";
+  const double area = 0.04 * 0.04;
+  const std::vector<double> nodes = read_dataset(h5, "/pair_cut/node_a");
+  const std::vector<double> faces_area = read_dataset(h5, "/pair_cut/area");
+  double sum = 0.0;
+  for (const double a : faces_area)
+    sum += a;
+  EXPECT_NEAR(sum, area, 1e-12 * area) << "the secondary surface's area";
+  std::ifstream xmf(base + ".xmf");
+  const std::string xdmf((std::istreambuf_iterator<char>(xmf)), std::istreambuf_iterator<char>());
+  EXPECT_NE(xdmf.find("<Grid Name=\"pair_cut_000003\""), std::string::npos) << "XDMF grid";
+  for (const int step : {0, 3})
+  {
+    const bool closed = step == 3;
+    if (!closed && !open_at_start)
+      continue;
+    const std::string at = "/pair_cut/steps/00000" + std::to_string(step) + "/";
+    const std::vector<double> g = read_dataset(h5, at + "gap_opening");
+    const std::vector<double> P = read_dataset(h5, at + "contact_pressure");
+    const std::vector<double> active = read_dataset(h5, at + "contact_active");
+    const std::string csv = base + ".pair_cut-00000" + std::to_string(step) + ".csv";
+    const std::vector<double> csv_P = csv_column(csv, "contact_pressure");
+    ASSERT_EQ(P.size(), nodes.size());
+    ASSERT_EQ(g.size(), nodes.size());
+    ASSERT_EQ(active.size(), nodes.size());
+    ASSERT_EQ(csv_P.size(), nodes.size()) << csv;
+    int rows = 0;
+    for (std::size_t p = 0; p < nodes.size(); ++p)
+    {
+      if (std::isnan(active[p]))
+      {
+        EXPECT_TRUE(std::isnan(P[p]) && std::isnan(g[p])) << "node " << nodes[p] << ": no row";
+        continue;
+      }
+      ++rows;
+      EXPECT_EQ(active[p], closed ? 1.0 : 0.0) << "node " << nodes[p] << " at step " << step;
+      if (closed)
+      {
+        EXPECT_NEAR(P[p], pressure, 1e-9 * std::abs(pressure)) << "node " << nodes[p];
+        EXPECT_NEAR(g[p], 0.0, 1e-15) << "node " << nodes[p];
+      }
+      else
+      {
+        EXPECT_EQ(P[p], 0.0) << "node " << nodes[p];
+        EXPECT_GT(g[p], 0.0) << "node " << nodes[p];
+      }
+      EXPECT_EQ(csv_P[p], P[p]) << csv << ": node " << nodes[p];
+    }
+    EXPECT_GT(rows, 0) << "nodes with a row at step " << step;
+  }
+  const std::vector<double> time = read_dataset(h5, "/history/time");
+  const std::vector<double> force = read_dataset(h5, "/history/normal_force_cut");
+  const std::vector<double> in_contact = read_dataset(h5, "/history/contact_area_cut");
+  ASSERT_FALSE(time.empty());
+  ASSERT_EQ(force.size(), time.size());
+  ASSERT_EQ(in_contact.size(), time.size());
+  EXPECT_EQ(time.front(), 0.0);
+  if (open_at_start)
+  {
+    EXPECT_EQ(force.front(), 0.0);
+    EXPECT_EQ(in_contact.front(), 0.0);
+  }
+  EXPECT_EQ(time.back(), 150.0);
+  EXPECT_NEAR(force.back(), pressure * area, 1e-9 * pressure * area);
+  EXPECT_NEAR(in_contact.back(), area, 1e-9 * area);
+  // The CSV history has the same columns.
+  const std::vector<double> csv_force = csv_column(base + ".history.csv", "normal_force_cut");
+  ASSERT_FALSE(csv_force.empty());
+  EXPECT_EQ(csv_force.back(), force.back());
 }
 } // namespace kiln_test

@@ -85,6 +85,16 @@ void check_uniform_state(const std::string &label, const std::string &h5, int st
                          double T, const UniformState &exact, bool closed, double rel,
                          const Run &r);
 
+/// The output of the contact pair "cut" (issue 30, item 5) in the results at `base` of a run of
+/// the closing box meshed apart to 0, 50, 53, 150 s: its secondary surface /pair_cut (HDF5, the
+/// XDMF grid, the CSV table) at 0 s open (g > 0, P = 0, not in contact) and at 150 s closed (P =
+/// `pressure` to 1e-9, g 0 to round-off, in contact) at every node with a row; the history's
+/// normal_force_cut and contact_area_cut: 0 at 0 s, P x 0.04^2 and 0.04^2 m^2 at 150 s to 1e-9.
+/// Without `open_at_start`, nothing is checked at 0 s (where bodies held by nothing else along
+/// the pair's normal touch at the minimum-norm solution, doc/contact.md).
+void check_pair_output(const std::string &label, const std::string &base, double pressure,
+                       bool open_at_start = true);
+
 /// inputs/<deck> (a closing deck: contact-box-close.xml or the same box on other cells) to
 /// 150 s with contact_box_deck's tolerances on the mesh asked for: the open-gap state at 0 s
 /// (288 K), every pair open at 50 s, every pair closed at 53 s, the closed-gap state at 150 s
