@@ -43,9 +43,11 @@ public:
   const Point &quadrature_point(const int q) const { return quadrature_point_[q]; }
 
 private:
-  /// Maps the cell: with `fixed` > 0, n_shape_ == n_qpoints_ == fixed (compile-time bounds;
-  /// HEX8's hex8_n_nodes).
-  template <int fixed> void map(const Point *x);
+  /// Maps the cell (any type).
+  void map(const Point *x);
+  /// map() of a HEX8 (the common case), the same results from a table laid out for the vector
+  /// units.
+  void map_hex8(const Point *x);
 
   CellType type_ = CellType::hex8;
   int n_shape_ = 0;

@@ -435,6 +435,14 @@ void CoupledProblem::assemble(Vector *f, Matrix *J)
 std::optional<std::pair<std::vector<int>, LocalSystem>>
 CoupledProblem::with_partners(const std::vector<int> &nodes, const LocalSystem &local) const
 {
+  // Most cells have no contact node: no copy of their nodes (an allocation per cell).
+  if (std::none_of(nodes.begin(), nodes.end(),
+                   [this](const int node)
+                   {
+                     const auto [begin, end] = dofs_.partners(node);
+                     return begin != end;
+                   }))
+    return std::nullopt;
   std::vector<int> extended_nodes = assembler_->with_partners(nodes);
   if (extended_nodes.size() == nodes.size())
     return std::nullopt;

@@ -189,9 +189,11 @@ void ResidualTerms::evaluate_cells(const NodalFields &fields, const bool jacobia
     ++cell_local;
     const Span<const int> cell = mesh_.cell_nodes(c);
     const int n = cell.size();
-    nodes.assign(cell.begin(), cell.end());
+    // Copied in the loop (a HEX8's 8 ints: assign() would call memmove for each cell).
+    nodes.resize(n);
     for (int i = 0; i < n; ++i)
     {
+      nodes[i] = cell[i];
       T[i] = fields.T(nodes[i]);
       T_dot[i] = fields.T_dot(nodes[i]);
       u[i] = fields.u(nodes[i]);

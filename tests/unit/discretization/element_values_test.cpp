@@ -1,6 +1,7 @@
 // Tests src/discretization/element_values.cpp: partition of unity, exact volumes of affine and
 // non-affine cells, exact gradients of linear fields on a distorted cell, the Q1 stiffness
-// matrix of the unit cube, and the error on an inverted cell.
+// matrix of the unit cube, the error on an inverted cell, and the HEX8 path's bits equal to
+// the general sums.
 // KILN_TEST_NP: 1
 #include "discretization/element_values.hpp"
 
@@ -12,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 
 namespace
 {
@@ -187,5 +189,65 @@ TEST(ElementValues, InvertedCellThrows)
   for (int i = 4; i < 8; ++i)
     flat[i][2] = 0.0;
   EXPECT_THROW(kiln_test::reinit(fe, flat), kiln::InternalError);
+}
+
+/// x_q, JxW and the gradients of a HEX8 by the general scalar sums (ElementValues::map()'s
+/// order, from the shared ReferenceValues): the vectorised HEX8 path must give these bits.
+void expect_same_bits_as_general_sums(const HexNodes &x, const ElementValues &fe)
+{
+  const kiln::ReferenceValues &ref = kiln::ReferenceValues::of(kiln::CellType::hex8);
+  for (int q = 0; q < 8; ++q)
+  {
+    double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    Point xq{0, 0, 0};
+    for (int i = 0; i < 8; ++i)
+      for (int d = 0; d < 3; ++d)
+      {
+        xq[d] += ref.shape[q * 8 + i] * x[i][d];
+        for (int r = 0; r < 3; ++r)
+          J[d][r] += x[i][d] * ref.grad[q * 8 + i][r];
+      }
+    const double C[3][3] = {
+        {J[1][1] * J[2][2] - J[1][2] * J[2][1], J[1][2] * J[2][0] - J[1][0] * J[2][2],
+         J[1][0] * J[2][1] - J[1][1] * J[2][0]},
+        {J[0][2] * J[2][1] - J[0][1] * J[2][2], J[0][0] * J[2][2] - J[0][2] * J[2][0],
+         J[0][1] * J[2][0] - J[0][0] * J[2][1]},
+        {J[0][1] * J[1][2] - J[0][2] * J[1][1], J[0][2] * J[1][0] - J[0][0] * J[1][2],
+         J[0][0] * J[1][1] - J[0][1] * J[1][0]}};
+    const double det = J[0][0] * C[0][0] + J[0][1] * C[0][1] + J[0][2] * C[0][2];
+    const double inv_det = 1.0 / det;
+    EXPECT_EQ(fe.JxW(q), det * ref.weights[q]) << "q = " << q;
+    for (int d = 0; d < 3; ++d)
+      EXPECT_EQ(fe.quadrature_point(q)[d], xq[d]) << "q = " << q << ", d = " << d;
+    for (int i = 0; i < 8; ++i)
+    {
+      const Point &g = ref.grad[q * 8 + i];
+      for (int d = 0; d < 3; ++d)
+        EXPECT_EQ(fe.grad(i, q)[d], (C[d][0] * g[0] + C[d][1] * g[1] + C[d][2] * g[2]) * inv_det)
+            << "q = " << q << ", i = " << i << ", d = " << d;
+      EXPECT_EQ(fe.shape(i, q), ref.shape[q * 8 + i]);
+    }
+  }
+}
+
+// The HEX8 path (vector registers, its own table) sums in the general path's order: the same
+// bits, so that the gold files of every HEX8 deck stay as they are.
+TEST(ElementValues, Hex8PathHasTheBitsOfTheGeneralSums)
+{
+  ElementValues fe;
+  kiln_test::reinit(fe, distorted_cell());
+  expect_same_bits_as_general_sums(distorted_cell(), fe);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> shift(-0.2, 0.2);
+  for (int cell = 0; cell < 50; ++cell)
+  {
+    HexNodes x = unit_cube();
+    for (Point &p : x)
+      for (double &v : p)
+        v = 1e-3 * (v + shift(random)) + 0.05;
+    const HexNodes moved = mapped(x, kiln::rotation_matrix(20.0 * cell, 7.0 - cell), {0.3, -1, 2});
+    kiln_test::reinit(fe, moved);
+    expect_same_bits_as_general_sums(moved, fe);
+  }
 }
 } // namespace
