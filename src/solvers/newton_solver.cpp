@@ -5,6 +5,7 @@
 #include "solvers/block_triangular_preconditioner.hpp"
 #include "solvers/direct_preconditioner.hpp"
 #include "solvers/jacobian_reuse.hpp"
+#include "solvers/linear_failure_divergence.hpp"
 #include "solvers/linear_tolerance.hpp"
 #include "solvers/model_evaluator.hpp"
 #include "solvers/package_errors.hpp"
@@ -501,6 +502,14 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   tests->addStatusTest(Teuchos::rcp(new ST::NormF(s.absolute_tolerance, ST::NormF::Unscaled)));
   tests->addStatusTest(
       Teuchos::rcp(new ST::NormF(*s.group, s.relative_tolerance, ST::NormF::Unscaled)));
+  // A linear solve short of its tolerance gives NOX's step anyway ("Rescue Bad Newton
+  // Solve"): if ||F|| then grows a millionfold, the solve stops (Result::linear_divergence)
+  // instead of going on to its iteration limit.
+  const auto divergence = Teuchos::rcp(new internal::LinearFailureDivergence(
+      [guess = s.starting_guess, unconverged_before]
+      { return guess->unconverged - unconverged_before; },
+      result.initial_residual_norm, internal::linear_divergence_growth));
+  tests->addStatusTest(divergence);
   tests->addStatusTest(Teuchos::rcp(new ST::MaxIters(s.max_iterations)));
 
   const RCP<ParameterList> nox = s.nox_parameters();
@@ -583,6 +592,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
   result.linear_failures = s.starting_guess->unconverged - unconverged_before;
+  result.linear_divergence = divergence->getStatus() == ST::Failed;
   set_reuse_counts(before, s.reuse->counts(), result);
   s.reuse->end_solve(result.converged, result.newton_iterations, result.linear_iterations);
   return result;
