@@ -31,6 +31,7 @@
 // alpha (x - centre)) (doc/solvers.md, "Strong thermal coupling"). MueLuGivesTheDirectStates
 // forces MueLu on the two coarser meshes against Direct.
 // KILN_TEST_NP: 1 2
+#include "base/errors.hpp"
 #include "mesh/exodus_io.hpp"
 #include "support/results_files.hpp"
 #include "support/simulation_runs.hpp"
@@ -113,12 +114,14 @@ const std::string deck = R"xml(<ParameterList name="Kiln">
   </ParameterList>
 @SOLVER@</ParameterList>)xml";
 
-/// The Solver block that forces `preconditioner`, or none (Kiln's default).
-std::string solver_block(const std::string &preconditioner)
+/// The Solver block that forces `preconditioner`, or none (Kiln's default); `parameters`
+/// (XML) go into it before its Linear Solver.
+std::string solver_block(const std::string &preconditioner, const std::string &parameters = "")
 {
   if (preconditioner.empty())
     return "";
-  return "  <ParameterList name=\"Solver\">\n    <ParameterList name=\"Linear Solver\">\n"
+  return "  <ParameterList name=\"Solver\">\n" + parameters +
+         "    <ParameterList name=\"Linear Solver\">\n"
          "      <Parameter name=\"Preconditioner Type\" type=\"string\" value=\"" +
          preconditioner + "\"/>\n    </ParameterList>\n  </ParameterList>\n";
 }
@@ -152,9 +155,9 @@ struct Step
   double T_inner_min = 0.0, T_inner_max = 0.0, T_outer_min = 0.0, T_outer_max = 0.0;
 };
 
-/// The output times' states of the n_angle x n_radial shells, with `preconditioner` forced
-/// (Kiln's default if empty).
-std::vector<Step> run(const int n_angle, const int n_radial, const std::string &preconditioner = "")
+/// The output times' states of the n_angle x n_radial shells, with `solver` as the Solver
+/// block (solver_block(); Kiln's default if empty).
+std::vector<Step> run(const int n_angle, const int n_radial, const std::string &solver = "")
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base =
@@ -167,7 +170,7 @@ std::vector<Step> run(const int n_angle, const int n_radial, const std::string &
   comm->barrier();
   std::string xml = deck;
   kiln_test::replace(xml, "@FILE@", file);
-  kiln_test::replace(xml, "@SOLVER@", solver_block(preconditioner));
+  kiln_test::replace(xml, "@SOLVER@", solver);
   std::vector<double> times;
   for (const double f : fractions)
     times.push_back(f * dT_closing);
@@ -310,8 +313,8 @@ TEST(PairShellsClosing, MueLuGivesTheDirectStates)
 {
   for (const auto &[n_angle, n_radial] : {std::pair{8, 2}, std::pair{16, 4}})
   {
-    const std::vector<Step> direct = run(n_angle, n_radial, "Direct");
-    const std::vector<Step> muelu = run(n_angle, n_radial, "MueLu");
+    const std::vector<Step> direct = run(n_angle, n_radial, solver_block("Direct"));
+    const std::vector<Step> muelu = run(n_angle, n_radial, solver_block("MueLu"));
     ASSERT_EQ(muelu.size(), direct.size());
     double opening = 0.0, pressure = 0.0, temperature = 0.0;
     for (std::size_t s = 0; s < direct.size(); ++s)
@@ -335,5 +338,31 @@ TEST(PairShellsClosing, MueLuGivesTheDirectStates)
     EXPECT_LT(opening, 1e-9 * (r_2 - r_1));
     EXPECT_LT(pressure, 1e-8 * lame_pressure(fractions.back() * dT_closing));
     EXPECT_LT(temperature, 1e-9 * 300.0);
+  }
+}
+
+// A preconditioner that does not solve the Jacobian (MueLu without the near-null space,
+// `Near-Null Space` false: its constant per unknown): every GMRES solve falls short of its
+// tolerance, and NOX takes its step anyway ("Rescue Bad Newton Solve"). Newton stops once
+// ||F|| has grown a millionfold, with a message that names the linear solves, instead of
+// going on to its 20 iterations (||F|| 1e4 -> 1e29 before 0095) and advising smaller steps.
+TEST(PairShellsClosing, LinearSolvesThatFailStopNewtonWithAMessage)
+{
+  const std::string solver =
+      solver_block("MueLu", "    <Parameter name=\"Near-Null Space\" type=\"bool\" "
+                            "value=\"false\"/>\n");
+  try
+  {
+    run(16, 4, solver);
+    FAIL() << "the run was expected to stop with a RunError";
+  }
+  catch (const kiln::RunError &e)
+  {
+    const std::string message = e.what();
+    std::printf("%s\n", message.c_str());
+    EXPECT_NE(message.find("the linear solves fell short of their tolerance"), std::string::npos);
+    EXPECT_NE(message.find("diverged"), std::string::npos);
+    EXPECT_NE(message.find("The preconditioner does not solve this Jacobian"), std::string::npos);
+    EXPECT_EQ(message.find("limit of 20 iterations"), std::string::npos);
   }
 }
