@@ -73,8 +73,9 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "temperature and displacement: 1 for T, sqrt(k / (lambda + 2G)) for u; see "
         "doc/mechanics.md); the tolerances above then apply to the scaled residual [-]");
   p.set("Near-Null Space", true,
-        "hand MueLu the problem's near-null space (the constant temperature and the six "
-        "rigid-body modes) instead of MueLu's default (a constant per unknown of a node) [-]");
+        "hand MueLu the problem's near-null space (the constant temperature, with displacements "
+        "its free thermal expansion alpha (x - centre), and the six rigid-body modes) instead "
+        "of MueLu's default (a constant per unknown of a node) [-]");
   p.set("Reuse", true,
         "keep the Jacobian and its preconditioner while the problem says they are unchanged "
         "(every term linear in the state, the same time-step coefficient, constraints and "
