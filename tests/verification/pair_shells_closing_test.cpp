@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -175,6 +176,7 @@ std::vector<Step> run(const int n_angle, const int n_radial, const std::string &
   for (const double f : fractions)
     times.push_back(f * dT_closing);
   std::vector<Step> steps;
+  std::exception_ptr failure;
   {
     const auto sim = kiln_test::make_simulation(xml, comm);
     kiln::CoupledProblem &problem = sim->problem();
@@ -205,11 +207,20 @@ std::vector<Step> run(const int n_angle, const int n_radial, const std::string &
       }
       steps.push_back(s);
     };
-    kiln_test::run_from(*sim, x, times, output);
+    try
+    {
+      kiln_test::run_from(*sim, x, times, output);
+    }
+    catch (...) // a run expected to fail leaves no files either: removed below, then thrown
+    {
+      failure = std::current_exception();
+    }
   }
   kiln_test::remove_results(base, *comm);
   if (comm->getRank() == 0)
     std::remove(file.c_str());
+  if (failure)
+    std::rethrow_exception(failure);
   return steps;
 }
 } // namespace
