@@ -149,7 +149,8 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   fields_ = std::make_unique<NodalFields>(dofs, *assembler_, constraints_,
                                           material.reference_temperature());
   fields_->keep_history(thermal_ && thermal_->needs_temperature_history());
-  hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus);
+  hints_ = std::make_unique<SolverHints>(mesh, dofs, constraints_, conductivity, modulus,
+                                         material.thermal_expansion(T_ref));
 
   if (mechanics_ && materials != nullptr)
   {

@@ -5,6 +5,7 @@
 #include "solvers/block_triangular_preconditioner.hpp"
 #include "solvers/direct_preconditioner.hpp"
 #include "solvers/jacobian_reuse.hpp"
+#include "solvers/linear_failure_divergence.hpp"
 #include "solvers/linear_tolerance.hpp"
 #include "solvers/model_evaluator.hpp"
 #include "solvers/package_errors.hpp"
@@ -72,8 +73,9 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "temperature and displacement: 1 for T, sqrt(k / (lambda + 2G)) for u; see "
         "doc/mechanics.md); the tolerances above then apply to the scaled residual [-]");
   p.set("Near-Null Space", true,
-        "hand MueLu the problem's near-null space (the constant temperature and the six "
-        "rigid-body modes) instead of MueLu's default (a constant per unknown of a node) [-]");
+        "hand MueLu the problem's near-null space (the constant temperature, with displacements "
+        "its free thermal expansion alpha (x - centre), and the six rigid-body modes) instead "
+        "of MueLu's default (a constant per unknown of a node) [-]");
   p.set("Reuse", true,
         "keep the Jacobian and its preconditioner while the problem says they are unchanged "
         "(every term linear in the state, the same time-step coefficient, constraints and "
@@ -501,6 +503,14 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
   tests->addStatusTest(Teuchos::rcp(new ST::NormF(s.absolute_tolerance, ST::NormF::Unscaled)));
   tests->addStatusTest(
       Teuchos::rcp(new ST::NormF(*s.group, s.relative_tolerance, ST::NormF::Unscaled)));
+  // A linear solve short of its tolerance gives NOX's step anyway ("Rescue Bad Newton
+  // Solve"): if ||F|| then grows a millionfold, the solve stops (Result::linear_divergence)
+  // instead of going on to its iteration limit.
+  const auto divergence = Teuchos::rcp(new internal::LinearFailureDivergence(
+      [guess = s.starting_guess, unconverged_before]
+      { return guess->unconverged - unconverged_before; },
+      result.initial_residual_norm, internal::linear_divergence_growth));
+  tests->addStatusTest(divergence);
   tests->addStatusTest(Teuchos::rcp(new ST::MaxIters(s.max_iterations)));
 
   const RCP<ParameterList> nox = s.nox_parameters();
@@ -583,6 +593,7 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
       solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
   result.final_residual_norm = solution.getNormF();
   result.linear_failures = s.starting_guess->unconverged - unconverged_before;
+  result.linear_divergence = divergence->getStatus() == ST::Failed;
   set_reuse_counts(before, s.reuse->counts(), result);
   s.reuse->end_solve(result.converged, result.newton_iterations, result.linear_iterations);
   return result;

@@ -40,6 +40,9 @@ public:
     /// Linear solves that stopped short of their tolerance (NOX warns of each and goes on
     /// with its step; the Newton test decides).
     int linear_failures = 0;
+    /// The solve stopped as ||F|| grew a millionfold after linear solves short of their
+    /// tolerance (internal::LinearFailureDivergence): the preconditioner does not solve J.
+    bool linear_divergence = false;
     double initial_residual_norm = 0.0;
     double final_residual_norm = 0.0;
     /// Jacobians evaluated or kept (Solver/"Reuse"), preconditioners built or kept.

@@ -17,7 +17,10 @@ namespace kiln
 ///   gap that separates bodies: with the pairs in contact, the rows of the pair couple the
 ///   two sides as strongly as a body's own rows, and aggregates across the gap cannot
 ///   represent the sliding of one side on the other (doc/solvers.md);
-/// - near-null space: the constant temperature and the six rigid-body modes
+/// - near-null space: the constant temperature with the free thermal expansion it causes
+///   (u = alpha (x - centre) per kelvin, where both fields are solved: a uniform heating of an
+///   unheld body leaves no force, so (1, alpha (x - centre)) is J's near-null vector, not (1,
+///   0); doc/solvers.md, "Strong thermal coupling") and the six rigid-body modes
 ///   (translations, rotations about the mesh centre), in the nodes' frame unknowns;
 /// - unknown scale c: 1 for T, sqrt(k / (lambda + 2G)) for u when both fields are solved
 ///   (so that the diagonals of the force and heat rows match), 1 otherwise;
@@ -30,9 +33,9 @@ public:
   using Vector = Tpetra::Vector<>;
 
   /// `constraints` is closed (its frames rotate the rigid-body modes); k [W/(m K)] and
-  /// lambda + 2G [Pa] give the scale.
+  /// lambda + 2G [Pa] give the scale; alpha [1/K] the temperature mode's expansion.
   SolverHints(const Mesh &mesh, const DofManager &dofs, const NodalConstraints &constraints,
-              double conductivity, double modulus);
+              double conductivity, double modulus, double thermal_expansion);
 
   Teuchos::RCP<const MultiVector> coordinates() const { return coordinates_; }
   Teuchos::RCP<const MultiVector> near_null_space() const { return near_null_space_; }

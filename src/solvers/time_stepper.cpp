@@ -105,6 +105,10 @@ std::string newton_failure(const NewtonSolver::Result &r, const int max_iteratio
       << " Newton iterations: " << r.step_failure;
   else if (!std::isfinite(r.initial_residual_norm))
     s << "the residual at the start of the step is not a finite number (NaN or Inf)";
+  else if (r.linear_divergence)
+    s << "the linear solves fell short of their tolerance (" << r.linear_failures
+      << " of them) and Newton, taking their steps, diverged: " << norms << " after "
+      << r.newton_iterations << " Newton iterations";
   else if (!std::isfinite(r.final_residual_norm))
     s << "the residual became NaN or Inf after " << r.newton_iterations
       << " Newton iterations (|F| " << norm(r.initial_residual_norm) << " before)";
@@ -125,6 +129,12 @@ std::string newton_advice(const NewtonSolver::Result &r, const int max_iteration
     return "A constitutive model's local solve fails at too large a strain increment: take "
            "smaller steps (\"Maximum Step\", \"Initial Step\"), or loosen the model's \"Local "
            "Tolerance\" or raise its \"Local Iterations\"";
+  if (r.linear_divergence)
+    return "The preconditioner does not solve this Jacobian (the problem need not be "
+           "nonlinear): try Solver/Linear Solver/\"Preconditioner Type\" \"Direct\" (small "
+           "problems) or, with temperature and displacement, \"Block Triangular\", or raise the "
+           "Krylov solver's iteration limit (doc/solvers.md, \"Linear solves short of their "
+           "tolerance\")";
   if (!internal::finite(r))
     return "A NaN or Inf comes from a value out of its range at the state reached (material "
            "data, a condition's value) or from a diverging solve; smaller steps help with the "

@@ -57,7 +57,7 @@ void expect_bodies_apart(const Fixture &f, const int expected_bodies)
   const kiln::DofManager dofs{f.mesh, cell_rank, f.comm, kiln::DofLayout{true, true, true}};
   kiln::NodalConstraints constraints{f.mesh, dofs};
   constraints.close(240.0, 1.04e11);
-  const kiln::SolverHints hints(f.mesh, dofs, constraints, 240.0, 1.04e11);
+  const kiln::SolverHints hints(f.mesh, dofs, constraints, 240.0, 1.04e11, 2.2e-5);
   const kiln::MeshBodies bodies = kiln::mesh_bodies(f.mesh);
   ASSERT_EQ(bodies.count, expected_bodies);
   const double spacing = 10.0 * diagonal(f.mesh);
@@ -91,15 +91,27 @@ TEST(SolverHints, ScaleAndRigidTranslationsOfTheDisplacement)
   const kiln::DofManager dofs{f.mesh, cell_rank, f.comm, kiln::DofLayout{true, true, true}};
   kiln::NodalConstraints constraints{f.mesh, dofs};
   constraints.close(240.0, 1.04e11);
-  const kiln::SolverHints hints(f.mesh, dofs, constraints, 240.0, 1.04e11);
+  const kiln::SolverHints hints(f.mesh, dofs, constraints, 240.0, 1.04e11, 2.2e-5);
   EXPECT_DOUBLE_EQ(hints.displacement_scale(), std::sqrt(240.0 / 1.04e11));
   // Without frames (no constraints here) mode 1 + k is the translation along axis k, and
-  // mode 0 the constant temperature: the four unknowns of a node are T, ux, uy, uz.
+  // mode 0 the constant temperature with its free expansion alpha (x - centre): the four
+  // unknowns of a node are T, ux, uy, uz.
   const auto modes = hints.near_null_space();
   ASSERT_EQ(modes->getNumVectors(), 7u);
+  kiln::Point centre{0, 0, 0};
+  for (const kiln::Point &x : f.mesh.coordinates)
+    for (int d = 0; d < 3; ++d)
+      centre[d] += x[d] / f.mesh.n_nodes();
+  const auto &owned = dofs.owned_nodes();
   for (std::size_t row = 0; row < modes->getLocalLength(); ++row)
-    for (int m = 0; m < 4; ++m)
-      EXPECT_DOUBLE_EQ(modes->getData(m)[row], row % 4 == static_cast<std::size_t>(m) ? 1.0 : 0.0)
+  {
+    const std::size_t k = row % 4;
+    const kiln::Point &x = f.mesh.coordinates[owned[row / 4]];
+    const double expansion = k == 0 ? 1.0 : 2.2e-5 * (x[k - 1] - centre[k - 1]);
+    EXPECT_NEAR(modes->getData(0)[row], expansion, 1e-15) << "row " << row;
+    for (std::size_t m = 1; m < 4; ++m)
+      EXPECT_DOUBLE_EQ(modes->getData(m)[row], k == m ? 1.0 : 0.0)
           << "row " << row << ", mode " << m;
+  }
 }
 } // namespace
