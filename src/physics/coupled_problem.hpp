@@ -82,6 +82,8 @@ public:
   /// whether the temperature is held (freeze_temperature()) and the contact decision's
   /// (InterfaceStrategy::jacobian_dependencies()); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
+  /// Whether some term's Jacobian is not constant (ResidualTerms::constant_jacobian()).
+  bool jacobian_varies() const override;
   /// a, whether the temperature is held and the contact decision's, whatever the terms (the
   /// dependencies above of a problem with varying terms: viscoplastic flow, E(T), k(T)).
   std::vector<double> preconditioner_dependencies(const Vector &x) override;

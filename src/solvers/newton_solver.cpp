@@ -24,6 +24,7 @@
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearSolverBuilderBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -101,7 +102,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "tangent); the Krylov solver sees it with the first iteration's preconditioner (its "
         "finest level reads the new matrix; doc/solvers.md): fewer set-ups, the answer the "
         "same to the Newton tolerance. false: a preconditioner for every new Jacobian [-]");
-  p.set("Keep Preconditioner Across Steps", false,
+  p.set("Keep Preconditioner Across Steps", true,
         "with Keep Preconditioner Within Solve, for a Jacobian that varies with the state: the "
         "first Newton iteration of a solve (a time step) also keeps the preconditioner of the "
         "solve before, under the same conditions (the constraints and the contact decision "
@@ -110,8 +111,10 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "it was built for, until it is stale: the solve before did not converge, or it took more "
         "than Preconditioner Staleness Factor times the Krylov iterations per Newton "
         "iteration of the solve that built it (doc/solvers.md). The answer is the same to the "
-        "Newton tolerance, not to the last bit: a restart builds a new preconditioner at its "
-        "first solve. false: one per solve [-]");
+        "Newton tolerance, not to the last bit; it is given up at every output or checkpoint "
+        "time and checkpoint, so that a run restarted from there goes on bit for bit (a run "
+        "stopped by a signal excepted). A problem with a constant Jacobian is not affected. "
+        "false: one per solve [-]");
   p.set("Preconditioner Staleness Factor", 2.0,
         "with Keep Preconditioner Across Steps: the growth of the Krylov iterations per Newton "
         "iteration, against the solve that built the preconditioner, that makes it stale (the "
@@ -413,6 +416,11 @@ void NewtonSolver::restore_preconditioner_origin(std::vector<double> record)
   impl_->reuse->restore_origin(std::move(record));
 }
 
+void NewtonSolver::restart_point()
+{
+  impl_->reuse->restart_point();
+}
+
 namespace
 {
 /// The Jacobians and preconditioners of a solve, evaluated, built or kept: the counts `after`
@@ -429,7 +437,11 @@ void set_reuse_counts(const internal::JacobianReuse::Counts &before,
 
 bool NewtonSolver::jacobian_varies() const
 {
-  return impl_->reuse->varying();
+  const int varies_here = impl_->problem->jacobian_varies() ? 1 : 0;
+  int varies = 0;
+  Teuchos::reduceAll(*impl_->problem->solution_map()->getComm(), Teuchos::REDUCE_MAX, varies_here,
+                     Teuchos::outArg(varies));
+  return varies == 1;
 }
 
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,

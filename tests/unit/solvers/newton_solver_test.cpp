@@ -931,6 +931,8 @@ protected:
   {
     Teuchos::ParameterList p = solver_parameters();
     p.set("Keep Preconditioner Within Solve", keep);
+    // Each solve on its own (KeepPreconditionerAcrossStepsTest keeps one across solves).
+    p.set("Keep Preconditioner Across Steps", false);
     p.sublist("Linear Solver").set("Preconditioner Type", preconditioner);
     return p;
   }
