@@ -147,6 +147,16 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
         "contact set is not affected. 0: not used [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
+  p.set("Adaptive Linear Tolerance First", 0.0,
+        "with Adaptive Linear Tolerance, for a Jacobian that varies with the state: the first "
+        "Newton iteration of a solve may stop its Krylov solve at this relative to ||F_0|| "
+        "(Eisenstat and Walker's fixed first forcing term): with flow that iteration's Newton "
+        "step leaves a part of ||F_0|| far above it, which the next iterations remove with "
+        "the Rate above (doc/solvers.md). A problem whose Jacobian is constant between "
+        "changes of the contact set is not affected. It costs an iteration where Newton from "
+        "the Extrapolated Newton Start would converge in one (doc/materials.md). 0: not used "
+        "[-], from 0 to 0.1",
+        double_range_validator(0.0, 0.1));
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
         positive_int_validator());
@@ -371,6 +381,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
     s.adaptive.floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
     s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
     s.adaptive.rate = p.get<double>("Adaptive Linear Tolerance Rate");
+    s.adaptive.first = p.get<double>("Adaptive Linear Tolerance First");
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
@@ -524,10 +535,12 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
     // A Jacobian that varies with the state (no dependencies to keep it by), as the solve's
     // first Jacobian found it.
+    const bool first_varying = s.adaptive.first > 0.0 && jacobian_varies();
     if (s.adaptive.rate > 0.0)
-      adaptive->set_target(result.tolerance, [reuse = s.reuse] { return reuse->varying(); });
+      adaptive->set_target(
+          result.tolerance, [reuse = s.reuse] { return reuse->varying(); }, first_varying);
     else
-      adaptive->set_target(result.tolerance);
+      adaptive->set_target(result.tolerance, {}, first_varying);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr && start_at_first_step)

@@ -156,6 +156,8 @@ public:
     return dependencies;
   }
   int jacobian_dependency_calls = 0;
+  /// The linear problem's Jacobian is constant (Adaptive Linear Tolerance First does not apply).
+  bool jacobian_varies() const override { return !linear_ && dependencies.empty(); }
   std::vector<double> preconditioner_dependencies(const Vector & /*x*/) override
   {
     ++preconditioner_dependency_calls;
