@@ -104,6 +104,8 @@ void RunObserver::stop_time(const TimeStepper::State &state)
   if (std::any_of(times.begin(), times.end(),
                   [&](const double t) { return internal::same_time(t, state.time); }))
     checkpoint(state);
+  // Every stop time is one a run may end at and be restarted from (its last output time).
+  c_.newton.restart_point();
 }
 
 bool RunObserver::stop_requested()
@@ -165,6 +167,7 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
   }
   last_checkpoint_ = state.statistics.steps;
   last_checkpoint_path_ = path;
+  c_.newton.restart_point();
   *c_.out << "checkpoint: t = " << state.time << " s (step " << state.statistics.steps
           << ") written to " << path << "\n";
   return path;

@@ -43,7 +43,7 @@ public:
     const CheckpointSchedule &checkpoints;
     HistoryCsv &history;
     ProgressReport &progress;
-    const NewtonSolver &newton; ///< its kept preconditioner's origin goes into checkpoints
+    NewtonSolver &newton; ///< its kept preconditioner: origin into checkpoints, restart_point()
     RunFingerprint fingerprint;
     CheckpointInfo info; ///< the input, its path and the version; the rest is filled in
     Teuchos::RCP<const Teuchos::Comm<int>> comm;

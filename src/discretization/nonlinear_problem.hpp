@@ -37,6 +37,10 @@ public:
   /// is this rank's part; the solver compares on every rank. Collective. Default: empty
   /// (the Jacobian may change with x or t: never reused).
   virtual std::vector<double> jacobian_dependencies(const Vector & /*x*/) { return {}; }
+  /// Whether jacobian_dependencies() is empty at every state (the Jacobian varies with x: a
+  /// viscoplastic model, a property of T), known without a state or a solve (a restarted
+  /// run answers as the run it continues). This rank's answer. Default: true.
+  virtual bool jacobian_varies() const { return true; }
   /// Optional: how many leading entries of jacobian_dependencies() are coefficients the
   /// Jacobian varies with smoothly (the time-derivative coefficient a). A Jacobian whose
   /// coefficients differ from those a preconditioner was built for by a small relative

@@ -356,6 +356,11 @@ void CoupledProblem::evaluate(const Vector &x, Vector *f, Matrix *J)
   }
 }
 
+bool CoupledProblem::jacobian_varies() const
+{
+  return !terms_->constant_jacobian();
+}
+
 std::vector<double> CoupledProblem::jacobian_dependencies(const Vector &x)
 {
   if (!terms_->constant_jacobian())

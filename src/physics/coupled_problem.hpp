@@ -84,6 +84,8 @@ public:
   /// (InterfaceStrategy::jacobian_dependencies()) and the count of searches of each pairing
   /// (its rows); otherwise none.
   std::vector<double> jacobian_dependencies(const Vector &x) override;
+  /// Whether some term's Jacobian is not constant (ResidualTerms::constant_jacobian()).
+  bool jacobian_varies() const override;
   /// a, whether the temperature is held, the contact decision's and the pairings' searches,
   /// whatever the terms (the dependencies above of a problem with varying terms: viscoplastic
   /// flow, E(T), k(T)).

@@ -43,6 +43,7 @@ public:
   {
     return problem_->jacobian_dependencies(x);
   }
+  bool jacobian_varies() const override { return problem_->jacobian_varies(); }
   std::vector<double> preconditioner_dependencies(const Vector &x) override
   {
     return problem_->preconditioner_dependencies(x);

@@ -64,6 +64,11 @@ public:
   /// a version sets the fresh Krylov count per Newton iteration; a solve that kept the
   /// preconditioner throughout makes it stale once its count exceeds `staleness` times that.
   void end_solve(bool converged, int newton_iterations, int linear_iterations);
+  /// A point a run can be restarted from (a checkpoint, a stop time): with `across_steps`
+  /// the preconditioner kept across steps is given up, so that the next solve builds one
+  /// from its first Jacobian, as a run restarted from here does: the two go on alike, to
+  /// the last bit.
+  void restart_point() { stale_ = true; }
   /// ||F|| of the residual just evaluated (as the solver sees it; the same on every rank).
   /// A preconditioner kept within a solve is given up at the next Jacobian unless the last
   /// Newton iteration at least halved ||F|| (the F evaluated before each Jacobian is that at

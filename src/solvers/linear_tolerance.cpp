@@ -35,11 +35,13 @@ Teuchos::ParameterList &newton_linear_solver(Teuchos::ParameterList &nox)
 } // namespace
 
 double LinearTolerance::operator()(const double target, const double residual_norm,
-                                   const double previous_norm) const
+                                   const double previous_norm, const bool first_varying) const
 {
   if (!(residual_norm > 0.0) || !(target > 0.0))
     return floor;
   double eta = safety * target / residual_norm;
+  if (first_varying)
+    eta = std::max(eta, first);
   // Only while ||F|| falls: a residual that grew says nothing of the next one.
   if (rate > 0.0 && previous_norm > residual_norm && std::isfinite(previous_norm))
   {
@@ -74,17 +76,21 @@ AdaptiveLinearTolerance::AdaptiveLinearTolerance(const LinearTolerance rule,
 {
 }
 
-void AdaptiveLinearTolerance::set_target(const double target, std::function<bool()> varying)
+void AdaptiveLinearTolerance::set_target(const double target, std::function<bool()> varying,
+                                         const bool first_varying)
 {
   target_ = target;
   varying_ = std::move(varying);
+  first_varying_ = first_varying;
   previous_norm_ = 0.0;
 }
 
 void AdaptiveLinearTolerance::update(const double residual_norm)
 {
-  const bool varying = previous_norm_ > 0.0 && varying_ && varying_();
-  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying ? previous_norm_ : 0.0));
+  const bool first = !(previous_norm_ > 0.0);
+  const bool varying = !first && varying_ && varying_();
+  linear_solver_.set("Tolerance", rule_(target_, residual_norm, varying ? previous_norm_ : 0.0,
+                                        first && first_varying_));
   previous_norm_ = residual_norm;
 }
 

@@ -34,9 +34,16 @@ struct LinearTolerance
   /// its next residual is about ||F_k|| (||F_k|| / ||F_{k-1}||)^2: the Krylov residual is `rate`
   /// times that, and the iterations keep their order (Eisenstat and Walker's second choice).
   double rate = 0.0;
+  /// For a Jacobian that varies with the state, the first Newton iteration of a solve: eta_0
+  /// is at least this (Solver/"Adaptive Linear Tolerance First"; 0: not used), Eisenstat and
+  /// Walker's fixed first forcing term: the first Newton step of a step with flow leaves the
+  /// flow's share of ||F_0|| whatever the Krylov residual below it.
+  double first = 0.0;
   /// `target`: the Newton test's ||F|| to reach; `residual_norm`: ||F_k||;
-  /// `previous_norm`: ||F_{k-1}|| (0 at the first iteration or for a constant Jacobian).
-  double operator()(double target, double residual_norm, double previous_norm = 0.0) const;
+  /// `previous_norm`: ||F_{k-1}|| (0 at the first iteration or for a constant Jacobian);
+  /// `first_varying`: the first iteration of a solve whose Jacobian varies (`first` applies).
+  double operator()(double target, double residual_norm, double previous_norm = 0.0,
+                    bool first_varying = false) const;
 };
 
 /// The Krylov tolerance of the Belos solver chosen in a Stratimikos list ("Convergence
@@ -55,7 +62,9 @@ public:
   /// `varying`: whether the Jacobian varies with the state (the rule's `rate` applies), asked
   /// at each update() from the second Newton iteration on (the first Jacobian of the solve
   /// has then been evaluated); null: never.
-  void set_target(double target, std::function<bool()> varying = {});
+  /// `first_varying`: the Jacobian varies (NewtonSolver::jacobian_varies(): the problem's, so
+  /// alike in a restarted run), the rule's `first` applies to the first iteration.
+  void set_target(double target, std::function<bool()> varying = {}, bool first_varying = false);
   /// Sets the Tolerance in the NOX linear solver list from the current residual norm (and
   /// the last one, for a varying Jacobian).
   void update(double residual_norm);
@@ -68,6 +77,7 @@ private:
   double target_ = 0.0;
   std::function<bool()> varying_;
   double previous_norm_ = 0.0; ///< ||F_{k-1}|| of this solve (0 before its first iteration)
+  bool first_varying_ = false;
 };
 
 /// Prepares the NOX list's Direction/Newton/Linear Solver for the adapted tolerance: the

@@ -25,6 +25,7 @@
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearSolverBuilderBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -103,7 +104,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "tangent); the Krylov solver sees it with the first iteration's preconditioner (its "
         "finest level reads the new matrix; doc/solvers.md): fewer set-ups, the answer the "
         "same to the Newton tolerance. false: a preconditioner for every new Jacobian [-]");
-  p.set("Keep Preconditioner Across Steps", false,
+  p.set("Keep Preconditioner Across Steps", true,
         "with Keep Preconditioner Within Solve, for a Jacobian that varies with the state: the "
         "first Newton iteration of a solve (a time step) also keeps the preconditioner of the "
         "solve before, under the same conditions (the constraints and the contact decision "
@@ -112,8 +113,10 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "it was built for, until it is stale: the solve before did not converge, or it took more "
         "than Preconditioner Staleness Factor times the Krylov iterations per Newton "
         "iteration of the solve that built it (doc/solvers.md). The answer is the same to the "
-        "Newton tolerance, not to the last bit: a restart builds a new preconditioner at its "
-        "first solve. false: one per solve [-]");
+        "Newton tolerance, not to the last bit; it is given up at every output or checkpoint "
+        "time and checkpoint, so that a run restarted from there goes on bit for bit (a run "
+        "stopped by a signal excepted). A problem with a constant Jacobian is not affected. "
+        "false: one per solve [-]");
   p.set("Preconditioner Staleness Factor", 2.0,
         "with Keep Preconditioner Across Steps: the growth of the Krylov iterations per Newton "
         "iteration, against the solve that built the preconditioner, that makes it stale (the "
@@ -146,6 +149,16 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
         "contact set is not affected. 0: not used [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
+  p.set("Adaptive Linear Tolerance First", 0.0,
+        "with Adaptive Linear Tolerance, for a Jacobian that varies with the state: the first "
+        "Newton iteration of a solve may stop its Krylov solve at this relative to ||F_0|| "
+        "(Eisenstat and Walker's fixed first forcing term): with flow that iteration's Newton "
+        "step leaves a part of ||F_0|| far above it, which the next iterations remove with "
+        "the Rate above (doc/solvers.md). A problem whose Jacobian is constant between "
+        "changes of the contact set is not affected. It costs an iteration where Newton from "
+        "the Extrapolated Newton Start would converge in one (doc/materials.md). 0: not used "
+        "[-], from 0 to 0.1",
+        double_range_validator(0.0, 0.1));
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
         positive_int_validator());
@@ -370,6 +383,7 @@ NewtonSolver::NewtonSolver(const Teuchos::ParameterList &params,
     s.adaptive.floor = internal::belos_convergence_tolerance(p.sublist(linear_name));
     s.adaptive.safety = p.get<double>("Adaptive Linear Tolerance Safety");
     s.adaptive.rate = p.get<double>("Adaptive Linear Tolerance Rate");
+    s.adaptive.first = p.get<double>("Adaptive Linear Tolerance First");
   }
   s.reuse = Teuchos::rcp(new internal::JacobianReuse(
       p.get<bool>("Reuse"), p.get<double>("Preconditioner Reuse Tolerance"),
@@ -415,6 +429,11 @@ void NewtonSolver::restore_preconditioner_origin(std::vector<double> record)
   impl_->reuse->restore_origin(std::move(record));
 }
 
+void NewtonSolver::restart_point()
+{
+  impl_->reuse->restart_point();
+}
+
 namespace
 {
 /// The Jacobians and preconditioners of a solve, evaluated, built or kept: the counts `after`
@@ -431,7 +450,11 @@ void set_reuse_counts(const internal::JacobianReuse::Counts &before,
 
 bool NewtonSolver::jacobian_varies() const
 {
-  return impl_->reuse->varying();
+  const int varies_here = impl_->problem->jacobian_varies() ? 1 : 0;
+  int varies = 0;
+  Teuchos::reduceAll(*impl_->problem->solution_map()->getComm(), Teuchos::REDUCE_MAX, varies_here,
+                     Teuchos::outArg(varies));
+  return varies == 1;
 }
 
 NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
@@ -522,10 +545,12 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
     // A Jacobian that varies with the state (no dependencies to keep it by), as the solve's
     // first Jacobian found it.
+    const bool first_varying = s.adaptive.first > 0.0 && jacobian_varies();
     if (s.adaptive.rate > 0.0)
-      adaptive->set_target(result.tolerance, [reuse = s.reuse] { return reuse->varying(); });
+      adaptive->set_target(
+          result.tolerance, [reuse = s.reuse] { return reuse->varying(); }, first_varying);
     else
-      adaptive->set_target(result.tolerance);
+      adaptive->set_target(result.tolerance, {}, first_varying);
     nox->sublist("Solver Options").set("Observer", adaptive->observer());
   }
   if (first_step != nullptr && start_at_first_step)

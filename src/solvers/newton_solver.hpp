@@ -69,8 +69,10 @@ public:
   /// start from zero.
   Result solve(NonlinearProblem::Vector &x, const NonlinearProblem::Vector *first_step = nullptr,
                bool start_at_first_step = false);
-  /// Whether the Jacobian of the last solve varied with the state (a viscoplastic model, a
-  /// property of T: nothing keeps it), as its first Jacobian found it; false before a solve.
+  /// Whether the problem's Jacobian varies with the state on some rank (a viscoplastic
+  /// model, a property of T: NonlinearProblem::jacobian_varies()), from the problem alone, so
+  /// that a run restarted before its first solve answers as the run it continues.
+  /// Collective.
   bool jacobian_varies() const;
   /// "Maximum Iterations" of the input.
   int max_iterations() const;
@@ -85,6 +87,11 @@ public:
   std::vector<double> preconditioner_origin() const;
   /// A record of preconditioner_origin() from a checkpoint, before the first solve.
   void restore_preconditioner_origin(std::vector<double> record);
+  /// The run reached a point it can be restarted from (a checkpoint written, a stop time):
+  /// a preconditioner kept across steps (Keep Preconditioner Across Steps) is given up, so
+  /// that the next solve builds its own as a run restarted from here does (bit-identical
+  /// continuation). Call alike on every rank.
+  void restart_point();
 
 private:
   struct Impl;

@@ -194,15 +194,16 @@ Teuchos::ParameterList TimeStepper::valid_parameters()
         "accepted ones before it (quadratic through the last three states, linear after the "
         "first step) where that leaves a smaller linear residual than zero: the same answer "
         "to the Krylov tolerance in fewer iterations (doc/solvers.md). false: from zero [-]");
-  p.set("Extrapolated Newton Start", false,
+  p.set("Extrapolated Newton Start", true,
         "for a problem whose Jacobian varies with the state (a viscoplastic model, a property "
         "of T): Newton starts each step after the first at the state extrapolated from the "
         "accepted ones (as Extrapolated Krylov Start extrapolates), a predictor of the flow "
         "going on, instead of at the last state; its tolerance stays relative to the residual "
         "at the last state. The answer is the same to the Newton tolerance, in fewer "
         "iterations where the state changes smoothly (doc/materials.md, \"Cost of a "
-        "viscoplastic step\"). A problem with a constant Jacobian is not affected. false: "
-        "from the last state [-]");
+        "viscoplastic step\"); the states it extrapolates from are in the checkpoints, so a "
+        "restart goes on bit for bit. A problem with a constant Jacobian is not affected. "
+        "false: from the last state [-]");
   return p;
 }
 
@@ -397,7 +398,7 @@ bool TimeStepper::step(TransientProblem &problem, NewtonSolver &newton, State &s
   Tpetra::deep_copy(x, *state.x);
   // The first Newton step, extrapolated from the accepted states: its Krylov start.
   // Or, for a Jacobian that varies (Extrapolated Newton Start), Newton's start.
-  const bool predict = extrapolated_newton_start_ && newton.jacobian_varies();
+  const bool predict = extrapolated_newton_start_ && n_past >= 1 && newton.jacobian_varies();
   std::unique_ptr<Vector> first_step;
   if ((extrapolated_start_ || predict) && n_past >= 1)
   {

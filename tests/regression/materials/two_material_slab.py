@@ -6,7 +6,7 @@ capacity"; doc/materials.md, "Materials and blocks"):
 - two-material-slab-energy.xml, transient with rho(T), c(T) and k(T) on two blocks, as given
   (BDF2, lumped capacity) and with backward Euler and the consistent capacity: at every step
   the change of the time history's thermal_energy (the integral of H(T) = ∫ rho c dT) against
-  the heat in, q A t = 10 W * t, to 1e-9 of the 200 J that come in; and the rise is at least
+  the heat in, q A t = 10 W * t, to 2e-9 of the 200 J that come in; and the rise is at least
   20 K, so that rho c(T) varies;
 - the same (BDF2, lumped) stopped at 10 s with a checkpoint and restarted: the results agree
   with the run that never stopped bit for bit (kiln-diff --rel 0: the past temperatures of
@@ -65,7 +65,11 @@ for name, deck_text in variants.items():
     rise = float(history["T_mean_K"][-1] - history["T_mean_K"][0])
     print(f"{name}: {len(t) - 1} steps to t = {t[-1]} s; max |ΔE - q A t| / (q A t_end) = "
           f"{imbalance:.3g}; mean T rose by {rise:.2f} K")
-    if abs(t[-1] - 20.0) > 1e-9 or imbalance > 1e-9 or rise < 20.0:
+    # The balance holds to Newton's tolerance (Relative Tolerance 1e-8 of each step's |F|):
+    # 1e-10 to 4e-10 when Newton started each step at x_n, up to 1.3e-9 (euler-consistent)
+    # from the Extrapolated Newton Start (default since 2026-11-29), which stops one Newton
+    # iteration earlier, just inside the tolerance.
+    if abs(t[-1] - 20.0) > 1e-9 or imbalance > 2e-9 or rise < 20.0:
         failures.append(name)
 
 # Restart at 10 s: bit for bit the run that never stopped.

@@ -28,9 +28,15 @@ usage: viscoplastic_steps.py CASE KILN DECK WORKDIR NP MPIEXEC
                 step, fewer in all) and both; Newton still quadratic, the displacements and
                 plastic strains at the end equal to 1e-9 relative, MueLu and Direct. The bar
                 linear elastic (a constant Jacobian) with both: the same counts and
-                displacements to the last bit.
+                displacements to the last bit. Both options are on by default; "default"
+                here is both off.
+  restart       the bar from 0 to 5 s in one run against 0 to 2 s restarted from its
+                checkpoint to 5 s, with Kiln's defaults and with both options given: the
+                restarted results equal the complete ones to the last bit (kiln-diff with no
+                tolerance), with fewer preconditioners built than steps (kept across steps).
 """
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -107,6 +113,22 @@ def verbose_deck(body, solver=""):
                    '<ParameterList name="Time Stepping">')
 
 
+# Solver/"Keep Preconditioner Across Steps" and Time Stepping/"Extrapolated Newton Start", on
+# by default.
+ACROSS_ON = '<Parameter name="Keep Preconditioner Across Steps" type="bool" value="true"/>'
+ACROSS_OFF = ACROSS_ON.replace('"true"', '"false"')
+PREDICTOR_ON = '<Parameter name="Extrapolated Newton Start" type="bool" value="true"/>'
+PREDICTOR_OFF = PREDICTOR_ON.replace('"true"', '"false"')
+
+
+def with_stepping(body, stepping):
+    """The deck with `stepping` (parameters) added to its Time Stepping."""
+    if not stepping:
+        return body
+    method = '<Parameter name="Method" type="string" value="Backward Euler"/>'
+    return replace(body, method, method + stepping)
+
+
 def elastic_body(body=None):
     """The bar without the model (linear elastic) under a traction 4e6 t Pa, steps of 0.5 s."""
     body = text if body is None else body
@@ -157,7 +179,7 @@ elif case == "reuse":
         counts = {}
         for variant, solver in (("default", linear), ("off", linear + off)):
             name = f"reuse-{preconditioner}-{variant}"
-            log = run(verbose_deck(text, solver), name)
+            log = run(with_stepping(verbose_deck(text, solver + ACROSS_OFF), PREDICTOR_OFF), name)
             quadratic(log)
             counts[variant] = (newton_per_step(log), summary(log, "Newton iterations"),
                                summary(log, "preconditioners built in this run"),
@@ -186,22 +208,17 @@ elif case == "reuse":
               f"(off: built {counts['off'][2]}); linear iterations {linear_its} (off: "
               f"{counts['off'][4]})")
 elif case == "across":
-    across = '<Parameter name="Keep Preconditioner Across Steps" type="bool" value="true"/>'
-    predictor = '<Parameter name="Extrapolated Newton Start" type="bool" value="true"/>'
     for preconditioner in ("MueLu", "Direct"):
         linear = ('<ParameterList name="Linear Solver"><Parameter name="Preconditioner Type" '
                   f'type="string" value="{preconditioner}"/></ParameterList>')
         runs = {}
-        for variant, solver, stepping in (("default", linear, ""), ("across", linear + across, ""),
-                                          ("predictor", linear, predictor),
-                                          ("both", linear + across, predictor)):
+        # "default" has both options off (the reference); "both" is Kiln's default.
+        for variant, solver, stepping in (("default", linear + ACROSS_OFF, PREDICTOR_OFF),
+                                          ("across", linear + ACROSS_ON, PREDICTOR_OFF),
+                                          ("predictor", linear + ACROSS_OFF, PREDICTOR_ON),
+                                          ("both", linear + ACROSS_ON, PREDICTOR_ON)):
             name = f"across-{preconditioner}-{variant}"
-            body = verbose_deck(text, solver)
-            if stepping:
-                body = replace(body, '<Parameter name="Method" type="string" '
-                               'value="Backward Euler"/>', '<Parameter name="Method" '
-                               'type="string" value="Backward Euler"/>' + stepping)
-            log = run(body, name)
+            log = run(with_stepping(verbose_deck(text, solver), stepping), name)
             # Round-off: a tenth of the Newton target (Absolute Tolerance 1e-8).
             quadratic(log, 1e-9)
             with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
@@ -229,15 +246,10 @@ elif case == "across":
         # A constant (elastic) Jacobian: neither option applies; the same counts, the same
         # results to the last bit.
         elastic = {}
-        for variant, solver, stepping in (("default", linear, ""),
-                                          ("both", linear + across, predictor)):
+        for variant, solver, stepping in (("default", linear + ACROSS_OFF, PREDICTOR_OFF),
+                                          ("both", linear, "")):
             name = f"across-{preconditioner}-elastic-{variant}"
-            body = verbose_deck(elastic_body(), solver)
-            if stepping:
-                body = replace(body, '<Parameter name="Method" type="string" '
-                               'value="Backward Euler"/>', '<Parameter name="Method" '
-                               'type="string" value="Backward Euler"/>' + stepping)
-            log = run(body, name)
+            log = run(with_stepping(verbose_deck(elastic_body(), solver), stepping), name)
             with h5py.File(work / "results" / f"{name}.h5", "r") as h5:
                 last = sorted(h5["steps"].keys())[-1]
                 fields = [h5["steps"][last]["displacement"][...]]
@@ -258,6 +270,40 @@ elif case == "across":
                     not runs[variant]["newton"] < ref["newton"]:
                 fail(f"{preconditioner} {variant}: Newton iterations per step {steps}, "
                      f"without the predictor {ref['steps']}")
+elif case == "restart":
+    # 0 -> 5 s in one run (outputs at 0, 2 and 5 s) against 0 -> 2 s (its checkpoint at its
+    # end) restarted to 5 s, with Kiln's defaults (both options on) and with them explicitly.
+    KILN_DIFF = Path(__file__).resolve().parents[3] / "tools" / "kiln-diff"
+    body = replace(text, '<Parameter name="Times" type="Array(double)" value="{0, 3}"/>',
+                   '<Parameter name="Times" type="Array(double)" value="{0, 2, 5}"/>')
+    for variant, solver, stepping in (("default", "", ""), ("both", ACROSS_ON, PREDICTOR_ON)):
+        deck = with_stepping(verbose_deck(body, solver), stepping)
+        complete = replace(deck, '<ParameterList name="Output">', '<ParameterList name="Output">'
+                           f'<Parameter name="File Base" type="string" value="results/{variant}-complete"/>')
+        restarted = replace(deck, '<ParameterList name="Output">', '<ParameterList name="Output">'
+                            f'<Parameter name="File Base" type="string" value="results/{variant}-restarted"/>')
+        part1 = replace(restarted, 'value="{0, 2, 5}"', 'value="{0, 2}"')
+        log = run(complete, f"{variant}-complete")
+        run(part1, f"{variant}-part1")
+        (work / f"{variant}-restarted.xml").write_text(restarted)
+        done = kd.run_kiln(kiln, f"{variant}-restarted.xml", n_ranks, mpiexec,
+                           ["--restart", f"results/{variant}-restarted.checkpoint.h5"], cwd=work,
+                           expect=None, log=work / f"{variant}-restarted.log")
+        if done.returncode != 0 or "t = 2 s" not in done.log:
+            fail(f"{variant}: the restart from 2 s failed ({done.returncode})", done.log)
+        built = summary(log, "preconditioners built in this run")
+        steps = newton_per_step(log)
+        if variant == "both" and not built < len(steps):
+            fail(f"{variant}: {built} preconditioners built in {len(steps)} steps: none kept "
+                 "across steps", log)
+        diff = subprocess.run([str(KILN_DIFF), "--abs", "0", "--rel", "0",
+                               f"results/{variant}-complete.h5", f"results/{variant}-restarted.h5"],
+                              cwd=work, capture_output=True, text=True)
+        if diff.returncode != 0:
+            fail(f"{variant}: the restarted run is not bit-identical to the complete one",
+                 diff.stdout + diff.stderr)
+        print(f"{variant}: 0 -> 5 s equals 0 -> 2 s + restart to 5 s, bit for bit (Newton "
+              f"{steps}, {built} preconditioners built)")
 elif case == "newton":
     verbose = verbose_deck(text)
     mts = replace(verbose, '''      <Parameter name="Type" type="string" value="Power Law"/>
@@ -285,7 +331,8 @@ elif case == "newton":
             fail(f"{name}: {kept} Jacobians kept with plastic flow", log)
         if not iterations or max(iterations) > 3 or min(iterations) < 1:
             fail(f"{name}: Newton iterations per step {iterations}", log)
-        solves = quadratic(log)
+        # Round-off: a tenth of the Newton target (the later steps start at the predictor).
+        solves = quadratic(log, 1e-9)
         print(f"{name}: Newton iterations per step {iterations}, no Jacobian kept; |F| of each "
               "solve: " + "; ".join(" ".join(f"{f:.3g}" for f in n) for n in solves))
 else:  # elastic

@@ -60,6 +60,21 @@ TEST(LinearTolerance, RateFollowsTheLastReductionSquared)
   EXPECT_DOUBLE_EQ(rule(1e-3, 1e-2, 1e2), 0.001 * 1e-3 / 1e-2);
 }
 
+/// Adaptive Linear Tolerance First: the first iteration of a solve whose Jacobian varies
+/// stops at `first` (within the ceiling); a constant Jacobian's, and the later iterations, do
+/// not.
+TEST(LinearTolerance, FirstForcingOnlyAtTheFirstIterationOfAVaryingJacobian)
+{
+  LinearTolerance rule{1e-10, 0.1, 0.001, 0.01, 1e-3};
+  // Target 2.8e-3 from ||F_0|| 2.7e3: the safety alone asks 1e-9.
+  EXPECT_DOUBLE_EQ(rule(2.8e-3, 2.7e3, 0.0, true), 1e-3);
+  EXPECT_DOUBLE_EQ(rule(2.8e-3, 2.7e3, 0.0, false), 0.001 * 2.8e-3 / 2.7e3);
+  // Near the target the safety's own tolerance is looser: kept.
+  EXPECT_DOUBLE_EQ(rule(1.0, 0.5, 0.0, true), 0.001 * 1.0 / 0.5);
+  rule.first = 0.0; // not used
+  EXPECT_DOUBLE_EQ(rule(2.8e-3, 2.7e3, 0.0, true), 0.001 * 2.8e-3 / 2.7e3);
+}
+
 TEST(LinearTolerance, FloorIsTheChosenBelosSolversTolerance)
 {
   Teuchos::ParameterList p;

@@ -156,6 +156,8 @@ public:
     return dependencies;
   }
   int jacobian_dependency_calls = 0;
+  /// The linear problem's Jacobian is constant (Adaptive Linear Tolerance First does not apply).
+  bool jacobian_varies() const override { return !linear_ && dependencies.empty(); }
   std::vector<double> preconditioner_dependencies(const Vector & /*x*/) override
   {
     ++preconditioner_dependency_calls;
@@ -931,6 +933,8 @@ protected:
   {
     Teuchos::ParameterList p = solver_parameters();
     p.set("Keep Preconditioner Within Solve", keep);
+    // Each solve on its own (KeepPreconditionerAcrossStepsTest keeps one across solves).
+    p.set("Keep Preconditioner Across Steps", false);
     p.sublist("Linear Solver").set("Preconditioner Type", preconditioner);
     return p;
   }
