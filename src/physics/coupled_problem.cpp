@@ -2,6 +2,8 @@
 
 #include "base/errors.hpp"
 #include "contact/interface_parameters.hpp"
+#include "contact/pair_rows_state.hpp"
+#include "contact/pair_search_again.hpp"
 #include "contact/small_sliding.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
@@ -553,54 +555,10 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
 void CoupledProblem::search_again(const std::size_t p, const double time)
 {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: contact search again"));
-  const PairResearch &research = *research_[p];
   ContactInterface &pairing = *pairings_[p];
-  // The displacement of the two surfaces on every rank: each node from its owner.
-  const std::vector<int> &nodes = research.surface_nodes();
-  const int rank = dofs_.owned_dof_map()->getComm()->getRank();
-  std::vector<double> mine(3 * nodes.size(), 0.0), all(mine.size(), 0.0);
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (dofs_.node_owner()[nodes[i]] == rank)
-    {
-      const Point u = fields_->u(nodes[i]);
-      for (int c = 0; c < 3; ++c)
-        mine[3 * i + c] = u[c];
-    }
-  Teuchos::reduceAll(*dofs_.owned_dof_map()->getComm(), Teuchos::REDUCE_SUM,
-                     static_cast<int>(mine.size()), mine.data(), all.data());
-  std::vector<Point> u(static_cast<std::size_t>(mesh_.n_nodes()), Point{0.0, 0.0, 0.0});
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    u[nodes[i]] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
-  std::vector<ContactRow> rows = research.rows_at(
-      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), u, time);
-  // A new partner may not be a node of another pair or gap (the rows of one would overwrite
-  // the other's), as at set-up.
-  std::vector<int> other(static_cast<std::size_t>(mesh_.n_nodes()), -1);
-  for (std::size_t q = 0; q < pairings_.size(); ++q)
-    if (q != p)
-      for (const ContactRow &row : pairings_[q]->rows())
-      {
-        other[row.node] = static_cast<int>(q);
-        for (const int k : row.partners)
-          other[k] = static_cast<int>(q);
-      }
-  for (const ContactRow &row : rows)
-    for (const int k : row.partners)
-      if (other[k] >= 0)
-      {
-        const Point &X = mesh_.coordinates[k];
-        std::ostringstream message;
-        message << pairing.name() << ": at t = " << time
-                << " s the search redone pairs secondary node " << row.node + 1 << " with node "
-                << k + 1 << " at (" << X[0] << ", " << X[1] << ", " << X[2] << ") m, which is on "
-                << pairings_[other[k]]->name()
-                << ": a node of a pair between separately meshed bodies cannot be on another pair "
-                   "or gap (the rows of one would overwrite the other's); keep the sliding away "
-                   "from the other pair or gap, or give the pairs and gaps side sets without "
-                   "common nodes. The results up to the last accepted step are kept";
-        throw RunError(message.str());
-      }
-  pairing.replace_rows(std::move(rows));
+  pairing.replace_rows(search_pair_again(
+      pairings_, p, *research_[p], mesh_, [this](const int node) { return fields_->u(node); },
+      dofs_.node_owner(), *dofs_.owned_dof_map()->getComm(), time));
   decided_ = false;
   if (log_ != Teuchos::null)
     *log_ << "  " << pairing.name() << ": search " << pairing.searches() << " at t = " << time
@@ -609,75 +567,13 @@ void CoupledProblem::search_again(const std::size_t p, const double time)
 
 std::vector<double> CoupledProblem::pair_rows_state() const
 {
-  std::vector<double> state;
-  for (std::size_t p = 0; p < pairings_.size(); ++p)
-  {
-    if (pairings_[p]->split())
-      continue;
-    state.push_back(pairings_[p]->searches());
-    state.push_back(pairings_[p]->n_rows());
-    for (const ContactRow &row : pairings_[p]->rows())
-    {
-      state.push_back(static_cast<double>(row.partners.size()));
-      state.insert(state.end(), row.partners.begin(), row.partners.end());
-      state.insert(state.end(), row.weights.begin(), row.weights.end());
-      state.insert(state.end(), {row.area, row.gap0, row.slip0[0], row.slip0[1], row.slip0[2]});
-    }
-  }
-  return state;
+  return kiln::pair_rows_state(pairings_);
 }
 
 void CoupledProblem::restore_pair_rows(const std::vector<double> &state, const std::string &where)
 {
-  if (state.empty())
-    return; // a checkpoint without pairings, or of a run without searches written
-  std::size_t at = 0;
-  const auto next = [&]()
-  {
-    KILN_CHECK_INPUT(at < state.size(), where,
-                     "its rows of the contact pairs (contact/pair_rows) are shorter than this "
-                     "run's pairs need: a checkpoint of another run or a damaged one");
-    return state[at++];
-  };
-  for (std::size_t p = 0; p < pairings_.size(); ++p)
-  {
-    if (pairings_[p]->split())
-      continue;
-    ContactInterface &pairing = *pairings_[p];
-    const int searches = static_cast<int>(next());
-    KILN_CHECK_INPUT(static_cast<int>(next()) == pairing.n_rows(), where,
-                     "its rows of " << pairing.name()
-                                    << " (contact/pair_rows) are not as many as this run's: a "
-                                       "checkpoint of another run or a damaged one");
-    if (searches == 1)
-    {
-      // The set-up's rows: skip them.
-      for (int k = 0; k < pairing.n_rows(); ++k)
-        at += 2 * static_cast<std::size_t>(next()) + 5;
-      continue;
-    }
-    std::vector<ContactRow> rows(pairing.rows().begin(), pairing.rows().end());
-    for (ContactRow &row : rows)
-    {
-      const auto n = static_cast<std::size_t>(next());
-      row.partners.resize(n);
-      row.weights.resize(n);
-      for (int &k : row.partners)
-        k = static_cast<int>(next());
-      for (double &w : row.weights)
-        w = next();
-      row.area = next();
-      row.gap0 = next();
-      for (double &v : row.slip0)
-        v = next();
-    }
-    pairing.replace_rows(std::move(rows));
-    pairing.set_searches(searches);
-  }
-  KILN_CHECK_INPUT(at == state.size(), where,
-                   "its rows of the contact pairs (contact/pair_rows) are longer than this run's "
-                   "pairs need: a checkpoint of another run or a damaged one");
-  decided_ = false;
+  if (kiln::restore_pair_rows(pairings_, state, where))
+    decided_ = false;
 }
 
 bool CoupledProblem::models_read_old_temperature() const

@@ -1,0 +1,67 @@
+#include "contact/pair_search_again.hpp"
+
+#include "base/errors.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+namespace kiln
+{
+std::vector<ContactRow>
+search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings,
+                  const std::size_t p, const PairResearch &research, const Mesh &mesh,
+                  const std::function<Point(int node)> &u, const std::vector<int> &node_owner,
+                  const Teuchos::Comm<int> &comm, const double time)
+{
+  const ContactInterface &pairing = *pairings[p];
+  // The displacement of the two surfaces on every rank: each node from its owner.
+  const std::vector<int> &nodes = research.surface_nodes();
+  const int rank = comm.getRank();
+  std::vector<double> mine(3 * nodes.size(), 0.0), all(mine.size(), 0.0);
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (node_owner[nodes[i]] == rank)
+    {
+      const Point value = u(nodes[i]);
+      for (int c = 0; c < 3; ++c)
+        mine[3 * i + c] = value[c];
+    }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(),
+                     all.data());
+  std::vector<Point> surface_u(static_cast<std::size_t>(mesh.n_nodes()), Point{0.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    surface_u[nodes[i]] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
+  std::vector<ContactRow> rows = research.rows_at(
+      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), surface_u, time);
+  // A new partner may not be a node of another pair or gap (the rows of one would overwrite
+  // the other's), as at set-up.
+  std::unordered_map<int, std::size_t> other; // node -> its other pair or gap
+  for (std::size_t q = 0; q < pairings.size(); ++q)
+    if (q != p)
+      for (const ContactRow &row : pairings[q]->rows())
+      {
+        other[row.node] = q;
+        for (const int k : row.partners)
+          other[k] = q;
+      }
+  for (const ContactRow &row : rows)
+    for (const int k : row.partners)
+      if (const auto found = other.find(k); found != other.end())
+      {
+        const Point &X = mesh.coordinates[k];
+        std::ostringstream message;
+        message << pairing.name() << ": at t = " << time
+                << " s the search redone pairs secondary node " << row.node + 1 << " with node "
+                << k + 1 << " at (" << X[0] << ", " << X[1] << ", " << X[2] << ") m, which is on "
+                << pairings[found->second]->name()
+                << ": a node of a pair between separately meshed bodies cannot be on another pair "
+                   "or gap (the rows of one would overwrite the other's); keep the sliding away "
+                   "from the other pair or gap, or give the pairs and gaps side sets without "
+                   "common nodes. The results up to the last accepted step are kept";
+        throw RunError(message.str());
+      }
+  return rows;
+}
+} // namespace kiln
