@@ -32,6 +32,7 @@
 #include <Thyra_VectorStdOps.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -500,6 +501,13 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     return failed(e);
   }
   result.initial_residual_norm = s.group->getNormF();
+  if (!std::isfinite(result.initial_residual_norm))
+  {
+    // F at the start is NaN or Inf: the solve fails here (the time stepper names it), also
+    // when Newton would start from a predicted x + first_step, where F is evaluated anew.
+    result.final_residual_norm = result.initial_residual_norm;
+    return failed(StepFailure(""));
+  }
   result.tolerance =
       std::max(s.absolute_tolerance, s.relative_tolerance * result.initial_residual_norm);
   // With free motions, a load with a part along them has no equilibrium: it would stay in
