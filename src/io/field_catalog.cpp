@@ -47,7 +47,8 @@ const std::vector<FieldDescription> &field_catalog()
        true,
        {},
        "W/m^2",
-       "heat flux across the gap from side a to side b; NaN off the gap"},
+       "heat flux across the gap from side a to side b, and at a contact pair's secondary "
+       "nodes from the secondary to the primary side; NaN off the gaps and pairs"},
   };
   return catalog;
 }
