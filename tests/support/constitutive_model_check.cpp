@@ -59,8 +59,29 @@ DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const k
         std::max(temperature_error, std::abs(fd - analytic.stress_temperature_derivative[i]));
   }
   // Relative where the derivative is nonzero (a zero dsigma/dT: alpha = 0 and no flow).
-  return {tangent_scale > 0.0 ? tangent_error / tangent_scale : tangent_error,
-          temperature_scale > 0.0 ? temperature_error / temperature_scale : temperature_error};
+  DerivativeErrors errors{tangent_scale > 0.0 ? tangent_error / tangent_scale : tangent_error,
+                          temperature_scale > 0.0 ? temperature_error / temperature_scale
+                                                  : temperature_error};
+  if (analytic.isotropic.valid)
+  {
+    const kiln::VoigtMatrix form = tangent_of(analytic.isotropic);
+    double form_error = 0.0;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        form_error = std::max(form_error, std::abs(form[i][j] - analytic.tangent[i][j]));
+    errors.isotropic = form_error / tangent_scale;
+  }
+  return errors;
+}
+
+kiln::VoigtMatrix tangent_of(const kiln::IsotropicTangent &form)
+{
+  kiln::VoigtMatrix C{};
+  for (int I = 0; I < 6; ++I)
+    for (int J = 0; J < 6; ++J)
+      C[I][J] = (I < 3 && J < 3 ? form.lambda : 0.0) + (I == J ? 2.0 * form.shear : 0.0) +
+                form.rank_one * form.n[I] * form.n[J] * (J < 3 ? 1.0 : 2.0);
+  return C;
 }
 
 kiln::Voigt rotate(const std::array<std::array<double, 3>, 3> &R, const kiln::Voigt &a)

@@ -14,7 +14,14 @@ struct DerivativeErrors
 {
   double tangent = 0.0;
   double temperature = 0.0;
+  /// max |tangent of the isotropic form − tangent| / max |tangent| (PointResponse::isotropic);
+  /// −1 when the model gives no isotropic form.
+  double isotropic = -1.0;
 };
+
+/// The 6x6 tangent (Kiln's Voigt convention) of an isotropic form: λ_t [I, J < 3] + 2 μ_t δ_IJ +
+/// γ n_I n_J w_J.
+kiln::VoigtMatrix tangent_of(const kiln::IsotropicTangent &form);
 
 /// Central differences of evaluate() at `in` from `old_state` (n_state() entries), with
 /// steps `strain_step` on each strain component and `temperature_step` on T.

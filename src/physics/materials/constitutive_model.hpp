@@ -23,6 +23,26 @@ struct PointInput
   /// (Δt = 0: the initial equilibrium, output, the contact pressure of the gap conductance).
   double temperature_old = 0.0;
   double time_step = 0.0; ///< Δt = t_{n+1} − t_n [s] (0: a steady or first solve)
+  /// Whether the caller reads the tangent, ∂σ/∂T and the isotropic form (false: a residual
+  /// evaluation, which only reads the stress and the new state; a model may then leave them
+  /// unset).
+  bool derivatives = true;
+};
+
+/// The isotropic form of a tangent, which a model may give besides the 6x6 matrix:
+///   ∂σ/∂ε = λ_t 1⊗1 + 2 μ_t 𝕀 + γ n⊗n,
+/// 𝕀 the identity on symmetric tensors and n a symmetric tensor (Voigt order, tensor
+/// components), so that tangent[I][J] = λ_t [I, J < 3] + 2 μ_t δ_IJ + γ n_I n_J w_J (w_J = 1
+/// for a normal, 2 for a shear component). Isotropic elasticity (γ = 0) and the radial return
+/// of the von Mises models have this form; the elasticity kernel then contracts it as it
+/// contracts Hooke's law, at a fraction of the cost of the general 6x6 contraction.
+struct IsotropicTangent
+{
+  bool valid = false;    ///< whether the model gave the form (else only `tangent` holds)
+  double lambda = 0.0;   ///< λ_t [Pa]
+  double shear = 0.0;    ///< μ_t [Pa]
+  double rank_one = 0.0; ///< γ [Pa]
+  Voigt n{};             ///< n [-] (not read when γ = 0)
 };
 
 /// What a model returns at one quadrature point.
@@ -34,6 +54,9 @@ struct PointResponse
   /// isotropic elasticity has tangent[3][3] = 2G).
   VoigtMatrix tangent{};
   Voigt stress_temperature_derivative{}; ///< ∂σ/∂T at fixed ε [Pa/K]
+  /// The same tangent in isotropic form, if the model gives it (`valid`; equal to `tangent`
+  /// up to rounding).
+  IsotropicTangent isotropic{};
 };
 
 /// A constitutive model with state. State is n_state() doubles per quadrature point, owned by

@@ -53,6 +53,16 @@ void LinearElasticModel::evaluate(const PointInput &in, const double * /*old_sta
   out.stress = elastic_stress(mechanical_strain(in.strain, in.temperature));
   out.tangent = elastic_tangent();
   out.stress_temperature_derivative = thermal_stress_derivative();
+  out.isotropic = isotropic_tangent();
+}
+
+IsotropicTangent LinearElasticModel::isotropic_tangent() const
+{
+  IsotropicTangent t;
+  t.valid = true;
+  t.lambda = lambda_;
+  t.shear = G_;
+  return t;
 }
 
 Voigt LinearElasticModel::mechanical_strain(const Voigt &strain, const double T) const

@@ -41,6 +41,8 @@ public:
   Voigt elastic_stress(const Voigt &elastic_strain) const;
   /// λ I⊗I + 2G 𝕀 in Kiln's Voigt convention.
   VoigtMatrix elastic_tangent() const;
+  /// The same in isotropic form: λ_t = λ, μ_t = G, γ = 0.
+  IsotropicTangent isotropic_tangent() const;
   /// −(3λ + 2G) α I [Pa/K].
   Voigt thermal_stress_derivative() const;
 

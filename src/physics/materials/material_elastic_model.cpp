@@ -23,6 +23,9 @@ void MaterialElasticModel::evaluate(const PointInput &in, const double * /*old_s
     for (int J = 0; J < 6; ++J)
       out.tangent[I][J] = (normal && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0);
   }
+  out.isotropic.valid = true;
+  out.isotropic.lambda = lambda;
+  out.isotropic.shear = G;
 }
 
 double MaterialElasticModel::thermal_strain(const double temperature) const

@@ -68,8 +68,12 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   const double q_trial = std::sqrt(1.5 * s_s);
 
   out.stress = trial;
-  out.tangent = elasticity_.elastic_tangent();
-  out.stress_temperature_derivative = elasticity_.thermal_stress_derivative();
+  if (in.derivatives)
+  {
+    out.tangent = elasticity_.elastic_tangent();
+    out.stress_temperature_derivative = elasticity_.thermal_stress_derivative();
+    out.isotropic = elasticity_.isotropic_tangent();
+  }
   for (int i = 0; i < 8; ++i)
     new_state[i] = old_state[i];
   new_state[7] = 0.0;
@@ -96,6 +100,8 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   }
   new_state[6] = old_state[6] + x;
   new_state[7] = x / in.time_step;
+  if (!in.derivatives)
+    return;
 
   // The consistent tangent: dσ = K I tr(dε) + (1 − β) 2G dev(dε) − s_tr (3G dx − β dq_tr)/q_tr,
   // dq_tr = 2G N : dε with N = (3/2) s_tr/q_tr, and dx = c dq_tr + d dT from r(x) = 0.
@@ -124,6 +130,12 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
     }
     out.stress_temperature_derivative[i] -= s_i * 3.0 * G * d;
   }
+  // The same tangent in isotropic form: λ_t 1⊗1 + 2 μ_t 𝕀 + γ n⊗n with n = s_tr / q_tr.
+  out.isotropic.lambda = K - 2.0 * G * (1.0 - beta) / 3.0;
+  out.isotropic.shear = G * (1.0 - beta);
+  out.isotropic.rank_one = relaxed ? 0.0 : -3.0 * G * (3.0 * G * c - beta);
+  for (int i = 0; i < 6; ++i)
+    out.isotropic.n[i] = s_trial[i] / q_trial;
 }
 
 double VonMisesViscoplasticModel::solve_increment(const PointInput &in,

@@ -117,6 +117,7 @@ ElasticityKernel::ElasticityKernel(std::shared_ptr<const ConstitutiveModel> mode
 
 void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDisplacements &u,
                                        const NodalValues &T, const PointHistory &history,
+                                       const bool derivatives,
                                        std::vector<PointResponse> &responses,
                                        std::vector<Voigt> *strains) const
 {
@@ -149,6 +150,7 @@ void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDispl
       in.temperature_old += fe.shape(j, q) * (has_old ? history.T_old[j] : T[j]);
     }
     in.time_step = history.time_step;
+    in.derivatives = derivatives;
     responses[q] = PointResponse{};
     model_->evaluate(in, n_state > 0 ? old_state + q * n_state : nullptr,
                      n_state > 0 ? new_state + q * n_state : nullptr, responses[q]);
@@ -163,7 +165,7 @@ void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisp
                                         LocalSystem &local) const
 {
   std::vector<PointResponse> responses;
-  evaluate_points(fe, u, T, history, responses, nullptr);
+  evaluate_points(fe, u, T, history, local.has_jacobian(), responses, nullptr);
   if (fe.type() == CellType::hex8)
     assemble_general<hex8_n_nodes, true>(fe, responses, body_force, u_slot, T_slot, local);
   else if (fe.n_shape() <= hex8_n_nodes)
@@ -172,9 +174,45 @@ void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisp
     assemble_general<max_cell_nodes, false>(fe, responses, body_force, u_slot, T_slot, local);
 }
 
+/// Whether every point's tangent has the isotropic form with the same λ_t and μ_t and no
+/// rank-one term (an elastic cell: the first Newton iteration of a step from rest, a cell
+/// that does not flow, or E(T) at a uniform T); `valid`: whether every point has the form.
+struct IsotropicCell
+{
+  bool valid = true;
+  bool uniform = true;
+};
+IsotropicCell isotropic_cell(const std::vector<PointResponse> &responses, const int n_q)
+{
+  IsotropicCell cell;
+  const IsotropicTangent &first = responses[0].isotropic;
+  for (int q = 0; q < n_q; ++q)
+  {
+    const IsotropicTangent &t = responses[q].isotropic;
+    cell.valid = cell.valid && t.valid;
+    cell.uniform =
+        cell.uniform && t.lambda == first.lambda && t.shear == first.shear && t.rank_one == 0.0;
+  }
+  cell.uniform = cell.uniform && cell.valid;
+  return cell;
+}
+
 /// The general path's terms from the points' responses, with per-cell buffers of capacity
-/// N >= fe.n_shape() (compile-time loop bounds with `exact`, as assemble<N, exact>). At a
-/// point, with the tangent as a fourth-order C_dkel = ∂σ_dk/∂(∇u)_el = tangent[dk][el] w_el
+/// N >= fe.n_shape() (compile-time loop bounds with `exact`, as assemble<N, exact>).
+///
+/// When every point gives its tangent in isotropic form (IsotropicTangent: λ_t 1⊗1 + 2 μ_t 𝕀 +
+/// γ n⊗n), the u–u block is contracted as Hooke's law on the fast path, with weights that
+/// vary over the points:
+///   dR_{i,d}/du_{j,e} = ∫ (λ_t ∂_d φ_i ∂_e φ_j + μ_t (δ_de ∇φ_i·∇φ_j + ∂_e φ_i ∂_d φ_j)
+///                          + γ (n ∇φ_i)_d (n ∇φ_j)_e) dΩ
+///                     = M_ij[d][e] + B_ij[e][d] + δ_de tr B_ij,
+///   M_ij[d][e] = ∫ (λ_t ∂_d φ_i ∂_e φ_j + γ (n ∇φ_i)_d (n ∇φ_j)_e) dΩ,
+///   B_ij[k][l] = ∫ μ_t ∂_k φ_i ∂_l φ_j dΩ,
+/// symmetric under (i,d) <-> (j,e), so only the blocks j >= i are accumulated and each fills
+/// its mirror image. A cell whose points share λ_t and μ_t and have γ = 0 (isotropic_cell's
+/// `uniform`) accumulates the fast path's ∫ ∂_k φ_i ∂_l φ_j dΩ alone and scales it once.
+///
+/// Otherwise, with the tangent as a fourth-order C_dkel = ∂σ_dk/∂(∇u)_el = tangent[dk][el] w_el
 /// (w = 1 on the diagonal, 1/2 off it: ε_el = ((∇u)_el + (∇u)_le)/2),
 ///   H_j[d][k][e]            = Σ_l C_dkel ∂_l φ_j JxW
 ///   dR_{i,d}/du_{j,e}      += Σ_k ∂_k φ_i H_j[d][k][e]
@@ -189,20 +227,34 @@ void ElasticityKernel::assemble_general(const ElementValues &fe,
   const int n_q = exact ? N : fe.n_qpoints();
   const bool jacobian = local.has_jacobian();
   const bool coupled = T_slot >= 0 && jacobian;
+  const IsotropicCell form = jacobian ? isotropic_cell(responses, n_q) : IsotropicCell{};
+  const bool isotropic = jacobian && form.valid;
+  const bool general = jacobian && !isotropic;
   std::array<Point, N> residual{};
-  // K[i][d][j][e] = dR_{i,d}/du_{j,e}; KT[i][d][j] = dR_{i,d}/dT_j (coupled only).
+  // General: K[i][d][j][e] = dR_{i,d}/du_{j,e}. Isotropic: M[i][j] and B[i][j] (j >= i) as above
+  // (uniform: B the geometric sums alone). KT[i][d][j] = dR_{i,d}/dT_j (coupled only).
   using Row = std::array<Point, N>;
   std::array<std::array<Row, 3>, N> K;
+  std::array<std::array<Tensor, N>, N> M, B;
   std::array<std::array<std::array<double, N>, 3>, N> KT;
-  if (jacobian)
+  if (general)
     for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
         std::fill(K[i][d].begin(), K[i][d].begin() + n, Point{});
+  if (isotropic)
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j)
+      {
+        B[i][j] = Tensor{};
+        if (!form.uniform)
+          M[i][j] = Tensor{};
+      }
   if (coupled)
     for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d)
         std::fill(KT[i][d].begin(), KT[i][d].begin() + n, 0.0);
   std::array<std::array<Tensor, 3>, N> H; // H[j][d][k][e]
+  std::array<Point, N> a, b, v, w; // λ_t JxW ∇φ_i, μ_t JxW ∇φ_i, n ∇φ_i, γ JxW n ∇φ_i
   for (int q = 0; q < n_q; ++q)
   {
     const double JxW = fe.JxW(q);
@@ -220,7 +272,76 @@ void ElasticityKernel::assemble_general(const ElementValues &fe,
         residual[i][d] += value * JxW;
       }
     }
-    if (!jacobian)
+    if (coupled)
+      for (int i = 0; i < n; ++i)
+        for (int d = 0; d < 3; ++d)
+        {
+          const Point &g = grad_phi[i];
+          double s = 0.0;
+          for (int k = 0; k < 3; ++k)
+            s += r.stress_temperature_derivative[voigt_index[d][k]] * g[k];
+          s *= JxW;
+          for (int j = 0; j < n; ++j)
+            KT[i][d][j] += s * phi[j];
+        }
+    if (isotropic && form.uniform)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        Point g_i;
+        for (int k = 0; k < 3; ++k)
+          g_i[k] = grad_phi[i][k] * JxW;
+        for (int j = i; j < n; ++j)
+        {
+          const Point &g_j = grad_phi[j];
+          Tensor &B_ij = B[i][j];
+          for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+              B_ij[k][l] += g_i[k] * g_j[l];
+        }
+      }
+    }
+    else if (isotropic)
+    {
+      const IsotropicTangent &t = r.isotropic;
+      const double lambda_JxW = t.lambda * JxW, shear_JxW = t.shear * JxW;
+      const double rank_one_JxW = t.rank_one * JxW;
+      const bool rank_one = rank_one_JxW != 0.0;
+      for (int i = 0; i < n; ++i)
+      {
+        const Point &g = grad_phi[i];
+        for (int k = 0; k < 3; ++k)
+        {
+          a[i][k] = lambda_JxW * g[k];
+          b[i][k] = shear_JxW * g[k];
+        }
+        if (rank_one)
+          for (int d = 0; d < 3; ++d)
+          {
+            v[i][d] = t.n[voigt_index[d][0]] * g[0] + t.n[voigt_index[d][1]] * g[1] +
+                      t.n[voigt_index[d][2]] * g[2];
+            w[i][d] = rank_one_JxW * v[i][d];
+          }
+      }
+      for (int i = 0; i < n; ++i)
+        for (int j = i; j < n; ++j)
+        {
+          const Point &g_j = grad_phi[j];
+          Tensor &M_ij = M[i][j];
+          Tensor &B_ij = B[i][j];
+          for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+            {
+              M_ij[k][l] += a[i][k] * g_j[l];
+              B_ij[k][l] += b[i][k] * g_j[l];
+            }
+          if (rank_one)
+            for (int d = 0; d < 3; ++d)
+              for (int e = 0; e < 3; ++e)
+                M_ij[d][e] += w[i][d] * v[j][e];
+        }
+    }
+    if (!general)
       continue;
     // C_dkel JxW.
     double C[3][3][3][3];
@@ -250,15 +371,6 @@ void ElasticityKernel::assemble_general(const ElementValues &fe,
           for (int e = 0; e < 3; ++e)
             K_id[j][e] += g[0] * H_jd[0][e] + g[1] * H_jd[1][e] + g[2] * H_jd[2][e];
         }
-        if (coupled)
-        {
-          double s = 0.0;
-          for (int k = 0; k < 3; ++k)
-            s += r.stress_temperature_derivative[voigt_index[d][k]] * g[k];
-          s *= JxW;
-          for (int j = 0; j < n; ++j)
-            KT[i][d][j] += s * phi[j];
-        }
       }
     }
   }
@@ -266,15 +378,33 @@ void ElasticityKernel::assemble_general(const ElementValues &fe,
     for (int d = 0; d < 3; ++d)
     {
       local.residual(u_slot + d, i) += residual[i][d];
-      if (!jacobian)
-        continue;
-      for (int j = 0; j < n; ++j)
-      {
-        for (int e = 0; e < 3; ++e)
-          local.jacobian(u_slot + d, i, u_slot + e, j) += K[i][d][j][e];
-        if (coupled)
+      if (coupled)
+        for (int j = 0; j < n; ++j)
           local.jacobian(u_slot + d, i, T_slot, j) += KT[i][d][j];
-      }
+      if (general)
+        for (int j = 0; j < n; ++j)
+          for (int e = 0; e < 3; ++e)
+            local.jacobian(u_slot + d, i, u_slot + e, j) += K[i][d][j][e];
+    }
+  if (!isotropic)
+    return;
+  // Uniform: M = λ_t gg, B = μ_t gg with gg the geometric sums held in B.
+  const double lambda = responses[0].isotropic.lambda, shear = responses[0].isotropic.shear;
+  for (int i = 0; i < n; ++i)
+    for (int j = i; j < n; ++j)
+    {
+      const Tensor &B_ij = B[i][j];
+      const double B_trace = B_ij[0][0] + B_ij[1][1] + B_ij[2][2];
+      for (int d = 0; d < 3; ++d)
+        for (int e = 0; e < 3; ++e)
+        {
+          const double value = form.uniform ? lambda * B_ij[d][e] + shear * B_ij[e][d] +
+                                                  (d == e ? shear * B_trace : 0.0)
+                                            : M[i][j][d][e] + B_ij[e][d] + (d == e ? B_trace : 0.0);
+          local.jacobian(u_slot + d, i, u_slot + e, j) += value;
+          if (j != i)
+            local.jacobian(u_slot + e, j, u_slot + d, i) += value;
+        }
     }
 }
 
@@ -301,7 +431,7 @@ ElasticityKernel::PointAverages ElasticityKernel::point_averages(const ElementVa
   PointHistory copy = history;
   copy.time_step = 0.0;
   copy.new_state = scratch.empty() ? nullptr : scratch.data();
-  evaluate_points(fe, u, T, copy, responses, &strains);
+  evaluate_points(fe, u, T, copy, false, responses, &strains);
   double volume = 0.0;
   const int n_state = model_->n_state();
   for (int q = 0; q < fe.n_qpoints(); ++q)

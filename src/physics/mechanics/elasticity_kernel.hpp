@@ -136,10 +136,11 @@ private:
   Point body_force_;
   /// The general path's model (null: the fast path).
   std::shared_ptr<const ConstitutiveModel> model_;
-  /// σ, C and ∂σ/∂T at each point of the general path, by calling the model.
+  /// σ at each point of the general path, by calling the model, and with `derivatives` C and
+  /// ∂σ/∂T (PointInput::derivatives).
   void evaluate_points(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
-                       const PointHistory &history, std::vector<PointResponse> &responses,
-                       std::vector<Voigt> *strains) const;
+                       const PointHistory &history, bool derivatives,
+                       std::vector<PointResponse> &responses, std::vector<Voigt> *strains) const;
   void assemble_general(const ElementValues &fe, const NodalDisplacements &u, const NodalValues &T,
                         const PointHistory &history, const Point &body_force, int u_slot,
                         int T_slot, LocalSystem &local) const;

@@ -586,6 +586,11 @@ namespace
 class TemperatureDependentElasticity final : public kiln::ConstitutiveModel
 {
 public:
+  /// With `isotropic_form` the tangent is also given in isotropic form (λ_t, μ_t vary with T).
+  explicit TemperatureDependentElasticity(const bool isotropic_form = false)
+      : isotropic_form_(isotropic_form)
+  {
+  }
   double thermal_strain(const double temperature) const override
   {
     const double dT = temperature - T_ref;
@@ -612,7 +617,39 @@ public:
       for (int J = 0; J < 6; ++J)
         out.tangent[I][J] = scale * ((I < 3 && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0));
     }
+    out.isotropic.valid = isotropic_form_;
+    out.isotropic.lambda = scale * lambda;
+    out.isotropic.shear = scale * G;
   }
+
+private:
+  bool isotropic_form_;
+};
+
+/// `model` with the isotropic form of its tangent withheld: the kernel then contracts the 6x6
+/// tangent (the general contraction).
+class WithoutIsotropicForm final : public kiln::ConstitutiveModel
+{
+public:
+  explicit WithoutIsotropicForm(std::shared_ptr<const kiln::ConstitutiveModel> model)
+      : model_(std::move(model))
+  {
+  }
+  int n_state() const override { return model_->n_state(); }
+  void initial_state(double *state) const override { model_->initial_state(state); }
+  double thermal_strain(const double temperature) const override
+  {
+    return model_->thermal_strain(temperature);
+  }
+  void evaluate(const kiln::PointInput &in, const double *old_state, double *new_state,
+                kiln::PointResponse &out) const override
+  {
+    model_->evaluate(in, old_state, new_state, out);
+    out.isotropic.valid = false;
+  }
+
+private:
+  std::shared_ptr<const kiln::ConstitutiveModel> model_;
 };
 
 /// A Power Law viscoplastic model of the steel-like constants, rate A σ^n exp(−Q/(R T)).
@@ -746,8 +783,12 @@ TEST(ElasticityKernel, GeneralPathOfAConstantModelEqualsTheFastPath)
 
 TEST(ElasticityKernel, GeneralPathJacobianOfTemperatureDependentElasticity)
 {
-  const kiln::ElasticityKernel general(std::make_shared<TemperatureDependentElasticity>(), Point{});
-  check_general_jacobian(general, kiln::ElasticityKernel::PointHistory{}, 1e-7);
+  for (const bool isotropic_form : {false, true})
+  {
+    const kiln::ElasticityKernel general(
+        std::make_shared<TemperatureDependentElasticity>(isotropic_form), Point{});
+    check_general_jacobian(general, kiln::ElasticityKernel::PointHistory{}, 1e-7);
+  }
 }
 
 TEST(ElasticityKernel, GeneralPathJacobianOfAViscoplasticStep)
@@ -773,4 +814,65 @@ TEST(ElasticityKernel, GeneralPathJacobianOfAViscoplasticStep)
   // The step flowed: some plastic strain at every point.
   for (int q = 0; q < fe.n_qpoints(); ++q)
     EXPECT_GT(model->equivalent_plastic_strain(new_state.data() + q * model->n_state()), 0.0);
+}
+
+namespace
+{
+/// `a` and `b`, the same cell's systems from the isotropic and the general contraction: the
+/// residuals equal (the contraction is the Jacobian's only), the Jacobians to rounding.
+void expect_same_system(const kiln::LocalSystem &a, const kiln::LocalSystem &b)
+{
+  EXPECT_EQ(a.residual_values(), b.residual_values());
+  const Dense Ja = local_jacobian(a), Jb = local_jacobian(b);
+  ASSERT_GT(max_abs(Jb), 0.0);
+  EXPECT_LT(max_difference(Ja, Jb), 1e-13 * max_abs(Jb));
+  std::cout << "isotropic against general contraction: max |difference| / max |J| "
+            << max_difference(Ja, Jb) / max_abs(Jb) << "\n";
+}
+} // namespace
+
+// The isotropic contraction (a tangent λ_t 1⊗1 + 2 μ_t 𝕀 + γ n⊗n, IsotropicTangent) against the
+// general 6x6 one of the same model, on the distorted cell: flowing viscoplastic points
+// (λ_t, μ_t, γ vary over the cell), elastic ones at Δt = 0 (a uniform cell: the geometric
+// sums alone) and E(T) with T varying over the cell (γ = 0, λ_t and μ_t varying).
+TEST(ElasticityKernel, IsotropicTangentContractionEqualsTheGeneralContraction)
+{
+  const AffineCell cell;
+  const auto model = power_law_model(4e-28, 3.0, 1.0e4);
+  const kiln::ElasticityKernel isotropic(model, Point{1, 2, 3});
+  const kiln::ElasticityKernel general(std::make_shared<WithoutIsotropicForm>(model),
+                                       Point{1, 2, 3});
+  const int size = model->n_state() * cell.fe.n_qpoints();
+  std::vector<double> old_state(size), new_state(size);
+  for (int q = 0; q < cell.fe.n_qpoints(); ++q)
+    model->initial_state(old_state.data() + q * model->n_state());
+  NodalValues T_old;
+  T_old.fill(T_ref + 30.0);
+  kiln::ElasticityKernel::PointHistory history;
+  history.T_old = T_old;
+  history.old_state = old_state.data();
+  history.new_state = new_state.data();
+  for (const double time_step : {1.0, 0.0})
+  {
+    history.time_step = time_step;
+    kiln::LocalSystem a(8, 4), b(8, 4);
+    isotropic.evaluate(cell.fe, cell.u, cell.T, history, Point{1, 2, 3}, 1, 0, a);
+    general.evaluate(cell.fe, cell.u, cell.T, history, Point{1, 2, 3}, 1, 0, b);
+    expect_same_system(a, b);
+    if (time_step > 0.0) // the points flowed: the rank-one term is there
+    {
+      for (int q = 0; q < cell.fe.n_qpoints(); ++q)
+        EXPECT_GT(model->equivalent_plastic_strain(new_state.data() + q * model->n_state()), 0.0);
+    }
+  }
+  const kiln::ElasticityKernel with_form(std::make_shared<TemperatureDependentElasticity>(true),
+                                         Point{});
+  const kiln::ElasticityKernel without_form(std::make_shared<TemperatureDependentElasticity>(false),
+                                            Point{});
+  kiln::LocalSystem a(8, 4), b(8, 4);
+  with_form.evaluate(cell.fe, cell.u, cell.T, kiln::ElasticityKernel::PointHistory{}, Point{}, 1, 0,
+                     a);
+  without_form.evaluate(cell.fe, cell.u, cell.T, kiln::ElasticityKernel::PointHistory{}, Point{}, 1,
+                        0, b);
+  expect_same_system(a, b);
 }

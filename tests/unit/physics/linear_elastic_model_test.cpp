@@ -81,6 +81,8 @@ TEST(LinearElasticModel, DerivativesMatchFiniteDifferences)
       in.temperature = T;
       const auto errors = kiln_test::derivative_errors(model, in, {}, 1e-8, 1e-2);
       EXPECT_LT(errors.tangent, 1e-6) << T;
+      EXPECT_GE(errors.isotropic, 0.0);   // the isotropic form is given ...
+      EXPECT_LT(errors.isotropic, 1e-12); // ... and equals the tangent
       EXPECT_LT(errors.temperature, 1e-6) << T;
     }
 }

@@ -100,6 +100,8 @@ TEST(MtsViscoplasticModel, TangentsMatchFiniteDifferences)
           const auto errors = kiln_test::derivative_errors(*model, in, old_state, 1e-10, 1e-3);
           EXPECT_LT(errors.tangent, 1e-6)
               << "strain " << s << " T " << T << " dt " << dt << " alpha " << alpha;
+          EXPECT_GE(errors.isotropic, 0.0);   // the isotropic form is given ...
+          EXPECT_LT(errors.isotropic, 1e-12); // ... and equals the tangent
           EXPECT_LT(errors.temperature, 1e-6)
               << "strain " << s << " T " << T << " dt " << dt << " alpha " << alpha;
         }

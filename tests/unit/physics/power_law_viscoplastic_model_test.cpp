@@ -141,6 +141,8 @@ TEST(PowerLawViscoplasticModel, TangentsMatchFiniteDifferences)
           const kiln::PointInput in = point(strain, T, dt);
           const auto errors = kiln_test::derivative_errors(*model, in, old_state, 1e-9, 1e-3);
           EXPECT_LT(errors.tangent, 1e-6) << "T " << T << " dt " << dt << " alpha " << alpha;
+          EXPECT_GE(errors.isotropic, 0.0);   // the isotropic form is given ...
+          EXPECT_LT(errors.isotropic, 1e-12); // ... and equals the tangent
           EXPECT_LT(errors.temperature, 1e-6) << "T " << T << " dt " << dt << " alpha " << alpha;
           if (dt > 0.0)
           {
@@ -161,8 +163,32 @@ TEST(PowerLawViscoplasticModel, FlowingPointsWithSmallExponentMatchFiniteDiffere
     const auto errors =
         kiln_test::derivative_errors(*model, in, std::vector<double>(8, 0.0), 1e-9, 1e-3);
     EXPECT_LT(errors.tangent, 1e-6);
+    EXPECT_GE(errors.isotropic, 0.0);   // the isotropic form is given ...
+    EXPECT_LT(errors.isotropic, 1e-12); // ... and equals the tangent
     EXPECT_LT(errors.temperature, 1e-6);
   }
+}
+
+// A residual evaluation (PointInput::derivatives false: no tangent) gives the same stress and
+// state as a full one, at flowing and elastic points.
+TEST(PowerLawViscoplasticModel, EvaluationWithoutDerivativesGivesTheSameStressAndState)
+{
+  const auto model = make(power_law(1e-8, 0.5));
+  const std::vector<double> old_state{1e-4, -5e-5, -5e-5, 2e-5, 0, -1e-5, 1.3e-4, 0};
+  for (const kiln::Voigt &strain : {uniaxial, shear, general})
+    for (const double dt : {0.0, 2.0})
+    {
+      kiln::PointInput in = point(strain, 300.0, dt);
+      const kiln_test::Evaluation full = kiln_test::evaluate(*model, in, old_state);
+      in.derivatives = false;
+      const kiln_test::Evaluation residual = kiln_test::evaluate(*model, in, old_state);
+      EXPECT_EQ(full.response.stress, residual.response.stress) << dt;
+      EXPECT_EQ(full.state, residual.state) << dt;
+      if (dt > 0.0)
+      {
+        EXPECT_GT(full.state[7], 0.0);
+      }
+    }
 }
 
 TEST(PowerLawViscoplasticModel, InvariantUnderRotation)
@@ -220,6 +246,8 @@ TEST(PowerLawViscoplasticModel, ZeroExponentRelaxesTheDeviator)
   const auto errors =
       kiln_test::derivative_errors(*model, in, std::vector<double>(8, 0.0), 1e-9, 1e-3);
   EXPECT_LT(errors.tangent, 1e-6);
+  EXPECT_GE(errors.isotropic, 0.0);   // the isotropic form is given ...
+  EXPECT_LT(errors.isotropic, 1e-12); // ... and equals the tangent
   EXPECT_LT(errors.temperature, 1e-6);
 }
 
