@@ -34,6 +34,126 @@ Teuchos::ParameterList smooth_step(const double start_value, const double end_va
   return f;
 }
 
+Teuchos::ParameterList steady_deck(const std::string &physics, const Teuchos::ParameterList &mesh)
+{
+  Teuchos::ParameterList deck("Kiln");
+  if (!physics.empty())
+    deck.set("Physics", physics);
+  deck.set("Mesh", mesh);
+  deck.sublist("Time Stepping").set("Method", "Steady");
+  return deck;
+}
+
+Teuchos::ParameterList box_mesh(const std::vector<double> &size, const std::vector<int> &cells,
+                                const int gap_side_set)
+{
+  Teuchos::ParameterList mesh;
+  mesh.set("Gap Side Set", gap_side_set);
+  mesh.sublist("Box").set("Size", values(size)).set("Cells", ids(cells));
+  return mesh;
+}
+
+Teuchos::ParameterList exodus_mesh(const std::string &path, const int gap_side_set)
+{
+  Teuchos::ParameterList mesh;
+  mesh.set("Type", "Exodus");
+  mesh.set("Gap Side Set", gap_side_set);
+  mesh.sublist("Exodus").set("File", path);
+  return mesh;
+}
+
+Teuchos::ParameterList young(const double youngs_modulus, const double poissons_ratio)
+{
+  Teuchos::ParameterList material;
+  material.set("Young's Modulus", youngs_modulus);
+  material.set("Poisson's Ratio", poissons_ratio);
+  return material;
+}
+
+Teuchos::ParameterList lame(const double lame_lambda, const double shear_modulus)
+{
+  Teuchos::ParameterList material;
+  material.set("Lame Lambda", lame_lambda);
+  material.set("Shear Modulus", shear_modulus);
+  return material;
+}
+
+namespace
+{
+Teuchos::ParameterList condition(const std::string &type, const std::vector<int> &side_sets)
+{
+  Teuchos::ParameterList c;
+  c.set("Type", type);
+  c.set("Side Sets", ids(side_sets));
+  return c;
+}
+} // namespace
+
+Teuchos::ParameterList temperature(const std::vector<int> &side_sets,
+                                   const Teuchos::ParameterList &function)
+{
+  Teuchos::ParameterList c = condition("Temperature", side_sets);
+  c.set("Temperature", function);
+  return c;
+}
+
+Teuchos::ParameterList temperature(const std::vector<int> &side_sets, const double value)
+{
+  return temperature(side_sets, constant_function(value));
+}
+
+Teuchos::ParameterList displacement(const std::vector<int> &side_sets,
+                                    const std::vector<std::string> &components)
+{
+  Teuchos::ParameterList c = condition("Displacement", side_sets);
+  c.set("Components", Teuchos::Array<std::string>(components.begin(), components.end()));
+  return c;
+}
+
+Teuchos::ParameterList displacement(const std::vector<int> &side_sets,
+                                    const std::vector<std::string> &components, const double value)
+{
+  Teuchos::ParameterList c = displacement(side_sets, components);
+  c.set("Displacement", constant_function(value));
+  return c;
+}
+
+Teuchos::ParameterList normal_displacement(const std::vector<int> &side_sets)
+{
+  return condition("Normal Displacement", side_sets);
+}
+
+Teuchos::ParameterList contact_pair(const int primary_side_set, const int secondary_side_set)
+{
+  Teuchos::ParameterList pair;
+  pair.set("Primary Side Set", primary_side_set);
+  pair.set("Secondary Side Set", secondary_side_set);
+  return pair;
+}
+
+Teuchos::ParameterList newton_tolerances(const double absolute, const double relative)
+{
+  Teuchos::ParameterList solver;
+  solver.set("Absolute Tolerance", absolute);
+  solver.set("Relative Tolerance", relative);
+  return solver;
+}
+
+Teuchos::ParameterList &thermal_conditions(Teuchos::ParameterList &deck)
+{
+  return deck.sublist("Thermal").sublist("Boundary Conditions");
+}
+
+Teuchos::ParameterList &mechanical_conditions(Teuchos::ParameterList &deck)
+{
+  return deck.sublist("Mechanics").sublist("Boundary Conditions");
+}
+
+Teuchos::ParameterList &contact_pairs(Teuchos::ParameterList &deck)
+{
+  return deck.sublist("Mechanics").sublist("Contact").sublist("Pairs");
+}
+
 std::string input_error_message(const std::function<void()> &action)
 {
   try
