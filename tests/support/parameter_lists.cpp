@@ -16,22 +16,18 @@ Teuchos::Array<double> values(const std::vector<double> &v)
 
 Teuchos::ParameterList constant_function(const double value)
 {
-  Teuchos::ParameterList f;
-  f.set("Type", "Constant");
-  f.set("Value", value);
-  return f;
+  return Teuchos::ParameterList().set("Type", "Constant").set("Value", value);
 }
 
 Teuchos::ParameterList smooth_step(const double start_value, const double end_value,
                                    const double start_time, const double end_time)
 {
-  Teuchos::ParameterList f;
-  f.set("Type", "Smooth Step");
-  f.set("Start Time", start_time);
-  f.set("End Time", end_time);
-  f.set("Start Value", start_value);
-  f.set("End Value", end_value);
-  return f;
+  return Teuchos::ParameterList()
+      .set("Type", "Smooth Step")
+      .set("Start Time", start_time)
+      .set("End Time", end_time)
+      .set("Start Value", start_value)
+      .set("End Value", end_value);
 }
 
 Teuchos::ParameterList steady_deck(const std::string &physics, const Teuchos::ParameterList &mesh)
@@ -64,28 +60,23 @@ Teuchos::ParameterList exodus_mesh(const std::string &path, const int gap_side_s
 
 Teuchos::ParameterList young(const double youngs_modulus, const double poissons_ratio)
 {
-  Teuchos::ParameterList material;
-  material.set("Young's Modulus", youngs_modulus);
-  material.set("Poisson's Ratio", poissons_ratio);
-  return material;
+  return Teuchos::ParameterList()
+      .set("Young's Modulus", youngs_modulus)
+      .set("Poisson's Ratio", poissons_ratio);
 }
 
 Teuchos::ParameterList lame(const double lame_lambda, const double shear_modulus)
 {
-  Teuchos::ParameterList material;
-  material.set("Lame Lambda", lame_lambda);
-  material.set("Shear Modulus", shear_modulus);
-  return material;
+  return Teuchos::ParameterList()
+      .set("Lame Lambda", lame_lambda)
+      .set("Shear Modulus", shear_modulus);
 }
 
 namespace
 {
 Teuchos::ParameterList condition(const std::string &type, const std::vector<int> &side_sets)
 {
-  Teuchos::ParameterList c;
-  c.set("Type", type);
-  c.set("Side Sets", ids(side_sets));
-  return c;
+  return Teuchos::ParameterList().set("Type", type).set("Side Sets", ids(side_sets));
 }
 } // namespace
 
@@ -125,18 +116,16 @@ Teuchos::ParameterList normal_displacement(const std::vector<int> &side_sets)
 
 Teuchos::ParameterList contact_pair(const int primary_side_set, const int secondary_side_set)
 {
-  Teuchos::ParameterList pair;
-  pair.set("Primary Side Set", primary_side_set);
-  pair.set("Secondary Side Set", secondary_side_set);
-  return pair;
+  return Teuchos::ParameterList()
+      .set("Primary Side Set", primary_side_set)
+      .set("Secondary Side Set", secondary_side_set);
 }
 
 Teuchos::ParameterList newton_tolerances(const double absolute, const double relative)
 {
-  Teuchos::ParameterList solver;
-  solver.set("Absolute Tolerance", absolute);
-  solver.set("Relative Tolerance", relative);
-  return solver;
+  return Teuchos::ParameterList()
+      .set("Absolute Tolerance", absolute)
+      .set("Relative Tolerance", relative);
 }
 
 Teuchos::ParameterList &thermal_conditions(Teuchos::ParameterList &deck)
