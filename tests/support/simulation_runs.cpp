@@ -1,5 +1,6 @@
 #include "support/simulation_runs.hpp"
 
+#include "mesh/exodus_io.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "solvers/newton_solver.hpp"
 
@@ -30,9 +31,33 @@ std::unique_ptr<kiln::Simulation>
 make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
 {
   const auto input = Teuchos::getParametersFromXmlString(xml);
-  auto sim = std::make_unique<kiln::Simulation>(*input, "test.xml", comm);
+  return make_simulation(*input, comm);
+}
+
+std::unique_ptr<kiln::Simulation>
+make_simulation(const Teuchos::ParameterList &input,
+                const Teuchos::RCP<const Teuchos::Comm<int>> &comm)
+{
+  auto sim = std::make_unique<kiln::Simulation>(input, "test.xml", comm);
   sim->setup();
   return sim;
+}
+
+Vector initial_state(kiln::Simulation &sim)
+{
+  Vector x(sim.problem().solution_map());
+  sim.problem().initial_condition(0.0, x);
+  return x;
+}
+
+std::string write_mesh_file(const kiln::Mesh &mesh, const std::string &base,
+                            const Teuchos::Comm<int> &comm)
+{
+  const std::string path = base + ".mesh.exo";
+  if (comm.getRank() == 0)
+    kiln::write_exodus_mesh(mesh, path);
+  comm.barrier();
+  return path;
 }
 
 void set_solver_tolerances(Teuchos::ParameterList &input, const double absolute,

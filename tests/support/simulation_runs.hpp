@@ -1,7 +1,8 @@
 #pragma once
-/// Whole runs in a test: a Simulation from an input given as XML text or read from inputs/,
-/// solver tolerances tightened, the time loop driven from an initial state of the test's own,
-/// and the nodal temperatures gathered and integrated over the mesh.
+/// Whole runs in a test: a Simulation from an input given as a parameter list, as XML text or
+/// read from inputs/, on a mesh the test writes, solver tolerances tightened, the time loop driven
+/// from the deck's initial state or one of the test's own, and the nodal temperatures gathered
+/// and integrated over the mesh.
 #include "app/simulation.hpp"
 #include "physics/coupled_problem.hpp"
 #include "solvers/time_stepper.hpp"
@@ -31,6 +32,19 @@ std::string number(double value);
 /// input given as XML text.
 std::unique_ptr<kiln::Simulation>
 make_simulation(const std::string &xml, const Teuchos::RCP<const Teuchos::Comm<int>> &comm);
+/// The same from a Kiln input as a parameter list (parameter_lists.hpp builds them).
+std::unique_ptr<kiln::Simulation>
+make_simulation(const Teuchos::ParameterList &input,
+                const Teuchos::RCP<const Teuchos::Comm<int>> &comm);
+
+/// The state of a set-up Simulation at t = 0 by its problem's initial condition.
+Vector initial_state(kiln::Simulation &sim);
+
+/// Writes `mesh` to the Exodus file BASE.mesh.exo (BASE from results_files.hpp's
+/// temporary_base) on rank 0 and returns its path once it is written (collective);
+/// remove_results(BASE) removes it with the run's results.
+std::string write_mesh_file(const kiln::Mesh &mesh, const std::string &base,
+                            const Teuchos::Comm<int> &comm);
 
 /// Sets Solver/"Absolute Tolerance" and "Relative Tolerance" (Newton) and the "Convergence
 /// Tolerance" of its Block GMRES (the default Belos solver) of an input.

@@ -25,10 +25,10 @@
 #include "mesh/hex_geometry.hpp"
 #include "physics/coupled_problem.hpp"
 #include "support/parallel.hpp"
+#include "support/parameter_lists.hpp"
 #include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,82 +50,31 @@ constexpr double G = E / (2 * (1 + nu));
 constexpr double M = lambda + 2 * G;
 constexpr double beta = (3 * lambda + 2 * G) * alpha;
 
-std::string deck(const int n, const bool thermal)
+/// The bar on 2 x 2 x n cells on rollers, its bottom held: under its own weight (Elasticity) or
+/// heated from T_ref at the bottom to T_ref + g at the top (Thermo-Elasticity, `thermal`);
+/// Newton to 1e-14 absolute, 1e-12 relative; results in the temporary folder.
+Teuchos::ParameterList deck(const int n, const bool thermal)
 {
-  std::string s = R"xml(<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="PHYSICS"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{0.25, 0.25, 1}"/>
-      <Parameter name="Cells" type="Array(int)" value="{2, 2, NZ}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Young's Modulus" type="double" value="1"/>
-    <Parameter name="Poisson's Ratio" type="double" value="0.25"/>
-    <Parameter name="Thermal Expansion" type="double" value="0.001"/>
-    <Parameter name="Reference Temperature" type="double" value="300"/>
-  </ParameterList>
-  THERMAL
-  <ParameterList name="Mechanics">
-    <Parameter name="Body Force" type="Array(double)" value="{0, 0, BZ}"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="x rollers">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1, 2}"/>
-        <Parameter name="Components" type="Array(string)" value="{x}"/>
-      </ParameterList>
-      <ParameterList name="y rollers">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3, 4}"/>
-        <Parameter name="Components" type="Array(string)" value="{y}"/>
-      </ParameterList>
-      <ParameterList name="bottom">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{5}"/>
-        <Parameter name="Components" type="Array(string)" value="{z}"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Absolute Tolerance" type="double" value="1e-14"/>
-    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="File Base" type="string" value="BASE"/>
-  </ParameterList>
-</ParameterList>)xml";
-  const std::string thermal_block = R"xml(<ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="300"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="bottom">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{5}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="300"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="top">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{6}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="310"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>)xml";
-  kiln_test::replace(s, "PHYSICS", thermal ? "Thermo-Elasticity" : "Elasticity");
-  kiln_test::replace(s, "THERMAL", thermal ? thermal_block : "");
-  kiln_test::replace(s, "BZ", thermal ? "0" : kiln_test::number(b));
-  kiln_test::replace(s, "NZ", std::to_string(n));
+  using namespace kiln_test;
+  Teuchos::ParameterList input = steady_deck(thermal ? "Thermo-Elasticity" : "Elasticity",
+                                             box_mesh({0.25, 0.25, L}, {2, 2, n}));
+  input.set("Material", young(E, nu));
+  input.sublist("Material").set("Thermal Expansion", alpha).set("Reference Temperature", T_ref);
+  if (thermal)
+  {
+    input.sublist("Thermal").set("Initial Temperature", T_ref);
+    thermal_conditions(input).set("bottom", temperature({5}, T_ref));
+    thermal_conditions(input).set("top", temperature({6}, T_ref + g));
+  }
+  input.sublist("Mechanics").set("Body Force", values({0.0, 0.0, thermal ? 0.0 : b}));
+  mechanical_conditions(input).set("x rollers", displacement({1, 2}, {"x"}));
+  mechanical_conditions(input).set("y rollers", displacement({3, 4}, {"y"}));
+  mechanical_conditions(input).set("bottom", displacement({5}, {"z"}));
+  input.set("Solver", newton_tolerances(1e-14, 1e-12));
   const auto base = std::filesystem::temp_directory_path() /
                     ("kiln-elastic-convergence-" + std::to_string(n) + (thermal ? "-T" : ""));
-  kiln_test::replace(s, "BASE", base.string());
-  return s;
+  input.sublist("Output").set("File Base", base.string());
+  return input;
 }
 
 struct Exact
@@ -152,8 +101,7 @@ struct Errors
 Errors run(const int n, const bool thermal, const Exact &exact)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const auto input = Teuchos::getParametersFromXmlString(deck(n, thermal));
-  auto sim = std::make_unique<kiln::Simulation>(*input, "elastic-convergence.xml", comm);
+  auto sim = std::make_unique<kiln::Simulation>(deck(n, thermal), "elastic-convergence.xml", comm);
   sim->run(); // sets up and solves; the output to the temporary folder (File Base)
   kiln::CoupledProblem &problem = sim->problem();
   const kiln_test::Vector &x = sim->solution();

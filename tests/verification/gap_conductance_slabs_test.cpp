@@ -4,6 +4,7 @@
 // is linear in each slab, which Q1 represents exactly, so the computed jump at every gap
 // node pair matches the analytic one to the solver tolerance (1e-10 relative).
 // KILN_TEST_NP: 1 2
+#include "support/parameter_lists.hpp"
 #include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
@@ -11,52 +12,26 @@
 
 namespace
 {
-const std::string deck = R"xml(<ParameterList name="Kiln">
-  <ParameterList name="Mesh">
-    <Parameter name="Gap Side Set" type="int" value="10"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{0.04, 0.02, 0.01}"/>
-      <Parameter name="Cells" type="Array(int)" value="{6, 3, 2}"/>
-      <Parameter name="Phi" type="double" value="45"/>
-      <Parameter name="Theta" type="double" value="-30"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Gap Conductance" type="double" value="1.0e4"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="hot">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="310"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="cold">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{2}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="290"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Absolute Tolerance" type="double" value="1e-11"/>
-    <Parameter name="Relative Tolerance" type="double" value="1e-14"/>
-  </ParameterList>
-</ParameterList>)xml";
+/// The contact box's shape on 6 x 3 x 2 cells, split at side set 10 with h = 1e4 W/(m^2 K),
+/// 310 K on face 1 and 290 K on face 2; Newton to 1e-11 absolute, 1e-14 relative.
+Teuchos::ParameterList deck()
+{
+  Teuchos::ParameterList mesh = kiln_test::box_mesh({0.04, 0.02, 0.01}, {6, 3, 2}, 10);
+  mesh.sublist("Box").set("Phi", 45.0).set("Theta", -30.0);
+  Teuchos::ParameterList input = kiln_test::steady_deck("", mesh);
+  input.sublist("Thermal").set("Gap Conductance", 1.0e4);
+  kiln_test::thermal_conditions(input).set("hot", kiln_test::temperature({1}, 310.0));
+  kiln_test::thermal_conditions(input).set("cold", kiln_test::temperature({2}, 290.0));
+  input.set("Solver", kiln_test::newton_tolerances(1e-11, 1e-14));
+  return input;
+}
 } // namespace
 
 TEST(GapConductance, TwoSlabJumpMatchesAnalytic)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
-  const auto sim = kiln_test::make_simulation(deck, comm);
-  kiln::CoupledProblem &problem = sim->problem();
-  kiln_test::Vector x(problem.solution_map());
-  problem.initial_condition(0.0, x);
+  const auto sim = kiln_test::make_simulation(deck(), comm);
+  kiln_test::Vector x = kiln_test::initial_state(*sim);
   const auto stats = kiln_test::run_from(*sim, x, {1.0});
   ASSERT_EQ(stats.steps, 1);
 

@@ -15,14 +15,14 @@
 // doc/verification/report.py reads them, the other's prefixed by its name.
 // KILN_TEST_NP: 2
 #include "mesh/hex_geometry.hpp"
+#include "support/parameter_lists.hpp"
 #include "support/simulation_runs.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <iomanip>
-#include <sstream>
+#include <iostream>
 
 namespace
 {
@@ -32,62 +32,30 @@ constexpr double T0 = 300.0;
 constexpr double A = 10.0; // mode amplitude [K]
 constexpr double phi = 45.0, theta = -30.0;
 
-std::string deck(const int nx, const int ny, const std::string &method, const double dt,
-                 const std::string &capacity)
+/// The box on nx x ny x ny cells, its ends held at T0, k = rho = c = 1, from T0 by `method` in
+/// fixed steps dt (minimum dt/10), the capacity `capacity`; Newton to 1e-10 absolute, 1e-12
+/// relative.
+Teuchos::ParameterList deck(const int nx, const int ny, const std::string &method, const double dt,
+                            const std::string &capacity)
 {
-  std::string s = R"xml(<ParameterList name="Kiln">
-  <ParameterList name="Mesh">
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Box">
-      <Parameter name="Size" type="Array(double)" value="{1, 1, 1}"/>
-      <Parameter name="Cells" type="Array(int)" value="{NX, NY, NY}"/>
-      <Parameter name="Phi" type="double" value="45"/>
-      <Parameter name="Theta" type="double" value="-30"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Density" type="double" value="1"/>
-    <Parameter name="Specific Heat" type="double" value="1"/>
-    <ParameterList name="Conductivity">
-      <Parameter name="Value" type="double" value="1"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="300"/>
-    <Parameter name="Capacity" type="string" value="CAPACITY"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="ends">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{1, 2}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="300"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="METHOD"/>
-    <Parameter name="Initial Step" type="double" value="DT"/>
-    <Parameter name="Maximum Step" type="double" value="DT"/>
-    <Parameter name="Minimum Step" type="double" value="DTMIN"/>
-    <Parameter name="Growth Factor" type="double" value="1"/>
-    <Parameter name="Error Control" type="bool" value="false"/>
-  </ParameterList>
-  <ParameterList name="Solver">
-    <Parameter name="Absolute Tolerance" type="double" value="1e-10"/>
-    <Parameter name="Relative Tolerance" type="double" value="1e-12"/>
-  </ParameterList>
-</ParameterList>)xml";
-  std::ostringstream dt_text, dt_min_text;
-  dt_text << std::setprecision(17) << dt;
-  dt_min_text << std::setprecision(17) << dt / 10;
-  kiln_test::replace(s, "NX", std::to_string(nx));
-  kiln_test::replace(s, "NY", std::to_string(ny));
-  kiln_test::replace(s, "METHOD", method);
-  kiln_test::replace(s, "CAPACITY", capacity);
-  kiln_test::replace(s, "DTMIN", dt_min_text.str());
-  kiln_test::replace(s, "DT", dt_text.str());
-  return s;
+  using namespace kiln_test;
+  Teuchos::ParameterList input("Kiln");
+  input.set("Mesh", box_mesh({L, L, L}, {nx, ny, ny}));
+  input.sublist("Mesh").sublist("Box").set("Phi", phi).set("Theta", theta);
+  Teuchos::ParameterList &material = input.sublist("Material");
+  material.set("Density", 1.0).set("Specific Heat", 1.0);
+  material.sublist("Conductivity").set("Value", 1.0);
+  input.sublist("Thermal").set("Initial Temperature", T0).set("Capacity", capacity);
+  thermal_conditions(input).set("ends", temperature({1, 2}, T0));
+  input.sublist("Time Stepping")
+      .set("Method", method)
+      .set("Initial Step", dt)
+      .set("Maximum Step", dt)
+      .set("Minimum Step", dt / 10)
+      .set("Growth Factor", 1.0)
+      .set("Error Control", false);
+  input.set("Solver", newton_tolerances(1e-10, 1e-12));
+  return input;
 }
 
 /// x' = (A^T x)_0: the coordinate along the box's first axis.

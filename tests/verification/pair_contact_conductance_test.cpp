@@ -16,7 +16,7 @@
 // With the term off (h_p = 0, and the pair's "Conductance" 2000 W/(m^2 K) in its place) the
 // same figures: the contact term and a constant conductance of the same value agree.
 // KILN_TEST_NP: 1 2
-#include "mesh/exodus_io.hpp"
+#include "support/parameter_lists.hpp"
 #include "support/results_files.hpp"
 #include "support/simulation_runs.hpp"
 #include "support/two_body_mesh.hpp"
@@ -34,72 +34,22 @@ namespace
 constexpr double youngs = 2.0e11, push = 2.0e-5, k = 20.0, h_p = 1.0e-3;
 constexpr double T_bottom = 400.0, T_top = 300.0;
 
-const std::string deck = R"xml(<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Exodus"/>
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Exodus">
-      <Parameter name="File" type="string" value="@FILE@"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Young's Modulus" type="double" value="2e11"/>
-    <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-    <Parameter name="Thermal Expansion" type="double" value="0"/>
-    <Parameter name="Conductivity" type="double" value="20"/>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="bottom">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="400"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="top">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{4}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="300"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <Parameter name="Free Motions" type="string" value="Minimum Norm"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="bottom">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3}"/>
-        <Parameter name="Components" type="Array(string)" value="{z}"/>
-      </ParameterList>
-      <ParameterList name="top">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{4}"/>
-        <Parameter name="Components" type="Array(string)" value="{z}"/>
-        <ParameterList name="Displacement">
-          <Parameter name="Value" type="double" value="-2e-5"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Contact">
-      <ParameterList name="Pairs">
-        <ParameterList name="cut">
-          <Parameter name="Primary Side Set" type="int" value="1"/>
-          <Parameter name="Secondary Side Set" type="int" value="2"/>
-          <ParameterList name="Heat Transfer">
-            @HEAT@
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-</ParameterList>)xml";
+/// The two blocks' deck on the Exodus file `mesh_file`, the pair "cut" with the Heat Transfer
+/// list `heat`.
+Teuchos::ParameterList deck(const std::string &mesh_file, const Teuchos::ParameterList &heat)
+{
+  using namespace kiln_test;
+  Teuchos::ParameterList input = steady_deck("Thermo-Elasticity", exodus_mesh(mesh_file));
+  input.set("Material", young(youngs, 0.3));
+  input.sublist("Material").set("Thermal Expansion", 0.0).set("Conductivity", k);
+  thermal_conditions(input).set("bottom", temperature({3}, T_bottom));
+  thermal_conditions(input).set("top", temperature({4}, T_top));
+  input.sublist("Mechanics").set("Free Motions", "Minimum Norm");
+  mechanical_conditions(input).set("bottom", displacement({3}, {"z"}));
+  mechanical_conditions(input).set("top", displacement({4}, {"z"}, -push));
+  contact_pairs(input).set("cut", contact_pair(1, 2)).sublist("cut").set("Heat Transfer", heat);
+  return input;
+}
 
 /// The two blocks: body 1 (block 1, bottom side set 3, top 1), body 2 (block 2, bottom 2, top 4).
 kiln::Mesh blocks()
@@ -116,28 +66,21 @@ kiln::Mesh blocks()
   return mesh;
 }
 
-/// Runs the deck with the Heat Transfer entries `heat`; the largest relative error of the nodes'
+/// Runs the deck with the Heat Transfer list `heat`; the largest relative error of the nodes'
 /// temperatures, the heat flow and the normal force against the closed forms.
-double run(const std::string &label, const std::string &heat)
+double run(const std::string &label, const Teuchos::ParameterList &heat)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base = kiln_test::temporary_base("pair_contact_conductance", *comm);
-  const std::string file = base + "-mesh.exo";
-  if (comm->getRank() == 0)
-    kiln::write_exodus_mesh(blocks(), file);
-  comm->barrier();
-  std::string xml = deck;
-  kiln_test::replace(xml, "@FILE@", file);
-  kiln_test::replace(xml, "@HEAT@", heat);
+  const std::string file = kiln_test::write_mesh_file(blocks(), base, *comm);
   const double P = youngs * push / 2.0; // uniaxial stress over the two blocks' 2 m
   const double h = h_p * P;
   const double q = (T_bottom - T_top) / (2.0 / k + 1.0 / h);
   double worst = 0.0;
   {
-    const auto sim = kiln_test::make_simulation(xml, comm);
+    const auto sim = kiln_test::make_simulation(deck(file, heat), comm);
     kiln::CoupledProblem &problem = sim->problem();
-    kiln_test::Vector x(problem.solution_map());
-    problem.initial_condition(0.0, x);
+    kiln_test::Vector x = kiln_test::initial_state(*sim);
     kiln_test::run_from(*sim, x, {0.0});
     const std::vector<double> T = kiln_test::all_node_values(*sim, x);
     double jump_1 = 0.0, jump_2 = 0.0; // the mean temperatures of the two faces at z = 1
@@ -166,22 +109,20 @@ double run(const std::string &label, const std::string &heat)
                   label.c_str(), comm->getSize(), jump, q / h, flow, -q, force, P, worst);
   }
   kiln_test::remove_results(base, *comm);
-  if (comm->getRank() == 0)
-    std::remove(file.c_str());
   return worst;
 }
 } // namespace
 
 TEST(PairContactConductance, ClosedPairJumpIsFluxOverConductance)
 {
-  EXPECT_LT(run("contact conductance h_p P",
-                R"(<Parameter name="Gap Pressure Coefficient" type="double" value="1e-3"/>)"),
-            1e-9);
+  Teuchos::ParameterList heat;
+  heat.set("Gap Pressure Coefficient", h_p);
+  EXPECT_LT(run("contact conductance h_p P", heat), 1e-9);
 }
 
 TEST(PairContactConductance, SameAsAConstantConductanceOfTheSameValue)
 {
-  EXPECT_LT(run("constant conductance 2000",
-                R"(<Parameter name="Conductance" type="double" value="2000"/>)"),
-            1e-9);
+  Teuchos::ParameterList heat;
+  heat.set("Conductance", 2000.0);
+  EXPECT_LT(run("constant conductance 2000", heat), 1e-9);
 }

@@ -19,13 +19,12 @@
 // heat_flow_gap to 1e-12.
 // KILN_TEST_NP: 1 2
 #include "app/simulation.hpp"
-#include "mesh/exodus_io.hpp"
+#include "support/parameter_lists.hpp"
 #include "support/results_files.hpp"
 #include "support/simulation_runs.hpp"
 #include "support/two_body_mesh.hpp"
 
 #include <Teuchos_DefaultComm.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <exodusII.h>
 #include <gtest/gtest.h>
 
@@ -42,63 +41,20 @@ namespace
 const double r_a = 1.5, r_1 = 2.0, r_2 = 2.05, r_b = 2.5;
 const double Q_exact = 1976.198005, T1_exact = 571.574163, T2_exact = 319.608917;
 
-const std::string deck = R"xml(<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Exodus"/>
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Exodus">
-      <Parameter name="File" type="string" value="@FILE@"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Thermal Expansion" type="double" value="0"/>
-    <Parameter name="Conductivity" type="double" value="20"/>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="inner">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="600"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="outer">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{4}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="300"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="held">
-        <Parameter name="Type" type="string" value="Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3, 4}"/>
-        <Parameter name="Components" type="Array(string)" value="{x, y, z}"/>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Contact">
-      <ParameterList name="Pairs">
-        <ParameterList name="gap">
-          <Parameter name="Primary Side Set" type="int" value="2"/>
-          <Parameter name="Secondary Side Set" type="int" value="1"/>
-          <Parameter name="Search Distance" type="double" value="0.1"/>
-          <ParameterList name="Heat Transfer">
-            <Parameter name="Gas Conductivity" type="double" value="0.2"/>
-            <Parameter name="Jump Distance" type="double" value="1e-3"/>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-</ParameterList>)xml";
+/// The shells' deck on the Exodus file `mesh_file`.
+Teuchos::ParameterList deck(const std::string &mesh_file)
+{
+  using namespace kiln_test;
+  Teuchos::ParameterList input = steady_deck("Thermo-Elasticity", exodus_mesh(mesh_file));
+  input.sublist("Material").set("Thermal Expansion", 0.0).set("Conductivity", 20.0);
+  thermal_conditions(input).set("inner", temperature({3}, 600.0));
+  thermal_conditions(input).set("outer", temperature({4}, 300.0));
+  mechanical_conditions(input).set("held", displacement({3, 4}, {"x", "y", "z"}));
+  Teuchos::ParameterList &gap = contact_pairs(input).set("gap", contact_pair(2, 1)).sublist("gap");
+  gap.set("Search Distance", 0.1);
+  gap.sublist("Heat Transfer").set("Gas Conductivity", 0.2).set("Jump Distance", 1e-3);
+  return input;
+}
 
 /// The two shells, n_angle x 1 x n_radial cells in the inner one, 3/2 as many around the outer.
 kiln::Mesh shells(const int n_angle, const int n_radial)
@@ -129,18 +85,12 @@ Figures run(const int n_angle, const int n_radial)
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base =
       kiln_test::temporary_base("pair_gap_heat_shells_" + std::to_string(n_angle), *comm);
-  const std::string file = base + ".exo";
-  if (comm->getRank() == 0)
-    kiln::write_exodus_mesh(shells(n_angle, n_radial), file);
-  comm->barrier();
-  std::string xml = deck;
-  kiln_test::replace(xml, "@FILE@", file);
+  const std::string file = kiln_test::write_mesh_file(shells(n_angle, n_radial), base, *comm);
   Figures f;
   {
-    const auto sim = kiln_test::make_simulation(xml, comm);
+    const auto sim = kiln_test::make_simulation(deck(file), comm);
     kiln::CoupledProblem &problem = sim->problem();
-    kiln_test::Vector x(problem.solution_map());
-    problem.initial_condition(0.0, x);
+    kiln_test::Vector x = kiln_test::initial_state(*sim);
     const auto stats = kiln_test::run_from(*sim, x, {0.0});
     EXPECT_GE(stats.steps, 0);
     const std::vector<double> flow = problem.pair_heat_flow(x);
@@ -171,8 +121,6 @@ Figures run(const int n_angle, const int n_radial)
     f.T2 /= n2;
   }
   kiln_test::remove_results(base, *comm);
-  if (comm->getRank() == 0)
-    std::remove(file.c_str());
   return f;
 }
 } // namespace
@@ -237,13 +185,8 @@ TEST(PairGapHeat, ConcentricShellsGapHeatFluxOutput)
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base = kiln_test::temporary_base("pair_gap_heat_flux", *comm);
-  const std::string file = base + "-mesh.exo";
-  if (comm->getRank() == 0)
-    kiln::write_exodus_mesh(shells(16, 4), file);
-  comm->barrier();
-  std::string xml = deck;
-  kiln_test::replace(xml, "@FILE@", file);
-  Teuchos::ParameterList input = *Teuchos::getParametersFromXmlString(xml);
+  const std::string file = kiln_test::write_mesh_file(shells(16, 4), base, *comm);
+  Teuchos::ParameterList input = deck(file);
   input.sublist("Output").set("File Base", base).set("Format", "HDF5 and Exodus");
   {
     kiln::Simulation sim(input, "pair_gap_heat_flux.xml", comm);
@@ -291,6 +234,4 @@ TEST(PairGapHeat, ConcentricShellsGapHeatFluxOutput)
         << "the XDMF grid's attribute";
   }
   kiln_test::remove_results(base, *comm);
-  if (comm->getRank() == 0)
-    std::remove(file.c_str());
 }

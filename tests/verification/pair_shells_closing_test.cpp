@@ -32,7 +32,7 @@
 // forces MueLu on the two coarser meshes against Direct.
 // KILN_TEST_NP: 1 2
 #include "base/errors.hpp"
-#include "mesh/exodus_io.hpp"
+#include "support/parameter_lists.hpp"
 #include "support/results_files.hpp"
 #include "support/simulation_runs.hpp"
 #include "support/two_body_mesh.hpp"
@@ -56,75 +56,35 @@ const double slope = (1.0 + nu) * alpha * r_1;                     // [m/K]
 const double dT_closing = (r_2 - r_1) / slope;                     // [K]
 const std::vector<double> fractions = {0.0, 0.5, 0.97, 1.03, 1.5}; // of dT_closing
 
-const std::string deck = R"xml(<ParameterList name="Kiln">
-  <Parameter name="Physics" type="string" value="Thermo-Elasticity"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Exodus"/>
-    <Parameter name="Gap Side Set" type="int" value="0"/>
-    <ParameterList name="Exodus">
-      <Parameter name="File" type="string" value="@FILE@"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Material">
-    <Parameter name="Lame Lambda" type="double" value="1.2e11"/>
-    <Parameter name="Shear Modulus" type="double" value="8e10"/>
-    <Parameter name="Thermal Expansion" type="double" value="1e-4"/>
-    <Parameter name="Reference Temperature" type="double" value="300"/>
-    <Parameter name="Conductivity" type="double" value="20"/>
-  </ParameterList>
-  <ParameterList name="Thermal">
-    <Parameter name="Initial Temperature" type="double" value="300"/>
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="heated">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{3}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Type" type="string" value="Table"/>
-          <Parameter name="Times" type="Array(double)" value="{0, 1000}"/>
-          <Parameter name="Values" type="Array(double)" value="{300, 1300}"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="outer">
-        <Parameter name="Type" type="string" value="Temperature"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{4}"/>
-        <ParameterList name="Temperature">
-          <Parameter name="Value" type="double" value="300"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Mechanics">
-    <ParameterList name="Boundary Conditions">
-      <ParameterList name="symmetry">
-        <Parameter name="Type" type="string" value="Normal Displacement"/>
-        <Parameter name="Side Sets" type="Array(int)" value="{5, 6, 7}"/>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Contact">
-      <ParameterList name="Pairs">
-        <ParameterList name="gap">
-          <Parameter name="Primary Side Set" type="int" value="2"/>
-          <Parameter name="Secondary Side Set" type="int" value="1"/>
-          <Parameter name="Search Distance" type="double" value="0.1"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Time Stepping">
-    <Parameter name="Method" type="string" value="Steady"/>
-  </ParameterList>
-@SOLVER@</ParameterList>)xml";
-
-/// The Solver block that forces `preconditioner`, or none (Kiln's default); `parameters`
-/// (XML) go into it before its Linear Solver.
-std::string solver_block(const std::string &preconditioner, const std::string &parameters = "")
+/// The shells' deck on the Exodus file `mesh_file`, with `solver` as its Solver list (none if
+/// empty: Kiln's default).
+Teuchos::ParameterList deck(const std::string &mesh_file, const Teuchos::ParameterList &solver)
 {
-  if (preconditioner.empty())
-    return "";
-  return "  <ParameterList name=\"Solver\">\n" + parameters +
-         "    <ParameterList name=\"Linear Solver\">\n"
-         "      <Parameter name=\"Preconditioner Type\" type=\"string\" value=\"" +
-         preconditioner + "\"/>\n    </ParameterList>\n  </ParameterList>\n";
+  using namespace kiln_test;
+  Teuchos::ParameterList input = steady_deck("Thermo-Elasticity", exodus_mesh(mesh_file));
+  input.set("Material", lame(lambda, mu));
+  input.sublist("Material")
+      .set("Thermal Expansion", alpha)
+      .set("Reference Temperature", 300.0)
+      .set("Conductivity", 20.0);
+  input.sublist("Thermal").set("Initial Temperature", 300.0);
+  Teuchos::ParameterList table;
+  table.set("Type", "Table").set("Times", values({0, 1000})).set("Values", values({300, 1300}));
+  thermal_conditions(input).set("heated", temperature({3}, table));
+  thermal_conditions(input).set("outer", temperature({4}, 300.0));
+  mechanical_conditions(input).set("symmetry", normal_displacement({5, 6, 7}));
+  contact_pairs(input).set("gap", contact_pair(2, 1)).sublist("gap").set("Search Distance", 0.1);
+  if (solver.numParams() > 0)
+    input.set("Solver", solver);
+  return input;
+}
+
+/// The Solver list that forces `preconditioner`.
+Teuchos::ParameterList solver_block(const std::string &preconditioner)
+{
+  Teuchos::ParameterList solver;
+  solver.sublist("Linear Solver").set("Preconditioner Type", preconditioner);
+  return solver;
 }
 
 /// The radial displacement u(r) = A r + B / r of a plane-strain cylinder [a, b] under the
@@ -157,31 +117,25 @@ struct Step
 };
 
 /// The output times' states of the n_angle x n_radial shells, with `solver` as the Solver
-/// block (solver_block(); Kiln's default if empty).
-std::vector<Step> run(const int n_angle, const int n_radial, const std::string &solver = "")
+/// list (solver_block(); Kiln's default if empty).
+std::vector<Step> run(const int n_angle, const int n_radial,
+                      const Teuchos::ParameterList &solver = Teuchos::ParameterList())
 {
   const auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base =
       kiln_test::temporary_base("pair_shells_closing_" + std::to_string(n_angle), *comm);
-  const std::string file = base + ".exo";
   const kiln::Mesh mesh = kiln_test::concentric_shells({r_a, r_1, r_2, r_b}, {n_angle, n_radial},
                                                        {n_angle + n_angle / 2, n_radial});
-  if (comm->getRank() == 0)
-    kiln::write_exodus_mesh(mesh, file);
-  comm->barrier();
-  std::string xml = deck;
-  kiln_test::replace(xml, "@FILE@", file);
-  kiln_test::replace(xml, "@SOLVER@", solver);
+  const std::string file = kiln_test::write_mesh_file(mesh, base, *comm);
   std::vector<double> times;
   for (const double f : fractions)
     times.push_back(f * dT_closing);
   std::vector<Step> steps;
   std::exception_ptr failure;
   {
-    const auto sim = kiln_test::make_simulation(xml, comm);
+    const auto sim = kiln_test::make_simulation(deck(file, solver), comm);
     kiln::CoupledProblem &problem = sim->problem();
-    kiln_test::Vector x(problem.solution_map());
-    problem.initial_condition(0.0, x);
+    kiln_test::Vector x = kiln_test::initial_state(*sim);
     const auto output = [&](const double time, int, double, const kiln_test::Vector &state)
     {
       Step s;
@@ -217,8 +171,6 @@ std::vector<Step> run(const int n_angle, const int n_radial, const std::string &
     }
   }
   kiln_test::remove_results(base, *comm);
-  if (comm->getRank() == 0)
-    std::remove(file.c_str());
   if (failure)
     std::rethrow_exception(failure);
   return steps;
@@ -359,9 +311,8 @@ TEST(PairShellsClosing, MueLuGivesTheDirectStates)
 // going on to its 20 iterations (||F|| 1e4 -> 1e29 before 0095) and advising smaller steps.
 TEST(PairShellsClosing, LinearSolvesThatFailStopNewtonWithAMessage)
 {
-  const std::string solver =
-      solver_block("MueLu", "    <Parameter name=\"Near-Null Space\" type=\"bool\" "
-                            "value=\"false\"/>\n");
+  Teuchos::ParameterList solver = solver_block("MueLu");
+  solver.set("Near-Null Space", false);
   try
   {
     run(16, 4, solver);
