@@ -1,8 +1,12 @@
 #include "app/restart_plan.hpp"
 
+#include "app/checkpoint_schedule.hpp"
+#include "app/output_schedule.hpp"
 #include "base/errors.hpp"
 #include "io/exodus_results_replay.hpp"
 #include "io/results_replay.hpp"
+#include "physics/coupled_problem.hpp"
+#include "solvers/newton_solver.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -34,6 +38,47 @@ Checkpoint RestartPlan::read(const RunFingerprint &run, const Teuchos::RCP<const
   Checkpoint c = read_checkpoint(checkpoint_, run, map, *comm_, quadrature_state);
   output_steps_ = c.info.output_steps;
   return c;
+}
+
+TimeStepper::State RestartPlan::resume(const RunFingerprint &run, CoupledProblem &problem,
+                                       NewtonSolver &newton)
+{
+  Checkpoint c = read(run, problem.solution_map(), problem.quadrature_state());
+  problem.restore_pair_rows(c.info.pair_rows, checkpoint_);
+  const int active = problem.resume(c.state.time, *c.state.x);
+  int saved_active = 0;
+  for (const int a : c.info.active)
+    saved_active += a;
+  *out_ << "restart from " << checkpoint_ << ": t = " << c.state.time << " s after step "
+        << c.state.statistics.steps << " (written " << c.info.created << " by Kiln "
+        << c.info.kiln_version << " from " << c.info.input_path << ")";
+  // The checkpoint counts the split gaps' pairs (Mesh::gap_pairs); the rows of the contact
+  // pairs between bodies meshed apart (a secondary node each) are not in it.
+  int split_active = active, split_rows = problem.n_pairs(), pair_active = 0, pair_rows = 0;
+  if (problem.has_contact())
+    for (const PairFigures &pair : problem.summary(*c.state.x).pairs)
+    {
+      pair_active += pair.n_active;
+      pair_rows += pair.n_rows;
+    }
+  split_active -= pair_active;
+  split_rows -= pair_rows;
+  if (problem.has_contact() && split_rows + pair_rows > 0)
+  {
+    *out_ << "; ";
+    if (split_rows > 0)
+      *out_ << split_active << " of " << split_rows << " gap pairs"
+            << (pair_rows > 0 ? " and " : "");
+    if (pair_rows > 0)
+      *out_ << pair_active << " of " << pair_rows << " contact-pair nodes";
+    *out_ << " in contact";
+  }
+  *out_ << "\n";
+  if (split_active != saved_active)
+    *out_ << "warning: the checkpoint says " << saved_active
+          << " gap pairs were in contact; its state gives " << split_active << "\n";
+  newton.restore_preconditioner_origin(std::move(c.info.preconditioner_origin));
+  return c.state;
 }
 
 void RestartPlan::check_time_left(const double time, const double end_time,
@@ -120,6 +165,21 @@ void RestartPlan::check_replayed(const int replayed, const std::string &source) 
 bool RestartPlan::ahead(const double t, const double time) const
 {
   return fresh() ? t >= time : t > time * (1.0 + 1e-12) + 1e-12;
+}
+
+std::vector<double> RestartPlan::stop_times(const double time, const OutputSchedule &outputs,
+                                            const CheckpointSchedule &checkpoints) const
+{
+  std::vector<double> all = outputs.stop_times(time, fresh());
+  for (const double t : checkpoints.times())
+    if (ahead(t, time))
+      all.push_back(t);
+  std::sort(all.begin(), all.end());
+  std::vector<double> stops;
+  for (const double t : all)
+    if (stops.empty() || t > stops.back() * (1.0 + 1e-12) + 1e-12)
+      stops.push_back(t);
+  return stops;
 }
 
 RestartPlan::Kept RestartPlan::kept(const double time, const double history_end) const

@@ -8,16 +8,22 @@
 
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace kiln
 {
-/// The restart's decisions: the checkpoint it reads (its output steps), whether its time leaves
-/// anything to compute, which results it continues (BASE.h5; BASE.running.h5 of a run that was
-/// cut off, kept as BASE.interrupted.h5; BASE.exo with Exodus output only) and that they are
-/// its own run's, where the gap tables start, which checkpoint times are still ahead, and, at
-/// the end, whether the results and history of the run it continued stay whole (this run
-/// stopped before it passed them: its own go beside them, under BASE.restarted). A new run
-/// (no checkpoint) continues nothing.
+class CheckpointSchedule;
+class CoupledProblem;
+class NewtonSolver;
+class OutputSchedule;
+
+/// The restart's decisions: the checkpoint it reads (its output steps) and the state it resumes
+/// from, whether its time leaves anything to compute, which results it continues (BASE.h5;
+/// BASE.running.h5 of a run that was cut off, kept as BASE.interrupted.h5; BASE.exo with Exodus
+/// output only) and that they are its own run's, where the gap tables start, which checkpoint
+/// times are still ahead (the times the steps land on), and, at the end, whether the results
+/// and history of the run it continued stay whole (this run stopped before it passed them: its
+/// own go beside them, under BASE.restarted). A new run (no checkpoint) continues nothing.
 class RestartPlan
 {
 public:
@@ -36,6 +42,11 @@ public:
   /// quadrature points into `quadrature_state`); keeps its output steps. Collective.
   Checkpoint read(const RunFingerprint &run, const Teuchos::RCP<const Map> &map,
                   QuadratureState *quadrature_state);
+  /// The state of the checkpoint, read for the run `run` and checked against it, into
+  /// `problem` (its contact pairs' rows, which pairs are in contact) and `newton` (what its
+  /// kept preconditioner was built from); logs what was read. Collective.
+  TimeStepper::State resume(const RunFingerprint &run, CoupledProblem &problem,
+                            NewtonSolver &newton);
   /// The output steps written before the checkpoint (0 before read()).
   int output_steps() const { return output_steps_; }
 
@@ -61,6 +72,10 @@ public:
   /// Whether a checkpoint time `t` [s] is still to come for a run at `time`: for a new run
   /// one at `time` too, for a restart only a later one (the checkpoint's own is written).
   bool ahead(double t, double time) const;
+  /// The times the steps land on from `time` [s] on: the output times of `outputs` (and
+  /// `time` itself for a new run) and the checkpoint times of `checkpoints` still ahead.
+  std::vector<double> stop_times(double time, const OutputSchedule &outputs,
+                                 const CheckpointSchedule &checkpoints) const;
 
   /// What stays of the run continued when this run ends at `time` [s].
   struct Kept

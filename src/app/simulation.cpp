@@ -8,16 +8,12 @@
 #include "app/restart_plan.hpp"
 #include "app/results_lock.hpp"
 #include "app/run_observer.hpp"
+#include "app/run_results.hpp"
 #include "base/errors.hpp"
 #include "base/log.hpp"
 #include "base/parameters.hpp"
 #include "base/stop_request.hpp"
 #include "io/checkpoint.hpp"
-#include "io/exodus_results_replay.hpp"
-#include "io/exodus_results_writer.hpp"
-#include "io/field_output.hpp"
-#include "io/gap_csv_writer.hpp"
-#include "io/hdf5_xdmf_writer.hpp"
 #include "io/history_csv.hpp"
 #include "io/results_replay.hpp"
 #include "mesh/exodus_io.hpp"
@@ -31,8 +27,6 @@
 #include "solvers/time_stepper.hpp"
 
 #include <Teuchos_Array.hpp>
-#include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <kiln/version.hpp>
@@ -41,10 +35,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <limits>
 #include <map>
 #include <numeric>
-#include <optional>
 #include <sstream>
 
 namespace kiln
@@ -258,10 +250,10 @@ Simulation::Ending Simulation::run()
   check();
   const CheckpointSchedule checkpoints(params_.sublist("Checkpoint"), outputs_->file_base(),
                                        input_path_ + ": Kiln/Checkpoint");
-  make_output_folder(outputs_->file_base(),
-                     parameter_path(input_path_, "Kiln/Output", "File Base"));
-  make_output_folder(checkpoints.base(),
-                     parameter_path(input_path_, "Kiln/Checkpoint", "File Base"));
+  RunResults::make_output_folder(outputs_->file_base(),
+                                 parameter_path(input_path_, "Kiln/Output", "File Base"), *comm_);
+  RunResults::make_output_folder(
+      checkpoints.base(), parameter_path(input_path_, "Kiln/Checkpoint", "File Base"), *comm_);
   const ResultsLock lock(outputs_->lock_path(), *comm_);
   // Checkpoints under a base of their own get a lock of their own: two runs with different
   // results but one Checkpoint/File Base would overwrite each other's checkpoints.
@@ -275,27 +267,38 @@ Simulation::Ending Simulation::run()
       restart_, outputs_->file_base(), outputs_->writes_hdf5() ? ".h5" : ".exo",
       RunFingerprint::of(mesh_, layout_, params_).digest(), comm_, out_);
   const bool fresh = restart_plan_->fresh();
-  TimeStepper::State state = fresh ? start() : resume();
+  TimeStepper::State state =
+      fresh
+          ? start()
+          : restart_plan_->resume(RunFingerprint::of(mesh_, layout_, params_), *problem_, *newton_);
+  if (!fresh)
+    solution_ = state.x;
   restart_plan_->check_time_left(state.time, outputs_->end_time(), input_path_);
   // A continued run's results start with the earlier run's, read before the new files open.
   const std::string earlier_results = restart_plan_->earlier_results();
-  open_results(restart_plan_->first_gap_step(earlier_results));
+  results_ = std::make_unique<RunResults>(
+      RunResults::Context{mesh_, *dofs_, cell_rank_, *problem_, *outputs_, *restart_plan_,
+                          input_path_, input_xml_,
+                          RunFingerprint::of(mesh_, layout_, params_).digest(), comm_, out_},
+      restart_plan_->first_gap_step(earlier_results));
   const int output_steps =
-      earlier_results.empty() ? 0 : continue_results(earlier_results, state.time);
-  HistoryCsv history = open_history(state);
+      earlier_results.empty() ? 0 : results_->continue_results(earlier_results, state.time);
+  HistoryCsv history = results_->open_history(state);
   ProgressReport progress(out_, {params_.sublist("Time Stepping").get<std::string>("Method"),
                                  state.time, outputs_->end_time(), state.statistics.steps,
                                  log_is_terminal(), started_});
   RunObserver observer(
-      {*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints, history,
-       progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
+      {*problem_, mesh_, layout_, results_->field_output(), results_->writers(), *outputs_,
+       checkpoints, history, progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}}, comm_, out_},
       output_steps);
   observer.start(state, fresh);
   bool finished = false;
   try
   {
-    finished = stepper_->run(*solved_, *newton_, state, stop_times(state, checkpoints), observer);
+    finished =
+        stepper_->run(*solved_, *newton_, state,
+                      restart_plan_->stop_times(state.time, *outputs_, checkpoints), observer);
   }
   catch (const WriteError &e)
   {
@@ -322,8 +325,8 @@ Simulation::Ending Simulation::run()
     const std::string path = observer.checkpoint(state);
     std::ostringstream when;
     when << "stopped by an error at t = " << state.time << " s";
-    finish_results(when.str() + ": " + e.what(), state.time, history);
-    progress.summary(when.str() + " (below)", state, files_written(path), *comm_);
+    results_->finish(when.str() + ": " + e.what(), state.time, history);
+    progress.summary(when.str() + " (below)", state, results_->files_written(path), *comm_);
     *out_ << "stopped by the error below at t = " << state.time << " s; its last good state is in "
           << outputs_->results_files(false) << " and " << path << "\n";
     throw;
@@ -335,59 +338,18 @@ Simulation::Ending Simulation::run()
     std::ostringstream when;
     when << "stopped by " << signal_name(observer.stop_signal()) << " at t = " << state.time
          << " s";
-    finish_results(when.str() + "; continued by kiln --restart " + path, state.time, history);
-    progress.summary(when.str(), state, files_written(path), *comm_);
+    results_->finish(when.str() + "; continued by kiln --restart " + path, state.time, history);
+    progress.summary(when.str(), state, results_->files_written(path), *comm_);
     *out_ << when.str() << " after step " << state.statistics.steps << "; checkpoint " << path
           << "; continue with: kiln " << input_path_ << " --restart " << path << "\n";
     return Ending::stopped;
   }
   if (checkpoints.at_end())
     observer.checkpoint(state);
-  finish_results("complete", state.time, history);
-  progress.summary("complete", state, files_written(observer.last_checkpoint_path()), *comm_);
+  results_->finish("complete", state.time, history);
+  progress.summary("complete", state, results_->files_written(observer.last_checkpoint_path()),
+                   *comm_);
   return Ending::finished;
-}
-
-void Simulation::make_output_folder(const std::string &file_base, const std::string &where) const
-{
-  const std::filesystem::path base(file_base);
-  std::string problem;
-  if (comm_->getRank() == 0 && base.has_parent_path())
-  {
-    std::error_code error;
-    std::filesystem::create_directories(base.parent_path(), error);
-    if (!std::filesystem::is_directory(base.parent_path()))
-      problem = "= \"" + file_base + "\": cannot create its folder \"" +
-                base.parent_path().string() + "\" (" + error.message() +
-                "); give a base in a folder this user can create or write";
-  }
-  check_collectively(*comm_, problem.empty(), where, problem);
-}
-
-HistoryCsv Simulation::open_history(const TimeStepper::State &state)
-{
-  const MPI_Comm mpi_comm =
-      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-  std::vector<HistoryColumn> columns =
-      history_columns(mesh_.gap_side_sets, mesh_.contact_pair_names());
-  // A restart writes its history beside an earlier one it would shorten (finish_results()).
-  const std::string running = outputs_->file_base() + ".running.history.csv";
-  if (restart_plan_->fresh())
-  {
-    // A new run: the history of a restart cut off before (of the results it replaces) goes.
-    std::error_code ignored;
-    if (comm_->getRank() == 0)
-      std::filesystem::remove(running, ignored);
-    return HistoryCsv(mpi_comm, outputs_->history_path(), std::move(columns));
-  }
-  HistoryCsv history(mpi_comm, outputs_->history_path(), state.statistics.steps, std::move(columns),
-                     running);
-  if (!history.warning().empty())
-    *out_ << "warning: " << history.warning() << "\n";
-  for (const auto &row : history.kept_rows())
-    for (const auto &writer : writers_)
-      writer->write_history(row);
-  return history;
 }
 
 TimeStepper::State Simulation::start()
@@ -403,172 +365,6 @@ TimeStepper::State Simulation::start()
   TimeStepper::State state = stepper_->initial_state(0.0, *solution_);
   state.statistics.add_solve(equilibrium);
   return state;
-}
-
-std::vector<double> Simulation::stop_times(const TimeStepper::State &state,
-                                           const CheckpointSchedule &checkpoints) const
-{
-  std::vector<double> all = outputs_->stop_times(state.time, restart_plan_->fresh());
-  for (const double t : checkpoints.times())
-    if (restart_plan_->ahead(t, state.time))
-      all.push_back(t);
-  std::sort(all.begin(), all.end());
-  std::vector<double> stops;
-  for (const double t : all)
-    if (stops.empty() || t > stops.back() * (1.0 + 1e-12) + 1e-12)
-      stops.push_back(t);
-  return stops;
-}
-
-std::vector<std::pair<std::string, std::string>>
-Simulation::files_written(const std::string &checkpoint) const
-{
-  std::vector<std::pair<std::string, std::string>> files = {
-      {"results", results_aside_.empty() ? outputs_->results_files() : results_aside_},
-      {"history", history_file_.empty() ? outputs_->history_path() : history_file_}};
-  if (gap_tables_ != nullptr && gap_tables_->next_step() > first_gap_step_)
-  {
-    // A line per split gap: "gap tables" (the first), "gap tables (2)" ...; then one per
-    // contact pair: "pair tables (NAME)" (its tables follow the split gaps').
-    const int n = gap_tables_->next_step() - first_gap_step_;
-    const int n_split = static_cast<int>(mesh_.gap_side_sets.size());
-    for (int g = 0; g < gap_tables_->n_gaps(); ++g)
-      files.emplace_back(g >= n_split
-                             ? "pair tables (" + mesh_.contact_pairs[g - n_split].name + ")"
-                         : g == 0 ? std::string("gap tables")
-                                  : "gap tables (" + std::to_string(g + 1) + ")",
-                         n == 1 ? gap_tables_->path(first_gap_step_, g)
-                                : gap_tables_->path(first_gap_step_, g) + " to " +
-                                      gap_tables_->path(gap_tables_->next_step() - 1, g) + " (" +
-                                      std::to_string(n) + " files)");
-  }
-  if (!checkpoint.empty())
-    files.emplace_back("checkpoint", checkpoint);
-  return files;
-}
-
-TimeStepper::State Simulation::resume()
-{
-  Checkpoint c = restart_plan_->read(RunFingerprint::of(mesh_, layout_, params_),
-                                     problem_->solution_map(), problem_->quadrature_state());
-  problem_->restore_pair_rows(c.info.pair_rows, restart_);
-  const int active = problem_->resume(c.state.time, *c.state.x);
-  int saved_active = 0;
-  for (const int a : c.info.active)
-    saved_active += a;
-  *out_ << "restart from " << restart_ << ": t = " << c.state.time << " s after step "
-        << c.state.statistics.steps << " (written " << c.info.created << " by Kiln "
-        << c.info.kiln_version << " from " << c.info.input_path << ")";
-  // The checkpoint counts the split gaps' pairs (Mesh::gap_pairs); the rows of the contact
-  // pairs between bodies meshed apart (a secondary node each) are not in it.
-  int split_active = active, split_rows = problem_->n_pairs(), pair_active = 0, pair_rows = 0;
-  if (problem_->has_contact())
-    for (const PairFigures &pair : problem_->summary(*c.state.x).pairs)
-    {
-      pair_active += pair.n_active;
-      pair_rows += pair.n_rows;
-    }
-  split_active -= pair_active;
-  split_rows -= pair_rows;
-  if (problem_->has_contact() && split_rows + pair_rows > 0)
-  {
-    *out_ << "; ";
-    if (split_rows > 0)
-      *out_ << split_active << " of " << split_rows << " gap pairs"
-            << (pair_rows > 0 ? " and " : "");
-    if (pair_rows > 0)
-      *out_ << pair_active << " of " << pair_rows << " contact-pair nodes";
-    *out_ << " in contact";
-  }
-  *out_ << "\n";
-  if (split_active != saved_active)
-    *out_ << "warning: the checkpoint says " << saved_active
-          << " gap pairs were in contact; its state gives " << split_active << "\n";
-  newton_->restore_preconditioner_origin(std::move(c.info.preconditioner_origin));
-  solution_ = c.state.x;
-  return c.state;
-}
-
-int Simulation::continue_results(const std::string &source, const double time)
-{
-  std::vector<ResultsWriter *> writers;
-  for (const auto &w : writers_)
-    writers.push_back(w.get());
-  ReplayRows rows{mesh_.n_nodes(), mesh_.n_cells(), dofs_->owned_nodes(), dofs_->owned_cells(), {}};
-  for (const GapPair &pair : mesh_.gap_pairs)
-    rows.gap_pairs.emplace_back(pair.node_a, pair.node_b);
-  const int n = restart_plan_->exodus_results()
-                    ? replay_exodus_results(source, time, mesh_, rows, writers, *comm_)
-                    : replay_results(source, time, rows, writers, *comm_);
-  *out_ << "results: the " << n << " output steps up to t = " << time << " s of " << source
-        << " continue in " << outputs_->results_files(false) << "\n";
-  restart_plan_->check_replayed(n, source);
-  return n;
-}
-
-void Simulation::finish_results(const std::string &status, const double time, HistoryCsv &history)
-{
-  const RestartPlan::Kept kept = restart_plan_->kept(time, history.kept_end());
-  if (kept.aside)
-  {
-    // A restart that stopped before it passed the results (or the history) of the run it
-    // continued: those stay whole under BASE, and this run's go beside them.
-    const std::string aside = restart_plan_->aside_base();
-    results_aside_ = restart_plan_->aside(outputs_->results_files());
-    for (const auto &writer : writers_)
-      writer->set_final_base(aside);
-    const bool history_aside = history.path() != outputs_->history_path();
-    if (history_aside)
-      history.finish(aside + ".history.csv");
-    // The files kept: the results if they are the continued run's, the history if this run
-    // wrote beside it.
-    const std::string history_kept = history_aside ? outputs_->history_path() : "";
-    *out_ << "results: "
-          << (kept.results ? outputs_->results_files(false) +
-                                 (history_aside ? " and " + history_kept : std::string())
-                           : history_kept)
-          << " of the run continued (to t = " << kept.end
-          << " s) are kept whole, as this run stopped at t = " << time
-          << " s, before it passed them; this run's results are in " << results_aside_
-          << (history_aside ? ", its history in " + history.path() : std::string()) << "\n";
-  }
-  else
-    history.finish(outputs_->history_path());
-  history_file_ = history.path();
-  for (const auto &writer : writers_)
-    writer->finish(status);
-}
-
-void Simulation::open_results(const int first_gap_step)
-{
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Kiln: 4 output"));
-  const std::string base = outputs_->file_base();
-  const MPI_Comm mpi_comm =
-      *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
-  // Rank 0's clock for every rank: the attribute is written collectively.
-  std::string created = internal::utc_now();
-  std::vector<char> text(created.begin(), created.end());
-  int length = static_cast<int>(text.size());
-  Teuchos::broadcast(*comm_, 0, Teuchos::outArg(length));
-  text.resize(static_cast<std::size_t>(length));
-  Teuchos::broadcast(*comm_, 0, length, text.data());
-  const ResultsMetadata metadata{version_string, std::string(text.begin(), text.end()), input_path_,
-                                 input_xml_, RunFingerprint::of(mesh_, layout_, params_).digest()};
-  if (outputs_->writes_hdf5())
-    writers_.push_back(std::make_unique<Hdf5XdmfWriter>(
-        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));
-  if (outputs_->writes_exodus())
-    writers_.push_back(std::make_unique<ExodusResultsWriter>(
-        mpi_comm, base, mesh_, dofs_->owned_nodes(), dofs_->owned_cells(), cell_rank_, metadata));
-  if (!mesh_.gap_pairs.empty() || !mesh_.contact_pairs.empty())
-  {
-    auto gap =
-        std::make_unique<GapCsvWriter>(mpi_comm, base, mesh_, dofs_->owned_nodes(), first_gap_step);
-    gap_tables_ = gap.get();
-    first_gap_step_ = first_gap_step;
-    writers_.push_back(std::move(gap));
-  }
-  field_output_ = std::make_unique<FieldOutput>(*problem_, mesh_, *dofs_);
 }
 
 NewtonSolver::Result Simulation::equilibrate()

@@ -20,13 +20,9 @@
 
 namespace kiln
 {
-class CheckpointSchedule;
-class FieldOutput;
-class GapCsvWriter;
-class HistoryCsv;
 class OutputSchedule;
-class ResultsWriter;
 class RestartPlan;
+class RunResults;
 class NewtonSolver;
 class CoupledProblem;
 
@@ -81,32 +77,8 @@ public:
 
 private:
   void print_header() const;
-  /// Rank 0 creates the folder of `file_base` (the results, the checkpoints), or every rank
-  /// throws an InputError naming `where` (collective).
-  void make_output_folder(const std::string &file_base, const std::string &where) const;
-  /// BASE.history.csv, new or (a restart) continued; the rows kept go to every results writer.
-  HistoryCsv open_history(const TimeStepper::State &state);
   /// The state at t = 0: the initial condition, in equilibrium with a displacement.
   TimeStepper::State start();
-  /// The state of the checkpoint of set_restart(), checked against this run; the output
-  /// steps written before it.
-  TimeStepper::State resume();
-  /// The times the steps land on from `state` on: outputs and checkpoints.
-  std::vector<double> stop_times(const TimeStepper::State &state,
-                                 const CheckpointSchedule &checkpoints) const;
-  /// The "key: value" lines of the files written, for the summary.
-  std::vector<std::pair<std::string, std::string>>
-  files_written(const std::string &checkpoint) const;
-  /// The earlier run's output steps in `source` up to `time` into this run's results;
-  /// returns their number.
-  int continue_results(const std::string &source, double time);
-  /// Gives the results files and the `history` their final names, recording `status`. The
-  /// earlier run's results and history are kept if this run, at `time` [s], has not passed
-  /// them both (the new ones then get the base BASE.restarted: RestartPlan::kept).
-  void finish_results(const std::string &status, double time, HistoryCsv &history);
-  /// The results writers of Output/"Format", the gap tables (their first output step
-  /// `first_gap_step`) and the field output.
-  void open_results(int first_gap_step);
   /// Solves for the displacement at t = 0 with the temperature held at its initial value.
   NewtonSolver::Result equilibrate();
 
@@ -119,8 +91,6 @@ private:
   std::string restart_; ///< the checkpoint to continue from, or ""
   /// What run() does with the checkpoint and the files of the run it continues.
   std::unique_ptr<RestartPlan> restart_plan_;
-  std::string results_aside_; ///< this run's results files, if not under BASE
-  std::string history_file_;  ///< this run's history as finished, or "" before
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::FancyOStream> out_;
   Mesh mesh_;
@@ -133,10 +103,9 @@ private:
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<TimeStepper> stepper_;
   std::unique_ptr<OutputSchedule> outputs_;
-  std::vector<std::unique_ptr<ResultsWriter>> writers_;
-  GapCsvWriter *gap_tables_ = nullptr; ///< one of writers_, if the mesh has a gap
-  int first_gap_step_ = 0;             ///< the output step of its first table
-  std::unique_ptr<FieldOutput> field_output_;
+  /// The results files of run(); they close with the Simulation, after run()'s lock is
+  /// released.
+  std::unique_ptr<RunResults> results_;
   Teuchos::RCP<NonlinearProblem::Vector> solution_;
 };
 } // namespace kiln

@@ -3,10 +3,14 @@
 // continues the results of its own run (BASE.h5, or BASE.running.h5 of a run cut off, moved to
 // BASE.interrupted.h5) and keeps them whole until it passes them (its own files then under
 // BASE.restarted), warns when they are missing, and refuses another run's results or results
-// without a run fingerprint, naming the file and the checkpoint.
+// without a run fingerprint, naming the file and the checkpoint. The steps of a new run land on
+// its start, the output times and every checkpoint time; a restart's on the later ones alone.
 // KILN_TEST_NP: 1 2
 #include "app/restart_plan.hpp"
 
+#include "app/checkpoint_schedule.hpp"
+#include "app/output_schedule.hpp"
+#include "base/parameters.hpp"
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/metis_partitioner.hpp"
 #include "support/parameter_lists.hpp"
@@ -22,6 +26,8 @@
 #include <sstream>
 
 using kiln_test::input_error_message;
+using kiln_test::values;
+using testing::ElementsAre;
 using testing::HasSubstr;
 
 namespace
@@ -207,4 +213,28 @@ TEST(RestartPlan, ResultsOfAnotherRunOrOfNoneAreRefused)
     kiln::RestartPlan plan = f.plan("c.h5");
     EXPECT_THAT(input_error_message([&] { plan.earlier_results(); }), HasSubstr(f.base + message));
   }
+}
+
+TEST(RestartPlan, StopTimesJoinTheOutputsAndTheCheckpointsAhead)
+{
+  Fixture f;
+  Teuchos::ParameterList output("Output");
+  output.set("Times", values({10.0, 20.0}));
+  output.set("File Base", f.base);
+  const kiln::OutputSchedule outputs(
+      kiln::validated(output, kiln::OutputSchedule::valid_parameters(), "deck.xml", "Kiln/Output"),
+      "deck.xml", *f.comm);
+  Teuchos::ParameterList checkpoint("Checkpoint");
+  // 10 s once more, a rounding off: one stop, not two.
+  checkpoint.set("Times", values({0.0, 5.0, 10.0 * (1.0 + 1e-14), 15.0}));
+  const kiln::CheckpointSchedule checkpoints(
+      kiln::validated(checkpoint, kiln::CheckpointSchedule::valid_parameters(), "deck.xml",
+                      "Kiln/Checkpoint"),
+      f.base, "deck.xml: Kiln/Checkpoint");
+  EXPECT_THAT(f.plan("").stop_times(0.0, outputs, checkpoints),
+              ElementsAre(0.0, 5.0, 10.0, 15.0, 20.0))
+      << "a new run stops at its start, every output time and every checkpoint time";
+  EXPECT_THAT(f.plan(f.base + ".checkpoint.h5").stop_times(10.0, outputs, checkpoints),
+              ElementsAre(15.0, 20.0))
+      << "a restart at 10 s: its checkpoint's own time is written";
 }
