@@ -289,7 +289,8 @@ Simulation::Ending Simulation::run()
   RunObserver observer(
       {*problem_, mesh_, layout_, *field_output_, writers_, *outputs_, checkpoints, history,
        progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
-       CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}}, comm_, out_},
+       CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}, {}}, comm_,
+       out_},
       output_steps);
   observer.start(state, fresh);
   bool finished = false;
@@ -452,6 +453,7 @@ TimeStepper::State Simulation::resume()
   Checkpoint c = restart_plan_->read(RunFingerprint::of(mesh_, layout_, params_),
                                      problem_->solution_map(), problem_->quadrature_state());
   problem_->restore_pair_rows(c.info.pair_rows, restart_);
+  problem_->restore_pair_heat(c.info.pair_heat_u, restart_);
   const int active = problem_->resume(c.state.time, *c.state.x);
   int saved_active = 0;
   for (const int a : c.info.active)
