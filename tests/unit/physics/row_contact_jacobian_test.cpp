@@ -174,7 +174,7 @@ struct TwoBodies
   kiln::Mesh mesh;
   std::vector<kiln::ContactRow> rows;
   std::vector<int> cell_rank;
-  std::shared_ptr<const kiln::PairGapHeat> heat;
+  std::shared_ptr<kiln::PairGapHeat> heat;
   kiln::DofManager dofs;
   kiln::Material material = TableMaterial::make();
 };
