@@ -157,11 +157,12 @@ void PairGapHeat::rebuild(const std::vector<Point> &u, const double time, const 
   set_ = std::move(set);
 }
 
-std::vector<std::pair<int, std::vector<int>>> PairGapHeat::margin_blocks() const
+void PairGapHeat::visit_margin_blocks(
+    const std::function<void(int owning_cell, int n_secondary, std::vector<int> nodes)> &visit)
+    const
 {
-  std::vector<std::pair<int, std::vector<int>>> blocks;
   if (margin_faces_.empty())
-    return blocks;
+    return;
   const ContactSurface primary(mesh_, primary_side_set_, where_);
   const ContactSurface secondary(mesh_, secondary_side_set_, where_);
   std::array<int, 2> mesh_cells{};
@@ -170,30 +171,32 @@ std::vector<std::pair<int, std::vector<int>>> PairGapHeat::margin_blocks() const
     for (const int m : margin_faces_[static_cast<std::size_t>(s)])
     {
       std::vector<int> nodes = block_nodes(secondary, primary, s, m, mesh_cells, locals);
-      blocks.emplace_back(mesh_cells[0], std::move(nodes));
+      visit(mesh_cells[0], secondary.face_nodes(s).size(), std::move(nodes));
     }
+}
+
+std::vector<std::pair<int, std::vector<int>>> PairGapHeat::margin_blocks() const
+{
+  std::vector<std::pair<int, std::vector<int>>> blocks;
+  visit_margin_blocks([&](const int owning_cell, int, std::vector<int> nodes)
+                      { blocks.emplace_back(owning_cell, std::move(nodes)); });
   return blocks;
 }
 
 std::vector<std::pair<int, int>> PairGapHeat::links() const
 {
   std::vector<std::pair<int, int>> links;
-  if (margin_faces_.empty())
-    return links;
-  const ContactSurface primary(mesh_, primary_side_set_, where_);
-  const ContactSurface secondary(mesh_, secondary_side_set_, where_);
-  std::array<int, 2> mesh_cells{};
-  std::array<std::vector<int>, 2> locals;
-  for (int s = 0; s < secondary.n_faces(); ++s)
-    for (const int m : margin_faces_[static_cast<std::size_t>(s)])
-    {
-      // The secondary face's nodes come first.
-      const std::vector<int> nodes = block_nodes(secondary, primary, s, m, mesh_cells, locals);
-      const auto ns = static_cast<std::size_t>(secondary.face_nodes(s).size());
-      for (std::size_t i = 0; i < ns; ++i)
-        for (std::size_t k = ns; k < nodes.size(); ++k)
-          links.emplace_back(nodes[i], nodes[k]);
-    }
+  visit_margin_blocks(
+      [&](int, const int n_secondary, const std::vector<int> &nodes)
+      {
+        // The secondary face's nodes come first.
+        const auto ns = static_cast<std::size_t>(n_secondary);
+        for (std::size_t i = 0; i < ns; ++i)
+          for (std::size_t k = ns; k < nodes.size(); ++k)
+            links.emplace_back(nodes[i], nodes[k]);
+      });
+  std::sort(links.begin(), links.end());
+  links.erase(std::unique(links.begin(), links.end()), links.end());
   return links;
 }
 

@@ -116,6 +116,10 @@ private:
                                int s, int m, std::array<int, 2> &mesh_cells,
                                std::array<std::vector<int>, 2> &locals) const;
 
+  /// Calls `visit` with each block of margin_blocks(): its owning cell, the count of its
+  /// secondary face's nodes (first among its nodes) and its nodes.
+  void visit_margin_blocks(const std::function<void(int owning_cell, int n_secondary,
+                                                    std::vector<int> nodes)> &visit) const;
   /// The local nodes' T [K], u [m] and x = X + u [m] of cell k.
   void cell_state(const NodalFields &fields, const FieldSlots &slots, std::size_t k,
                   std::vector<double> &T, std::vector<Point> &u, std::vector<Point> &x) const;
