@@ -35,12 +35,13 @@ q = (T_2 - T_1) / (L/k + 1/h) = 1.11e5 W/m^2 across the gap (L = 4 cm), the heat
 q x 16 cm^2: checked at every output time (every secondary node's gap_heat_flux, the
 history's heat_flow_slide) to 1e-9, with the heat cells rebuilt at each search (the searches
 at 2, 4, 6, 8, 10 s as above); np 2 = np 1; the restart after two searches bit for bit (its
-checkpoint keeps the surfaces' u of the last search: contact/pair_heat_u). Body 1 uniform, the
-cells of set-up would give the same flux: held at its far end only, the heat entering body 1's
-contact face follows body 2 (its centre moves by 5 to 15 mm by 10 s; 0 with the cells of
-set-up). Beyond the margin
-the same exit 2 and message, the checkpoint of 3 s with the u of the search at 2 s. (The split
-gap case is the mechanics' alone.)
+checkpoint keeps the surfaces' u of the last search: contact/pair_heat_u); a checkpoint
+without it (of an older Kiln) restarts bit for bit from 1 s (before any search) and is refused
+(exit 1, the message) from 5 s (after two). Body 1 uniform, the cells of set-up would give the
+same flux: held at its far end only, the heat entering body 1's contact face follows body 2
+(its centre moves by 5 to 15 mm by 10 s; 0 with the cells of set-up). Beyond the margin the
+same exit 2 and message, the checkpoint of 3 s with the u of the search at 2 s. (The split gap
+case is the mechanics' alone.)
 usage: sliding_patch.py KILN WORKDIR NP MPIEXEC [heat]"""
 import csv
 import math
@@ -252,6 +253,37 @@ check(diff.returncode == 0, "the restart's results = the run's, bit for bit "
       f"(kiln-diff --abs 0 --rel 0: {diff.stdout.strip()[-300:]})")
 check(history(work / (base + ".history.csv")) == history(work / "slide.history.csv"),
       "the restart's history = the run's (apart from the wall time)")
+
+if HEAT:
+    # A checkpoint of a Kiln before the heat cells were rebuilt (no contact/pair_heat_u): at 1 s,
+    # before any search, it restarts with the set-up's cells, the same results bit for bit; at
+    # 5 s, after two searches, it is refused (exit 1) naming the pair and what to do.
+    def older(base, times):
+        kd.run_kiln(kiln, kd.write_deck(str(work / (base + "-part1")),
+                                        deck(base, times, checkpoint={"At End": True})),
+                    n_ranks, mpiexec, cwd=work, expect=0)
+        with h5py.File(work / (base + ".checkpoint.h5"), "r+") as h5:
+            del h5["contact/pair_heat_u"]
+            del h5["contact"].attrs["n_pair_heat_u"]
+        return kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11))), n_ranks,
+                           mpiexec, args=["--restart", base + ".checkpoint.h5"], cwd=work,
+                           expect=None)
+    run = older("older-1", range(2))
+    check(run.returncode == 0, f"older checkpoint at 1 s: restarted (exit {run.returncode})")
+    diff = subprocess.run([sys.executable, str(kiln_diff), "--abs", "0", "--rel", "0",
+                           str(work / "older-1.h5"), str(work / "slide.h5")],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    check(diff.returncode == 0, "older checkpoint at 1 s: the run's results bit for bit "
+          f"({diff.stdout.strip()[-200:]})")
+    run = older("older-5", range(6))
+    errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+    message = errors[0] if errors else ""
+    print(message)
+    check(run.returncode == 1, f"older checkpoint at 5 s: refused (exit {run.returncode})")
+    for part in ["has no heat cells of the contact pairs (contact/pair_heat_u)",
+                 'pair "slide", which carries heat across its gap, was searched again',
+                 "restart from a checkpoint of this Kiln, or run from the start"]:
+        check(part in message, f"older checkpoint at 5 s: the message says {part!r}")
 
 if HEAT:
     # The cells follow the slide: body 1 held at its far end only, the heat enters its contact
