@@ -46,19 +46,17 @@ std::vector<PairingRows> setup_contact_pairs(Mesh &mesh, const Teuchos::Paramete
       if (pair.heat_transfer.isParameter("Gap Pressure Coefficient") &&
           pair.heat_transfer.get<double>("Gap Pressure Coefficient") > 0.0)
         materials.emplace(params, mesh.block_ids(), input_path);
-      auto heat = std::make_shared<const PairGapHeat>(
+      auto heat = std::make_shared<PairGapHeat>(
           mesh, pair.primary_side_set, pair.secondary_side_set, pairing.search_distance(),
-          pair.heat_transfer, pair.where + "/Heat Transfer",
+          pair.options.sliding_distance, pair.heat_transfer, pair.where + "/Heat Transfer",
           materials ? &materials->uniform_material() : nullptr, materials ? &*materials : nullptr);
       if (heat->active())
         pairings.back().heat = std::move(heat);
     }
-    // The search redone during a run, within the margins; not for a pair whose heat cells
-    // are fixed at set-up (its rows are fixed too, their slip checked against the limit).
-    if (pairings.back().heat == nullptr)
-      pairings.back().research =
-          std::make_shared<const PairResearch>(mesh, pair.primary_side_set, pair.secondary_side_set,
-                                               pair.options, pair.where, name, pairing.margins());
+    // The search redone during a run, within the margins (the heat's cells with the rows).
+    pairings.back().research =
+        std::make_shared<const PairResearch>(mesh, pair.primary_side_set, pair.secondary_side_set,
+                                             pair.options, pair.where, name, pairing.margins());
   }
   return pairings;
 }

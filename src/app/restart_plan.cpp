@@ -45,6 +45,7 @@ TimeStepper::State RestartPlan::resume(const RunFingerprint &run, CoupledProblem
 {
   Checkpoint c = read(run, problem.solution_map(), problem.quadrature_state());
   problem.restore_pair_rows(c.info.pair_rows, checkpoint_);
+  problem.restore_pair_heat(c.info.pair_heat_u, checkpoint_);
   const int active = problem.resume(c.state.time, *c.state.x);
   int saved_active = 0;
   for (const int a : c.info.active)

@@ -150,6 +150,7 @@ std::string RunObserver::checkpoint(const TimeStepper::State &state)
     info.traction.push_back(contact.pair_traction[p]);
   }
   info.pair_rows = c_.problem.pair_rows_state();
+  info.pair_heat_u = c_.problem.pair_heat_state();
   write_checkpoint(path, state, info, c_.fingerprint, *c_.comm, c_.problem.quadrature_state());
   // BASE.h5 names the latest: a hard link (a copy where links are not possible), replaced
   // in one rename.

@@ -290,7 +290,8 @@ Simulation::Ending Simulation::run()
   RunObserver observer(
       {*problem_, mesh_, layout_, results_->field_output(), results_->writers(), *outputs_,
        checkpoints, history, progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
-       CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}}, comm_, out_},
+       CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}, {}}, comm_,
+       out_},
       output_steps);
   observer.start(state, fresh);
   bool finished = false;

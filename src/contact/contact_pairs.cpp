@@ -35,14 +35,14 @@ Teuchos::ParameterList contact_pair_parameters()
         "when the search is redone: after an accepted step where a secondary node has slid "
         "relative to its twin point on the primary surface by more than this fraction of the "
         "size of its faces (their smallest diameter) since the last search, the pair's rows "
-        "(partners, weights, areas) are rebuilt in the current configuration; a pair with a "
-        "Heat Transfer term keeps its rows of set-up and a run that slides further ends with an "
-        "error (exit 2) (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
+        "(partners, weights, areas), and the cells of its Heat Transfer term, are rebuilt in "
+        "the current configuration (doc/contact.md, \"Small sliding\"); in (0, 1] [-]",
         double_range_validator(0.0, 1.0));
   p.set("Sliding Distance", defaults.sliding_distance,
-        "the small-sliding limit: how far the pair may slide in all. The rows redone during a "
-        "run may only take partners among the primary nodes linked at set-up: those of the "
-        "primary faces within \"Search Distance\" plus this of each secondary node's faces; a "
+        "the small-sliding limit: how far the pair may slide in all. The rows (and heat cells) "
+        "redone during a run may only take partners among the primary nodes linked at set-up: "
+        "those of the primary faces within \"Search Distance\" plus this of each secondary "
+        "node's faces; a "
         "run that slides further ends with an error (exit 2) naming the pair and the node, its "
         "results up to the last accepted step kept. 0: the faces the search finds (about a "
         "ring of faces around the overlap). A larger distance costs a larger matrix graph [m]",

@@ -21,7 +21,7 @@ struct ContactRow
   std::vector<int> partners;   ///< the primary mesh nodes k (the split gap: node a)
   std::vector<double> weights; ///< w_jk, as many as partners, summing to 1 [-]
   /// The slip of a mortar pairing's row since its last search beyond which it is searched
-  /// again (PairResearch; or, with rows fixed at set-up, the run ends: check_small_sliding):
+  /// again (PairResearch; with rows fixed, e.g. a test's pairing, not searched):
   /// `Search Update Fraction` times `face_size`, the smallest diameter of j's secondary faces
   /// [m]; 0: not checked (a split gap, whose sides share their nodes' positions).
   double slip_limit = 0;

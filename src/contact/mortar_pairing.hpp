@@ -16,7 +16,7 @@
 /// In the reference configuration X at set-up, and in X + u when the search is redone during a
 /// run (PairResearch, doc/contact.md "Small sliding"): each row's slip_limit is
 /// `search_update_fraction` times the smallest diameter of its node's secondary faces, checked
-/// after every accepted step (check_small_sliding). The mesh is replicated, so every rank computes
+/// after every accepted step (slid_beyond_limit). The mesh is replicated, so every rank computes
 /// the rows of the whole secondary surface, in the same order (deterministic: the same rows on
 /// every rank and for every number of ranks). When the mesh is distributed, a rank will integrate
 /// the secondary faces of its owned cells and sum D, M and g~ of a node whose faces lie on two

@@ -23,11 +23,12 @@ struct PairingRows
   std::vector<ContactRow> rows;
   Teuchos::ParameterList parameters;
   /// The heat across the pair's gap (physics/heat/pair_gap_heat.hpp), null without a term
-  /// on; the DofManager must have been given its links() too.
-  std::shared_ptr<const PairGapHeat> heat;
-  /// The search redone during a run (contact/pair_research.hpp), null for rows fixed at
-  /// set-up (a pair with a heat term: their slip is checked against the limit instead); the
-  /// DofManager must have been given its links() (the margins) instead of partner_links(rows).
+  /// on; the DofManager must have been given its links() too. Its cells are rebuilt at each
+  /// search of the pair (PairGapHeat::rebuild).
+  std::shared_ptr<PairGapHeat> heat;
+  /// The search redone during a run (contact/pair_research.hpp); the DofManager must have
+  /// been given its links() (the margins) instead of partner_links(rows). Null: rows fixed at
+  /// set-up (a test's pairing).
   std::shared_ptr<const PairResearch> research;
 };
 } // namespace kiln

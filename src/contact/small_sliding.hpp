@@ -2,14 +2,12 @@
 /// The slip of a mortar pairing's rows since their last search (issue 30; doc/contact.md,
 /// "Small sliding"): the rows stay right only while each secondary node j stays near its twin
 /// point on the primary surface; beyond `Search Update Fraction` of a face the search is redone
-/// (PairResearch), or, for a pair whose rows are not searched again (one with a Heat Transfer
-/// term), the run ends.
+/// (PairResearch, and the pair's heat cells with it: PairGapHeat::rebuild).
 #include "contact/contact_interface.hpp"
 
 #include <Teuchos_Comm.hpp>
 
 #include <functional>
-#include <string>
 
 namespace kiln
 {
@@ -22,12 +20,4 @@ double row_slip(const ContactRow &row, const std::function<Point(int node)> &u);
 /// Collective.
 bool slid_beyond_limit(const ContactInterface &interface, const std::function<Point(int node)> &u,
                        const Teuchos::Comm<int> &comm);
-
-/// Throws the same RunError on every rank if a row of `interface` (those with a slip_limit,
-/// this rank's owned ones) has slid further than its limit at the accepted state at `time`
-/// [s]: the message names the pair, the node, its position, the time, the slip and the
-/// limit and what to change (a rank's row of largest slip / limit; the lowest such rank's).
-/// u(node): the displacement of an overlap node at that state. Collective.
-void check_small_sliding(const ContactInterface &interface, const std::function<Point(int node)> &u,
-                         double time, const Teuchos::Comm<int> &comm);
 } // namespace kiln

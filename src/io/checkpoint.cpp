@@ -234,6 +234,12 @@ void write_checkpoint(const std::string &path, const TimeStepper::State &state,
           write_attribute(contact, "n_pair_rows", static_cast<int>(info.pair_rows.size()));
           write_array(contact, "pair_rows", info.pair_rows, 1);
         }
+        if (!info.pair_heat_u.empty())
+        {
+          // The surfaces' u of the pairs' heat cells (the same on every rank), with its length.
+          write_attribute(contact, "n_pair_heat_u", static_cast<int>(info.pair_heat_u.size()));
+          write_array(contact, "pair_heat_u", info.pair_heat_u, 1);
+        }
         if (!origins.empty())
         {
           // One row per rank (NewtonSolver::preconditioner_origin()).
@@ -354,6 +360,10 @@ Checkpoint read_checkpoint(const std::string &path, const RunFingerprint &run,
       c.info.pair_rows =
           read_array<double>(contact, "pair_rows",
                              static_cast<std::size_t>(read_attribute<int>(contact, "n_pair_rows")));
+    if (H5Lexists(contact, "pair_heat_u", H5P_DEFAULT) > 0)
+      c.info.pair_heat_u = read_array<double>(
+          contact, "pair_heat_u",
+          static_cast<std::size_t>(read_attribute<int>(contact, "n_pair_heat_u")));
     for (std::size_t i = 0; i < c.info.active.size(); ++i)
       if ((c.info.active[i] != 0 && c.info.active[i] != 1) || !std::isfinite(c.info.traction[i]))
         throw std::runtime_error("its contact state of gap pair " + std::to_string(i) +

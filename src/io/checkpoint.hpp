@@ -30,6 +30,10 @@ struct CheckpointInfo
   /// The rows of the contact pairs between bodies meshed apart as their last search left
   /// them (CoupledProblem::pair_rows_state()); empty without pairings.
   std::vector<double> pair_rows;
+  /// The displacement of the surfaces of the pairs with a heat term at their last search, so
+  /// that a restart rebuilds their heat cells (CoupledProblem::pair_heat_state()); empty
+  /// without such pairs (or in a checkpoint of an older Kiln).
+  std::vector<double> pair_heat_u;
 };
 
 /// Writes `state` (on the owned map of the unknowns), `info` and `fingerprint` to `path`:

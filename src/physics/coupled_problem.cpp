@@ -5,6 +5,7 @@
 #include "contact/pair_rows_state.hpp"
 #include "contact/pair_search_again.hpp"
 #include "contact/small_sliding.hpp"
+#include "contact/surface_displacement.hpp"
 #include "discretization/element_values.hpp"
 #include "mesh/hex_geometry.hpp"
 #include "physics/heat/pair_gap_heat.hpp"
@@ -18,7 +19,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace kiln
@@ -112,6 +115,9 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
           pairing.parameters.get<double>("Complementarity Scale"), pairing.name));
       research_.resize(pairings_.size());
       research_.back() = pairing.research;
+      pairing_heat_.resize(pairings_.size());
+      if (thermal_)
+        pairing_heat_.back() = pairing.heat;
       interfaces_.push_back(interface_kinds().create(
           pairing.parameters.get<std::string>("Kind"), *pairings_.back(), dofs, constraints_,
           pairing.parameters, where + "/Mechanics/Contact (" + pairing.name + ")"));
@@ -131,15 +137,17 @@ CoupledProblem::CoupledProblem(const Mesh &mesh, const DofManager &dofs, const M
   // The heat equation's cell and boundary terms do not read u (Assembler::add throws if one
   // puts a T-u entry outside the graph); the gap's may.
   couplings.temperature_depends_on_displacement = gap != nullptr && gap->depends_on_displacement();
-  // The heat across the pairs' gaps: a block per cell, assembled without partners.
+  // The heat across the pairs' gaps: a block per cell a search within the margins can make,
+  // assembled without partners.
   for (const PairingRows &pairing : pairings)
     if (thermal_ && pairing.heat != nullptr)
     {
       couplings.temperature_depends_on_displacement =
           couplings.temperature_depends_on_displacement || pairing.heat->depends_on_displacement();
-      for (std::size_t k = 0; k < pairing.heat->cells().size(); ++k)
-        couplings.cell_blocks.emplace_back(pairing.heat->owning_cell(k),
-                                           pairing.heat->cell_nodes(k));
+      auto blocks = pairing.heat->margin_blocks();
+      couplings.cell_blocks.insert(couplings.cell_blocks.end(),
+                                   std::make_move_iterator(blocks.begin()),
+                                   std::make_move_iterator(blocks.end()));
     }
   assembler_ = std::make_unique<Assembler>(mesh, dofs, couplings);
   if (!interfaces_.empty())
@@ -493,15 +501,16 @@ void CoupledProblem::distribute_and_add(const std::vector<int> &nodes, LocalSyst
 void CoupledProblem::step_accepted(const double time, const Vector &x)
 {
   // A pairing whose rows have slid beyond the fraction of a face since its last search is
-  // searched again in the current configuration (within its margins, else a RunError); one
-  // whose rows are fixed is refused beyond the limit, before anything is committed. A state
-  // refused after a search (another pairing's limit, an open gap) gets the rows back as they
-  // were, so that the last accepted state's checkpoint has its own.
+  // searched again in the current configuration, its rows and heat cells (within its
+  // margins, else a RunError), before anything is committed. A state refused after a search
+  // (another pairing's limit, an open gap) gets the rows and cells back as they were, so
+  // that the last accepted state's checkpoint has its own.
   struct Before
   {
     std::size_t pairing;
     std::vector<ContactRow> rows;
     int searches;
+    std::optional<PairGapHeat::CellSet> cells;
   };
   std::vector<Before> searched;
   try
@@ -514,15 +523,15 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
       const auto &comm = *dofs_.owned_dof_map()->getComm();
       for (std::size_t p = 0; p < pairings_.size(); ++p)
       {
-        if (pairings_[p]->split())
+        if (pairings_[p]->split() || p >= research_.size() || research_[p] == nullptr)
           continue;
-        if (p >= research_.size() || research_[p] == nullptr)
-          check_small_sliding(*pairings_[p], u, time, comm);
-        else if (slid_beyond_limit(*pairings_[p], u, comm))
+        if (slid_beyond_limit(*pairings_[p], u, comm))
         {
           searched.push_back(
               {p, std::vector<ContactRow>(pairings_[p]->rows().begin(), pairings_[p]->rows().end()),
-               pairings_[p]->searches()});
+               pairings_[p]->searches(), std::nullopt});
+          if (pairing_heat_[p] != nullptr)
+            searched.back().cells = pairing_heat_[p]->cell_set();
           search_again(p, time);
         }
       }
@@ -545,6 +554,8 @@ void CoupledProblem::step_accepted(const double time, const Vector &x)
     {
       pairings_[before.pairing]->replace_rows(std::move(before.rows));
       pairings_[before.pairing]->set_searches(before.searches);
+      if (before.cells)
+        pairing_heat_[before.pairing]->restore(std::move(*before.cells));
     }
     if (!searched.empty())
       decided_ = false;
@@ -559,6 +570,15 @@ void CoupledProblem::search_again(const std::size_t p, const double time)
   pairing.replace_rows(search_pair_again(
       pairings_, p, *research_[p], mesh_, [this](const int node) { return fields_->u(node); },
       dofs_.node_owner(), *dofs_.owned_dof_map()->getComm(), time));
+  if (pairing_heat_[p] != nullptr)
+  {
+    // The heat cells on the same search (their u as the rows'; within the margins).
+    PairGapHeat &heat = *pairing_heat_[p];
+    heat.rebuild(gather_displacement(
+                     heat.surface_nodes(), [this](const int node) { return fields_->u(node); },
+                     dofs_.node_owner(), *dofs_.owned_dof_map()->getComm()),
+                 time, pairing.name());
+  }
   decided_ = false;
   if (log_ != Teuchos::null)
     *log_ << "  " << pairing.name() << ": search " << pairing.searches() << " at t = " << time
@@ -574,6 +594,54 @@ void CoupledProblem::restore_pair_rows(const std::vector<double> &state, const s
 {
   if (kiln::restore_pair_rows(pairings_, state, where))
     decided_ = false;
+}
+
+std::vector<double> CoupledProblem::pair_heat_state() const
+{
+  std::vector<double> state;
+  for (const auto &heat : pair_heat_)
+  {
+    const std::vector<Point> &u = heat->searched_displacement();
+    state.push_back(static_cast<double>(3 * u.size()));
+    for (const Point &v : u)
+      state.insert(state.end(), v.begin(), v.end());
+  }
+  return state;
+}
+
+void CoupledProblem::restore_pair_heat(const std::vector<double> &state, const std::string &where)
+{
+  if (state.empty())
+  {
+    // A checkpoint of a Kiln whose heat cells were fixed at set-up: right only without a search.
+    for (std::size_t p = 0; p < pairing_heat_.size(); ++p)
+      KILN_CHECK_INPUT(pairing_heat_[p] == nullptr || pairings_[p]->searches() <= 1, where,
+                       "has no heat cells of the contact pairs (contact/pair_heat_u) but "
+                           << pairings_[p]->name()
+                           << ", which carries heat across its gap, was searched again before "
+                              "it: a checkpoint of a Kiln older than its rebuilt heat cells; "
+                              "restart from a checkpoint of this Kiln, or run from the start");
+    return;
+  }
+  std::size_t at = 0;
+  for (const auto &heat : pair_heat_)
+  {
+    const std::size_t n = at < state.size() ? static_cast<std::size_t>(state[at]) : 0;
+    KILN_CHECK_INPUT(at < state.size() && at + 1 + n <= state.size() &&
+                         (n == 0 || n == 3 * heat->surface_nodes().size()),
+                     where,
+                     "its heat cells of the contact pairs (contact/pair_heat_u) do not fit this "
+                     "run's pairs: a checkpoint of another run or a damaged one");
+    std::vector<Point> u(n / 3);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] = {state[at + 1 + 3 * i], state[at + 2 + 3 * i], state[at + 3 + 3 * i]};
+    at += 1 + n;
+    if (!u.empty())
+      heat->rebuild(u, 0.0, where);
+  }
+  KILN_CHECK_INPUT(at == state.size(), where,
+                   "its heat cells of the contact pairs (contact/pair_heat_u) are longer than "
+                   "this run's pairs need: a checkpoint of another run or a damaged one");
 }
 
 bool CoupledProblem::models_read_old_temperature() const

@@ -101,8 +101,9 @@ public:
   /// Keeps the past temperatures if a heat kernel reads them (NodalFields::keep_history).
   void set_time_history(const std::vector<double> &weights,
                         const std::vector<const Vector *> &past) override;
-  /// Checks the pairings' small-sliding limit (check_small_sliding: a RunError on every rank,
-  /// before anything is committed), commits the quadrature-point state
+  /// Redoes the search of the pairings whose rows slid beyond their limit (their rows and
+  /// heat cells; a RunError on every rank beyond the small-sliding limit, before anything is
+  /// committed, the rows and cells as they were), commits the quadrature-point state
   /// (QuadratureState::commit), keeps the temperatures of x for the models' T at t_n
   /// (NodalFields::set_accepted, if a model reads it), then the interfaces' hooks.
   void step_accepted(double time, const Vector &x) override;
@@ -145,6 +146,15 @@ public:
   /// Restores the rows of pair_rows_state() (a restart, before resume()). Throws InputError
   /// naming `where` (the checkpoint) if they do not fit this run's pairings.
   void restore_pair_rows(const std::vector<double> &state, const std::string &where);
+  /// The displacement of the surfaces of each pair with a heat term at its last search
+  /// (PairGapHeat::searched_displacement), flattened for a checkpoint (the same on every
+  /// rank): per term, its count of values, then u. Empty without such pairs.
+  std::vector<double> pair_heat_state() const;
+  /// Rebuilds the heat cells of pair_heat_state() (a restart, after restore_pair_rows()):
+  /// the cells in force at the checkpoint. A checkpoint without it (`state` empty, of an
+  /// older Kiln) is taken as the set-up cells if no pair with a heat term was searched again,
+  /// else an InputError naming `where`, as for a state that does not fit.
+  void restore_pair_heat(const std::vector<double> &state, const std::string &where);
   /// x = the initial state at time t [s]: the initial temperature, zero displacement, and
   /// the prescribed values of that time.
   void initial_condition(double time, Vector &x) const;
@@ -232,13 +242,16 @@ private:
   std::optional<MechanicalPhysics> mechanics_;
   std::vector<std::unique_ptr<ContactInterface>>
       pairings_; ///< per gap with pairs, then per pairing
-  /// Per entry of pairings_, the search redone during the run, or null (a split gap, rows fixed).
+  /// Per entry of pairings_, the search redone during the run, or null (a split gap, or a
+  /// test's pairing whose rows are fixed).
   std::vector<std::shared_ptr<const PairResearch>> research_;
   Teuchos::RCP<Teuchos::FancyOStream> log_;
   /// Redoes the search of pairings_[p] at the accepted state the fields hold (time [s]).
   void search_again(std::size_t p, double time);
   /// The heat across the pairs' gaps (those with a term on), kept for terms_.
-  std::vector<std::shared_ptr<const PairGapHeat>> pair_heat_;
+  std::vector<std::shared_ptr<PairGapHeat>> pair_heat_;
+  /// Per entry of pairings_, the heat across its gap (an entry of pair_heat_), or null.
+  std::vector<std::shared_ptr<PairGapHeat>> pairing_heat_;
   /// Per term of pair_heat_, its pair's index in StateSummary::pairs.
   std::vector<std::size_t> pair_heat_pair_;
   std::unique_ptr<Assembler> assembler_;

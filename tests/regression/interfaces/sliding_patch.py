@@ -26,7 +26,23 @@ the time, what to change), its results and history up to 3 s, its checkpoint of 
 rows of the search at 2 s. Onto another gap: body 1 split at y = 3.55 cm (a split gap whose
 nodes on the contact face the rows reach once the sliding body's edge passes 2.82 cm): the
 search at 6 s ends the run with the message naming the gap, the files up to 5 s.
-usage: sliding_patch.py KILN WORKDIR NP MPIEXEC"""
+With "heat" (doc/heat.md, "Heat across the gap of a mortar pairing"): the same runs
+thermo-elastic (expansion 0, so the mechanics is the one above), the pair with a Heat Transfer
+term of constant "Conductance" h = 1e4 W/(m^2 K), body 1 held at T_1 = 300 K on its end face
+and its contact face (so uniform: its contact face is wider than body 2's), body 2's end face
+at T_2 = 400 K (k = 50 W/(m K)). The exact steady state: T linear in body 2 and a uniform flux
+q = (T_2 - T_1) / (L/k + 1/h) = 1.11e5 W/m^2 across the gap (L = 4 cm), the heat flow
+q x 16 cm^2: checked at every output time (every secondary node's gap_heat_flux, the
+history's heat_flow_slide) to 1e-9, with the heat cells rebuilt at each search (the searches
+at 2, 4, 6, 8, 10 s as above); np 2 = np 1; the restart after two searches bit for bit (its
+checkpoint keeps the surfaces' u of the last search: contact/pair_heat_u); a checkpoint
+without it (of an older Kiln) restarts bit for bit from 1 s (before any search) and is refused
+(exit 1, the message) from 5 s (after two). Body 1 uniform, the cells of set-up would give the
+same flux: held at its far end only, the heat entering body 1's contact face follows body 2
+(its centre moves by 5 to 15 mm by 10 s; 0 with the cells of set-up). Beyond the margin the
+same exit 2 and message, the checkpoint of 3 s with the u of the search at 2 s. (The split gap
+case is the mechanics' alone.)
+usage: sliding_patch.py KILN WORKDIR NP MPIEXEC [heat]"""
 import csv
 import math
 import re
@@ -42,6 +58,7 @@ import exodus_mesh  # noqa: E402  (tests/support/exodus_mesh.py)
 import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 kiln, work, n_ranks, mpiexec = sys.argv[1:5]
+HEAT = sys.argv[5:6] == ["heat"]
 work = Path(work)
 work.mkdir(parents=True, exist_ok=True)
 kiln_diff = Path(__file__).resolve().parents[3] / "tools" / "kiln-diff"
@@ -51,6 +68,10 @@ G = 2.6e10
 DELTA, D = 2e-6, 1e-5  # body 1's contact face moved by -DELTA along x, body 2's end by -D
 P = 2.0 * G * (D - DELTA) / 0.04
 SIGMA_1 = -2.0 * G * DELTA / 0.04
+# With heat: T_1 on body 1, T_2 on body 2's end face, conductivity K, gap conductance H.
+T_1, T_2, K, H = 300.0, 400.0, 50.0, 1.0e4
+Q = (T_2 - T_1) / (0.04 / K + 1.0 / H)
+AREA = 0.04 * 0.04  # body 2's contact face, on body 1's at every time
 
 
 def block(x0, x1, y0, y1, z0, z1, n, first_node):
@@ -93,10 +114,13 @@ def write_mesh(path, gap_y=None):
                       title="sliding patch")
 
 
-def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=0):
+def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=0,
+         held=(1, 10)):
     entry = {"Primary Side Set": 10, "Secondary Side Set": 20, "Sliding Distance": 0.025}
     if pair is not None:
         entry = {"Primary Side Set": 10, "Secondary Side Set": 20, **pair}
+    if HEAT:
+        entry["Heat Transfer"] = {"Conductance": H}
     d = {"Physics": "Elasticity",
          "Mesh": kd.exodus_mesh(mesh, gap),
          "Material": kd.lame(0.0, G),
@@ -113,6 +137,14 @@ def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=
          "Output": {"File Base": base, "Times": [float(t) for t in times]}}
     if checkpoint is not None:
         d["Checkpoint"] = checkpoint
+    if HEAT:
+        d["Physics"] = "Thermo-Elasticity"
+        d["Material"].update({"Thermal Expansion": 0.0, "Reference Temperature": T_1,
+                              "Density": 2.7e3, "Specific Heat": 9.0e2,
+                              "Conductivity": {"Type": "Constant", "Value": K}})
+        d["Thermal"] = {"Initial Temperature": T_1,
+                        "Boundary Conditions": {"body 1": kd.temperature(list(held), T_1),
+                                                "body 2 end": kd.temperature([2], T_2)}}
     return d
 
 
@@ -139,7 +171,7 @@ check('pair "slide": search 6 at t = 10 s' in run.log, "the sixth search (with t
 with h5py.File(run.results, "r") as h5:
     steps = kd.step_names(h5)
 check(len(steps) == 11, f"results at t = 0 .. 10 s ({len(steps)} steps)")
-worst_p, worst_sigma = 0.0, 0.0
+worst_p, worst_sigma, worst_q = 0.0, 0.0, 0.0
 for k in range(len(steps)):
     step = kd.read_step(str(run.results), k)
     pressure = step["contact_pressure"]
@@ -151,6 +183,12 @@ for k in range(len(steps)):
     worst_p = max(worst_p, float(np.abs(pressure[rows] - P).max()) / P)
     worst_sigma = max(worst_sigma, float(np.abs(sigma - exact).max()) / P)
     check(rows.sum() == 28, f"t = {step['time']} s: 28 rows ({rows.sum()})")
+    if HEAT:
+        # The flux at every secondary node (NaN off the pair): q.
+        flux = step["gap_heat_flux"]
+        at = np.isfinite(flux)
+        check(at.sum() == 28, f"t = {step['time']} s: gap_heat_flux at 28 nodes ({at.sum()})")
+        worst_q = max(worst_q, float(np.abs(flux[at] - Q).max()) / Q)
     # The table of the pair's rows: the same pressure at every row.
     with open(work / f"slide.pair_slide-{k:06d}.csv", encoding="utf-8") as f:
         table = [r for r in csv.DictReader(f)]
@@ -160,6 +198,18 @@ print(f"p = {P:.6g} Pa: max |p_j - p| / p = {worst_p:.3g}, max |sigma - exact| /
       f"{worst_sigma:.3g} over t = 0 .. 10 s")
 check(worst_p < 1e-9, f"the contact pressure uniform to 1e-9 ({worst_p:.3g})")
 check(worst_sigma < 1e-9, f"the stress uniform to 1e-9 ({worst_sigma:.3g})")
+if HEAT:
+    with open(work / "slide.history.csv", encoding="utf-8") as f:
+        table = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    column = table[0].index("heat_flow_slide [W]")
+    # The rows after the initial state's: the solves at t = 0 .. 10 s.
+    flows = np.array([float(r[column]) for r in table[2:]])
+    worst_flow = float(np.abs(flows - Q * AREA).max()) / (Q * AREA)
+    print(f"q = {Q:.6g} W/m^2: max |q_j - q| / q = {worst_q:.3g}, max |heat flow - q A| / (q A) "
+          f"= {worst_flow:.3g} over t = 0 .. 10 s")
+    check(len(flows) == 11, f"the history's heat flow at t = 0 .. 10 s ({len(flows)})")
+    check(worst_q < 1e-9, f"gap_heat_flux = q to 1e-9 ({worst_q:.3g})")
+    check(worst_flow < 1e-9, f"heat_flow_slide = q A to 1e-9 ({worst_flow:.3g})")
 last = kd.read_step(str(run.results))
 end_face = np.abs(last["x"][:, 0] - 0.04) < 1e-12
 check(abs(last["displacement"][end_face, 1] - 1.5e-2).max() < 1e-12, "slid to u_y = 15 mm")
@@ -169,7 +219,7 @@ if int(n_ranks) > 1:
     one = kd.run_kiln(kiln, kd.write_deck(str(work / "one"), deck("one", range(11))), 1,
                       mpiexec, cwd=work, expect=0)
     check(searches(one.log) == found, f"np 1 searches at the same times ({searches(one.log)})")
-    apart = 0.0
+    apart, apart_T = 0.0, 0.0
     with h5py.File(one.results, "r") as h5:
         n_steps = len(kd.step_names(h5))
     for k in range(n_steps):
@@ -178,8 +228,12 @@ if int(n_ranks) > 1:
         order_b = np.lexsort(b["x"].T)
         apart = max(apart, float(np.abs(a["displacement"][order_a] -
                                         b["displacement"][order_b]).max()))
-    print(f"np {n_ranks} against np 1: max |u| apart {apart:.3g} m")
+        if HEAT:
+            apart_T = max(apart_T, float(np.abs(a["temperature"][order_a] -
+                                                b["temperature"][order_b]).max()))
+    print(f"np {n_ranks} against np 1: max |u| apart {apart:.3g} m, |T| {apart_T:.3g} K")
     check(apart < 1e-12, f"np {n_ranks} = np 1 to 1e-12 m ({apart:.3g})")
+    check(apart_T < 1e-9, f"np {n_ranks} = np 1 to 1e-9 K ({apart_T:.3g})")
 
 # A restart after two searches: the same results and history as the run without it.
 base = "restarted"
@@ -199,6 +253,58 @@ check(diff.returncode == 0, "the restart's results = the run's, bit for bit "
       f"(kiln-diff --abs 0 --rel 0: {diff.stdout.strip()[-300:]})")
 check(history(work / (base + ".history.csv")) == history(work / "slide.history.csv"),
       "the restart's history = the run's (apart from the wall time)")
+
+if HEAT:
+    # A checkpoint of a Kiln before the heat cells were rebuilt (no contact/pair_heat_u): at 1 s,
+    # before any search, it restarts with the set-up's cells, the same results bit for bit; at
+    # 5 s, after two searches, it is refused (exit 1) naming the pair and what to do.
+    def older(base, times):
+        kd.run_kiln(kiln, kd.write_deck(str(work / (base + "-part1")),
+                                        deck(base, times, checkpoint={"At End": True})),
+                    n_ranks, mpiexec, cwd=work, expect=0)
+        with h5py.File(work / (base + ".checkpoint.h5"), "r+") as h5:
+            del h5["contact/pair_heat_u"]
+            del h5["contact"].attrs["n_pair_heat_u"]
+        return kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11))), n_ranks,
+                           mpiexec, args=["--restart", base + ".checkpoint.h5"], cwd=work,
+                           expect=None)
+    run = older("older-1", range(2))
+    check(run.returncode == 0, f"older checkpoint at 1 s: restarted (exit {run.returncode})")
+    diff = subprocess.run([sys.executable, str(kiln_diff), "--abs", "0", "--rel", "0",
+                           str(work / "older-1.h5"), str(work / "slide.h5")],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    check(diff.returncode == 0, "older checkpoint at 1 s: the run's results bit for bit "
+          f"({diff.stdout.strip()[-200:]})")
+    run = older("older-5", range(6))
+    errors = [line for line in run.log.splitlines() if line.startswith("kiln: error:")]
+    message = errors[0] if errors else ""
+    print(message)
+    check(run.returncode == 1, f"older checkpoint at 5 s: refused (exit {run.returncode})")
+    for part in ["has no heat cells of the contact pairs (contact/pair_heat_u)",
+                 'pair "slide", which carries heat across its gap, was searched again',
+                 "restart from a checkpoint of this Kiln, or run from the start"]:
+        check(part in message, f"older checkpoint at 5 s: the message says {part!r}")
+
+if HEAT:
+    # The cells follow the slide: body 1 held at its far end only, the heat enters its contact
+    # face where body 2 is now (its centre at y = 1.5 mm/s t), not where it was at set-up (the
+    # cells of set-up would heat the same place at every time): the centre of T - T_1 on body
+    # 1's contact face moves with body 2 (10.4 mm by 10 s as body 2 moves 15 mm, the heat
+    # spreading in body 1; 0 with the cells of set-up).
+    base = "follows"
+    run = kd.run_kiln(kiln, kd.write_deck(str(work / base), deck(base, range(11), held=(1,))),
+                      n_ranks, mpiexec, cwd=work, expect=0)
+    check(searches(run.log) == found, f"follows: the same searches ({searches(run.log)})")
+    centres = []
+    for k in (0, 10):
+        step = kd.read_step(str(run.results), k)
+        # Body 1's nodes are the first 5 x 12 x 5 (write_mesh).
+        on_face = (np.abs(step["x"][:, 0]) < 1e-12) & (np.arange(len(step["x"])) < 300)
+        rise = step["temperature"][on_face] - T_1
+        centres.append(float((rise * step["x"][on_face, 1]).sum() / rise.sum()))
+    moved = centres[1] - centres[0]
+    print(f"follows: the heated centre of body 1's contact face moved by {moved:.4g} m")
+    check(0.005 < moved < 0.015, f"follows: the heated centre moves with body 2 ({moved:.4g} m)")
 
 # Beyond the margin: exit 2 at the search that pairs a node outside it, the files up to 3 s.
 base = "beyond"
@@ -228,6 +334,15 @@ with h5py.File(work / (base + ".checkpoint.h5"), "r") as h5:
     when = float(h5["state"].attrs["time"])
 check(when == 3.0 and rows[0] == 2 and rows[1] == 28,
       f"the checkpoint at 3 s with the rows of search 2 ({when}, {rows[:2]})")
+if HEAT:
+    # ... and the surfaces' u of that search (body 2 pushed by u_y = 3 mm at 2 s): the count
+    # of values (3 per node of the two surfaces: 5 x 12 + 7 x 4), then u.
+    with h5py.File(work / (base + ".checkpoint.h5"), "r") as h5:
+        heat_u = h5["contact/pair_heat_u"][...]
+    u = heat_u[1:].reshape(-1, 3)
+    check(heat_u[0] == 3 * 88 and len(u) == 88 and abs(u[:, 1].max() - 3e-3) < 1e-12,
+          f"the checkpoint's heat cells: u of the search at 2 s ({heat_u[0]}, {u[:, 1].max()})")
+    sys.exit(1 if check.failed else 0)
 # Onto another gap: body 1 split at y = 3.55 cm (its grid line 9 of 11; a split gap, side set
 # 30), a node of which the sliding body's rows reach at 6 s (its edge at 3.2 cm): exit 2 with
 # the message naming both, the files up to 5 s.

@@ -124,7 +124,8 @@ TEST(RestartPlan, ReadsTheCheckpointsOutputSteps)
   const std::string checkpoint = f.base + ".checkpoint.h5";
   kiln::write_checkpoint(
       checkpoint, state,
-      {"1.2.3", "2026-11-29T00:00:00Z", "deck.xml", "<Kiln/>", 4, {}, {}, {}, {}}, run, *f.comm);
+      {"1.2.3", "2026-11-29T00:00:00Z", "deck.xml", "<Kiln/>", 4, {}, {}, {}, {}, {}}, run,
+      *f.comm);
 
   kiln::RestartPlan plan = f.plan(checkpoint);
   EXPECT_FALSE(plan.fresh());

@@ -94,7 +94,7 @@ TEST(Checkpoint, ReadBackBitForBit)
   const kiln::TimeStepper::State s = f.state();
   const double rank = f.comm->getRank();
   kiln::CheckpointInfo info{"1.2.3", "2026-11-23T00:00:00Z", "deck.xml", "<Kiln/>", 3, {},
-                            {},      {1, 0.5, 0.25, rank},   {}};
+                            {},      {1, 0.5, 0.25, rank},   {},         {}};
   for (std::size_t k = 0; k < f.mesh.gap_pairs.size(); ++k)
   {
     info.active.push_back(k % 2);
@@ -150,7 +150,7 @@ TEST(Checkpoint, ForeignDamagedAndOtherRunsAreRefusedOnEveryRank)
 {
   Fixture f;
   const std::string path = f.folder + "/good.h5";
-  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}},
+  kiln::write_checkpoint(path, f.state(), {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}, {}},
                          f.fingerprint, *f.comm);
   if (f.comm->getRank() == 0)
   {
@@ -221,6 +221,7 @@ TEST(Checkpoint, DamagedStateOrScalarsAreRefused)
                           0,
                           std::vector<int>(n_pairs, 1),
                           std::vector<double>(n_pairs, 2.5e6),
+                          {},
                           {},
                           {}},
                          f.fingerprint, *f.comm);
@@ -309,8 +310,8 @@ TEST(Checkpoint, NonFiniteStateIsNotWritten)
   const std::string path = f.folder + "/nan_state.h5";
   try
   {
-    kiln::write_checkpoint(path, s, {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}}, f.fingerprint,
-                           *f.comm);
+    kiln::write_checkpoint(path, s, {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}, {}},
+                           f.fingerprint, *f.comm);
     ADD_FAILURE() << "a NaN state was written";
   }
   catch (const kiln::RunError &e)
@@ -329,7 +330,8 @@ TEST(Checkpoint, UnwritableFolderIsAWriteError)
   try
   {
     kiln::write_checkpoint(f.folder + "/no/such/folder/c.h5", f.state(),
-                           {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}}, f.fingerprint, *f.comm);
+                           {"1", "now", "deck.xml", "", 0, {}, {}, {}, {}, {}}, f.fingerprint,
+                           *f.comm);
     ADD_FAILURE() << "no error";
   }
   catch (const kiln::WriteError &e)
@@ -376,7 +378,7 @@ struct OneRank
 /// A checkpoint's info with the contact state of the mesh's gap pairs (all open).
 kiln::CheckpointInfo plain_info(const kiln::Mesh &mesh)
 {
-  kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}, {}};
+  kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}, {}, {}};
   info.active.assign(mesh.gap_pairs.size(), 0);
   info.traction.assign(mesh.gap_pairs.size(), 0.0);
   return info;

@@ -127,7 +127,7 @@ TEST(QuadratureStateContinuation, CommittedOncePerAcceptedStepAndContinuedBitFor
         if (s.time != 4.0)
           return;
         accepted_at_4 = s.accepted;
-        kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}, {}};
+        kiln::CheckpointInfo info{"1", "now", "deck.xml", "", 0, {}, {}, {}, {}, {}};
         info.preconditioner_origin = a.newton->preconditioner_origin();
         kiln::write_checkpoint(path, s, info, fingerprint, *f.comm, a.problem->quadrature_state());
       });

@@ -95,7 +95,7 @@ struct State
 };
 
 /// The pair's heat across the gap if `state` asks for it (else null).
-std::shared_ptr<const kiln::PairGapHeat> gap_heat(const kiln::Mesh &mesh, const State &state)
+std::shared_ptr<kiln::PairGapHeat> gap_heat(const kiln::Mesh &mesh, const State &state)
 {
   if (!state.heat)
     return nullptr;
@@ -108,8 +108,8 @@ std::shared_ptr<const kiln::PairGapHeat> gap_heat(const kiln::Mesh &mesh, const 
     p.set("Gap Pressure Coefficient", 1.0e-4);
   const std::string where = "Kiln/Mechanics/Contact/Pairs/test/Heat Transfer";
   static const kiln::Material material = TableMaterial::make();
-  return std::make_shared<const kiln::PairGapHeat>(
-      mesh, 1, 2, 0.5,
+  return std::make_shared<kiln::PairGapHeat>(
+      mesh, 1, 2, 0.5, 0.0,
       kiln::validated(p, kiln::MortarGapHeat::valid_parameters(), "test.xml", where), where,
       &material);
 }
@@ -174,7 +174,7 @@ struct TwoBodies
   kiln::Mesh mesh;
   std::vector<kiln::ContactRow> rows;
   std::vector<int> cell_rank;
-  std::shared_ptr<const kiln::PairGapHeat> heat;
+  std::shared_ptr<kiln::PairGapHeat> heat;
   kiln::DofManager dofs;
   kiln::Material material = TableMaterial::make();
 };

@@ -71,7 +71,7 @@ public:
 
   void step_accepted(const double time, const Vector &) override
   {
-    // Refused as a contact pair slid beyond its limit refuses it (check_small_sliding).
+    // Refused as a contact pair slid beyond its margin refuses it (PairResearch::rows_at).
     if (time > refuse_after)
       throw kiln::RunError("refused at t = " + std::to_string(time));
     ++accepted;
