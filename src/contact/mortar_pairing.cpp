@@ -42,16 +42,15 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
 
 MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
                              const int secondary_side_set, const MortarPairingOptions &options,
-                             const std::string &where, const std::vector<Point> &displacement)
+                             const std::string &where,
+                             const std::function<Point(int node)> &displacement)
 {
-  KILN_ASSERT(displacement.size() == static_cast<std::size_t>(mesh.n_nodes()),
-              "a displacement per mesh node");
   pair(mesh, primary_side_set, secondary_side_set, options, where, &displacement);
 }
 
 void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int secondary_side_set,
                          const MortarPairingOptions &options, const std::string &where,
-                         const std::vector<Point> *displacement)
+                         const std::function<Point(int node)> *displacement)
 {
   check_distinct_side_sets(primary_side_set, secondary_side_set, where);
   ContactSurface primary(mesh, primary_side_set, where + "/\"Primary Side Set\"");
@@ -62,7 +61,7 @@ void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int
       std::vector<Point> u;
       u.reserve(surface->nodes().size());
       for (const int n : surface->nodes())
-        u.push_back((*displacement)[n]);
+        u.push_back((*displacement)(n));
       surface->set_displacement(u);
     }
   search_distance_ =

@@ -24,6 +24,7 @@
 #include "contact/contact_row.hpp"
 #include "mesh/mesh.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,13 +61,14 @@ public:
   /// covers no secondary node.
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where);
-  /// The same in the current configuration X + u, `displacement` u per mesh node [m] (the
-  /// search redone during a run, PairResearch): the rows' normals are the current
-  /// configuration's, their slip limits are computed alike; the interpenetration of the
-  /// state is not checked (it is the solver's) and no margins are computed.
+  /// The same in the current configuration X + u, `displacement` giving u [m] at a mesh node
+  /// of the two surfaces (it is asked for theirs only: the search redone during a run,
+  /// PairResearch, holds u on the surfaces, never per mesh node): the rows' normals are the
+  /// current configuration's, their slip limits are computed alike; the interpenetration of
+  /// the state is not checked (it is the solver's) and no margins are computed.
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where,
-                const std::vector<Point> &displacement);
+                const std::function<Point(int node)> &displacement);
 
   /// One row per covered secondary node, in increasing mesh node id; partners in increasing
   /// mesh node id.
@@ -86,7 +88,7 @@ public:
 private:
   void pair(const Mesh &mesh, int primary_side_set, int secondary_side_set,
             const MortarPairingOptions &options, const std::string &where,
-            const std::vector<Point> *displacement);
+            const std::function<Point(int node)> *displacement);
 
   std::vector<ContactRow> rows_;
   std::vector<std::vector<int>> margins_;

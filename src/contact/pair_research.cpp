@@ -39,6 +39,14 @@ PairResearch::PairResearch(const Mesh &mesh, const int primary_side_set,
                        surface_nodes_.end());
 }
 
+std::size_t PairResearch::surface_index(const int node) const
+{
+  const auto at = std::lower_bound(surface_nodes_.begin(), surface_nodes_.end(), node);
+  KILN_ASSERT(at != surface_nodes_.end() && *at == node,
+              "node " << node << " is on a surface of " << name_);
+  return static_cast<std::size_t>(at - surface_nodes_.begin());
+}
+
 std::vector<std::pair<int, int>> PairResearch::links(const std::vector<ContactRow> &rows) const
 {
   KILN_ASSERT(rows.size() == margins_.size(), "a margin per row of " << name_);
@@ -53,9 +61,12 @@ std::vector<ContactRow> PairResearch::rows_at(const std::vector<ContactRow> &cur
                                               const std::vector<Point> &u, const double time) const
 {
   KILN_ASSERT(current.size() == margins_.size(), "a margin per row of " << name_);
-  const MortarPairing pairing(mesh_, primary_side_set_, secondary_side_set_, options_, where_, u);
+  KILN_ASSERT(u.size() == surface_nodes_.size(), "a displacement per surface node of " << name_);
+  // The rows' nodes and partners are surface nodes: u is read at these only.
+  const auto u_of = [&](const int node) { return u[surface_index(node)]; };
+  const MortarPairing pairing(mesh_, primary_side_set_, secondary_side_set_, options_, where_,
+                              u_of);
   const std::vector<ContactRow> &fresh = pairing.rows();
-  const auto u_of = [&u](const int node) { return u[node]; };
   const auto node_text = [&](const int node)
   {
     const Point &X = mesh_.coordinates[node];
