@@ -22,6 +22,7 @@
 /// the secondary faces of its owned cells and sum D, M and g~ of a node whose faces lie on two
 /// ranks to its owner (an Export with ADD), as the design says.
 #include "contact/contact_row.hpp"
+#include "mesh/contact_surface.hpp"
 #include "mesh/mesh.hpp"
 
 #include <functional>
@@ -69,6 +70,12 @@ public:
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where,
                 const std::function<Point(int node)> &displacement);
+  /// The same on the surfaces `primary` and `secondary` as built by ContactSurface (in X, with
+  /// the checks made when they were; PairResearch keeps those of set-up): a search redone does
+  /// not rebuild them from the mesh (ContactSurface's checks pass over every cell of it).
+  MortarPairing(const Mesh &mesh, const ContactSurface &primary, const ContactSurface &secondary,
+                const MortarPairingOptions &options, const std::string &where,
+                const std::function<Point(int node)> &displacement);
 
   /// One row per covered secondary node, in increasing mesh node id; partners in increasing
   /// mesh node id.
@@ -86,7 +93,7 @@ public:
   static constexpr double multiplier_fraction() { return 1e-6; }
 
 private:
-  void pair(const Mesh &mesh, int primary_side_set, int secondary_side_set,
+  void pair(const Mesh &mesh, ContactSurface primary, ContactSurface secondary,
             const MortarPairingOptions &options, const std::string &where,
             const std::function<Point(int node)> *displacement);
 

@@ -5,6 +5,7 @@
 /// within the partners linked at set-up (the margins).
 #include "contact/contact_row.hpp"
 #include "contact/mortar_pairing.hpp"
+#include "mesh/contact_surface.hpp"
 #include "mesh/mesh.hpp"
 
 #include <cstddef>
@@ -51,12 +52,13 @@ public:
 
 private:
   const Mesh &mesh_;
-  int primary_side_set_;
-  int secondary_side_set_;
   MortarPairingOptions options_;
   std::string where_;
   std::string name_;
   std::vector<std::vector<int>> margins_;
+  /// The two surfaces as built at construction (in X): a search redone moves copies of them.
+  ContactSurface primary_;
+  ContactSurface secondary_;
   std::vector<int> surface_nodes_;
 };
 
