@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace kiln
 {
@@ -37,32 +38,47 @@ MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
                              const int secondary_side_set, const MortarPairingOptions &options,
                              const std::string &where)
 {
-  pair(mesh, primary_side_set, secondary_side_set, options, where, nullptr);
+  check_distinct_side_sets(primary_side_set, secondary_side_set, where);
+  // The primary side set's errors first.
+  ContactSurface primary(mesh, primary_side_set, where + "/\"Primary Side Set\"");
+  ContactSurface secondary(mesh, secondary_side_set, where + "/\"Secondary Side Set\"");
+  pair(mesh, std::move(primary), std::move(secondary), options, where, nullptr);
 }
 
 MortarPairing::MortarPairing(const Mesh &mesh, const int primary_side_set,
                              const int secondary_side_set, const MortarPairingOptions &options,
-                             const std::string &where, const std::vector<Point> &displacement)
-{
-  KILN_ASSERT(displacement.size() == static_cast<std::size_t>(mesh.n_nodes()),
-              "a displacement per mesh node");
-  pair(mesh, primary_side_set, secondary_side_set, options, where, &displacement);
-}
-
-void MortarPairing::pair(const Mesh &mesh, const int primary_side_set, const int secondary_side_set,
-                         const MortarPairingOptions &options, const std::string &where,
-                         const std::vector<Point> *displacement)
+                             const std::string &where,
+                             const std::function<Point(int node)> &displacement)
 {
   check_distinct_side_sets(primary_side_set, secondary_side_set, where);
+  // The primary side set's errors first.
   ContactSurface primary(mesh, primary_side_set, where + "/\"Primary Side Set\"");
   ContactSurface secondary(mesh, secondary_side_set, where + "/\"Secondary Side Set\"");
+  pair(mesh, std::move(primary), std::move(secondary), options, where, &displacement);
+}
+
+MortarPairing::MortarPairing(const Mesh &mesh, const ContactSurface &primary,
+                             const ContactSurface &secondary, const MortarPairingOptions &options,
+                             const std::string &where,
+                             const std::function<Point(int node)> &displacement)
+{
+  check_distinct_side_sets(primary.side_set_id(), secondary.side_set_id(), where);
+  pair(mesh, primary, secondary, options, where, &displacement);
+}
+
+void MortarPairing::pair(const Mesh &mesh, ContactSurface primary, ContactSurface secondary,
+                         const MortarPairingOptions &options, const std::string &where,
+                         const std::function<Point(int node)> *displacement)
+{
+  const int primary_side_set = primary.side_set_id();
+  const int secondary_side_set = secondary.side_set_id();
   if (displacement != nullptr)
     for (ContactSurface *surface : {&primary, &secondary})
     {
       std::vector<Point> u;
       u.reserve(surface->nodes().size());
       for (const int n : surface->nodes())
-        u.push_back((*displacement)[n]);
+        u.push_back((*displacement)(n));
       surface->set_displacement(u);
     }
   search_distance_ =

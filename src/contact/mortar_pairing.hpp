@@ -22,8 +22,10 @@
 /// the secondary faces of its owned cells and sum D, M and g~ of a node whose faces lie on two
 /// ranks to its owner (an Export with ADD), as the design says.
 #include "contact/contact_row.hpp"
+#include "mesh/contact_surface.hpp"
 #include "mesh/mesh.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,13 +62,20 @@ public:
   /// covers no secondary node.
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where);
-  /// The same in the current configuration X + u, `displacement` u per mesh node [m] (the
-  /// search redone during a run, PairResearch): the rows' normals are the current
-  /// configuration's, their slip limits are computed alike; the interpenetration of the
-  /// state is not checked (it is the solver's) and no margins are computed.
+  /// The same in the current configuration X + u, `displacement` giving u [m] at a mesh node
+  /// of the two surfaces (it is asked for theirs only: the search redone during a run,
+  /// PairResearch, holds u on the surfaces, never per mesh node): the rows' normals are the
+  /// current configuration's, their slip limits are computed alike; the interpenetration of
+  /// the state is not checked (it is the solver's) and no margins are computed.
   MortarPairing(const Mesh &mesh, int primary_side_set, int secondary_side_set,
                 const MortarPairingOptions &options, const std::string &where,
-                const std::vector<Point> &displacement);
+                const std::function<Point(int node)> &displacement);
+  /// The same on the surfaces `primary` and `secondary` as built by ContactSurface (in X, with
+  /// the checks made when they were; PairResearch keeps those of set-up): a search redone does
+  /// not rebuild them from the mesh (ContactSurface's checks pass over every cell of it).
+  MortarPairing(const Mesh &mesh, const ContactSurface &primary, const ContactSurface &secondary,
+                const MortarPairingOptions &options, const std::string &where,
+                const std::function<Point(int node)> &displacement);
 
   /// One row per covered secondary node, in increasing mesh node id; partners in increasing
   /// mesh node id.
@@ -84,9 +93,9 @@ public:
   static constexpr double multiplier_fraction() { return 1e-6; }
 
 private:
-  void pair(const Mesh &mesh, int primary_side_set, int secondary_side_set,
+  void pair(const Mesh &mesh, ContactSurface primary, ContactSurface secondary,
             const MortarPairingOptions &options, const std::string &where,
-            const std::vector<Point> *displacement);
+            const std::function<Point(int node)> *displacement);
 
   std::vector<ContactRow> rows_;
   std::vector<std::vector<int>> margins_;

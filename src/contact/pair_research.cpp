@@ -25,18 +25,24 @@ PairResearch::PairResearch(const Mesh &mesh, const int primary_side_set,
                            const int secondary_side_set, const MortarPairingOptions &options,
                            std::string where, std::string name,
                            std::vector<std::vector<int>> margins)
-    : mesh_(mesh), primary_side_set_(primary_side_set), secondary_side_set_(secondary_side_set),
-      options_(options), where_(std::move(where)), name_(std::move(name)),
-      margins_(std::move(margins))
+    : mesh_(mesh), options_(options), where_(std::move(where)), name_(std::move(name)),
+      margins_(std::move(margins)),
+      primary_(mesh, primary_side_set, where_ + "/\"Primary Side Set\""),
+      secondary_(mesh, secondary_side_set, where_ + "/\"Secondary Side Set\"")
 {
-  for (const int id : {primary_side_set, secondary_side_set})
-  {
-    const ContactSurface surface(mesh, id, where_);
-    surface_nodes_.insert(surface_nodes_.end(), surface.nodes().begin(), surface.nodes().end());
-  }
+  for (const ContactSurface *surface : {&primary_, &secondary_})
+    surface_nodes_.insert(surface_nodes_.end(), surface->nodes().begin(), surface->nodes().end());
   std::sort(surface_nodes_.begin(), surface_nodes_.end());
   surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
                        surface_nodes_.end());
+}
+
+std::size_t PairResearch::surface_index(const int node) const
+{
+  const auto at = std::lower_bound(surface_nodes_.begin(), surface_nodes_.end(), node);
+  KILN_ASSERT(at != surface_nodes_.end() && *at == node,
+              "node " << node << " is on a surface of " << name_);
+  return static_cast<std::size_t>(at - surface_nodes_.begin());
 }
 
 std::vector<std::pair<int, int>> PairResearch::links(const std::vector<ContactRow> &rows) const
@@ -53,9 +59,11 @@ std::vector<ContactRow> PairResearch::rows_at(const std::vector<ContactRow> &cur
                                               const std::vector<Point> &u, const double time) const
 {
   KILN_ASSERT(current.size() == margins_.size(), "a margin per row of " << name_);
-  const MortarPairing pairing(mesh_, primary_side_set_, secondary_side_set_, options_, where_, u);
+  KILN_ASSERT(u.size() == surface_nodes_.size(), "a displacement per surface node of " << name_);
+  // The rows' nodes and partners are surface nodes: u is read at these only.
+  const auto u_of = [&](const int node) { return u[surface_index(node)]; };
+  const MortarPairing pairing(mesh_, primary_, secondary_, options_, where_, u_of);
   const std::vector<ContactRow> &fresh = pairing.rows();
-  const auto u_of = [&u](const int node) { return u[node]; };
   const auto node_text = [&](const int node)
   {
     const Point &X = mesh_.coordinates[node];

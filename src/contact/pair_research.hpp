@@ -5,8 +5,10 @@
 /// within the partners linked at set-up (the margins).
 #include "contact/contact_row.hpp"
 #include "contact/mortar_pairing.hpp"
+#include "mesh/contact_surface.hpp"
 #include "mesh/mesh.hpp"
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <utility>
@@ -29,11 +31,14 @@ public:
   /// DofManager: a superset of partner_links(rows).
   std::vector<std::pair<int, int>> links(const std::vector<ContactRow> &rows) const;
 
-  /// The mesh nodes of the two surfaces, increasing: rows_at() reads u at these only.
+  /// The mesh nodes of the two surfaces, increasing: rows_at() takes u at these only.
   const std::vector<int> &surface_nodes() const { return surface_nodes_; }
+  /// The index of mesh node `node` in surface_nodes(); `node` must be one of them.
+  std::size_t surface_index(int node) const;
 
-  /// The rows of the pair searched again at the state `u` (a displacement per mesh node, of
-  /// every surface node; the same on every rank) reached at `time` [s], replacing `current`
+  /// The rows of the pair searched again at the state `u` (the displacement of the two
+  /// surfaces [m], one per node of surface_nodes() in its order, the same on every rank:
+  /// gather_surface_displacement) reached at `time` [s], replacing `current`
   /// (the rows in force, of the same nodes as at set-up). Each new row keeps its node, its
   /// normal n_j (the axis its node's frame was closed with at set-up) and its slip limit; takes
   /// the new partners, weights and area D_jj; and has g0 redefined so that the gap is
@@ -47,12 +52,13 @@ public:
 
 private:
   const Mesh &mesh_;
-  int primary_side_set_;
-  int secondary_side_set_;
   MortarPairingOptions options_;
   std::string where_;
   std::string name_;
   std::vector<std::vector<int>> margins_;
+  /// The two surfaces as built at construction (in X): a search redone moves copies of them.
+  ContactSurface primary_;
+  ContactSurface secondary_;
   std::vector<int> surface_nodes_;
 };
 

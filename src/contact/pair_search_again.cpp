@@ -10,15 +10,12 @@
 
 namespace kiln
 {
-std::vector<ContactRow>
-search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings,
-                  const std::size_t p, const PairResearch &research, const Mesh &mesh,
-                  const std::function<Point(int node)> &u, const std::vector<int> &node_owner,
-                  const Teuchos::Comm<int> &comm, const double time)
+std::vector<Point> gather_surface_displacement(const std::vector<int> &nodes,
+                                               const std::function<Point(int node)> &u,
+                                               const std::vector<int> &node_owner,
+                                               const Teuchos::Comm<int> &comm)
 {
-  const ContactInterface &pairing = *pairings[p];
-  // The displacement of the two surfaces on every rank: each node from its owner.
-  const std::vector<int> &nodes = research.surface_nodes();
+  // Each node's u from its owner, zero from the other ranks: the sum is the owner's, exactly.
   const int rank = comm.getRank();
   std::vector<double> mine(3 * nodes.size(), 0.0), all(mine.size(), 0.0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -30,11 +27,23 @@ search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings
     }
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(),
                      all.data());
-  std::vector<Point> surface_u(static_cast<std::size_t>(mesh.n_nodes()), Point{0.0, 0.0, 0.0});
+  std::vector<Point> gathered(nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i)
-    surface_u[nodes[i]] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
+    gathered[i] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
+  return gathered;
+}
+
+std::vector<ContactRow>
+search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings,
+                  const std::size_t p, const PairResearch &research, const Mesh &mesh,
+                  const std::function<Point(int node)> &u, const std::vector<int> &node_owner,
+                  const Teuchos::Comm<int> &comm, const double time)
+{
+  const ContactInterface &pairing = *pairings[p];
+  // The displacement of the two surfaces on every rank (O(surface), not per mesh node).
   std::vector<ContactRow> rows = research.rows_at(
-      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()), surface_u, time);
+      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()),
+      gather_surface_displacement(research.surface_nodes(), u, node_owner, comm), time);
   // A new partner may not be a node of another pair or gap (the rows of one would overwrite
   // the other's), as at set-up.
   std::unordered_map<int, std::size_t> other; // node -> its other pair or gap

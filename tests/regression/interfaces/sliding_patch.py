@@ -42,7 +42,17 @@ same flux: held at its far end only, the heat entering body 1's contact face fol
 (its centre moves by 5 to 15 mm by 10 s; 0 with the cells of set-up). Beyond the margin the
 same exit 2 and message, the checkpoint of 3 s with the u of the search at 2 s. (The split gap
 case is the mechanics' alone.)
-usage: sliding_patch.py KILN WORKDIR NP MPIEXEC [heat]"""
+With the argument split-secondary: the secondary surface split across the ranks during the
+searches (issue 30, "the search and the pairs correct when a body's surface is split across
+ranks"; the plain np 2 run lets METIS cut body 1, the primary). Body 2 is meshed as two element
+blocks, 2 (y < 0) and 3 (y > 0), with Kiln/Mesh/Partition "By Block": blocks 1 and 2 on rank 0,
+block 3 on rank 1 at np 2, so that the rows of its contact face are owned by both ranks (both
+ranks' slips decide the searches, and the gathered u of the surface comes from both owners).
+The results' /mesh/cell_rank shows it: body 2's cells on the contact face lie on both ranks.
+Then the same checks as the run above (uniform pressure and stress to 1e-9 at every output
+time, the searches at 2 .. 10 s, slid to 15 mm, np 2 = np 1 to 1e-12 m); the restart, beyond
+the margin and onto a gap are the plain run's only.
+usage: sliding_patch.py KILN WORKDIR NP MPIEXEC [heat | split-secondary]"""
 import csv
 import math
 import re
@@ -59,6 +69,7 @@ import kiln_deck as kd  # noqa: E402  (tests/support/kiln_deck.py)
 
 kiln, work, n_ranks, mpiexec = sys.argv[1:5]
 HEAT = sys.argv[5:6] == ["heat"]
+split_secondary = sys.argv[5:6] == ["split-secondary"]
 work = Path(work)
 work.mkdir(parents=True, exist_ok=True)
 kiln_diff = Path(__file__).resolve().parents[3] / "tools" / "kiln-diff"
@@ -89,29 +100,45 @@ def block(x0, x1, y0, y1, z0, z1, n, first_node):
     return nodes, cells
 
 
-def write_mesh(path, gap_y=None):
+def write_mesh(path, gap_y=None, split=False):
     """The two bodies; with gap_y, side set 30: the faces y = gap_y of body 1's cells below it
-    (a gap to split body 1 at)."""
+    (a gap to split body 1 at); with split, body 2 as blocks 2 (y < 0) and 3 (y > 0)."""
     nodes1, cells1 = block(-0.04, 0.0, -0.03, 0.05, -0.02, 0.02, (4, 11, 4), 1)
     nodes2, cells2 = block(0.0, 0.04, -0.02, 0.02, -0.02, 0.02, (5, 6, 3), len(nodes1) + 1)
     nodes = nodes1 + nodes2
     tol = 1e-12
 
+    def below_zero(cell):
+        return sum(nodes[n - 1][1] for n in cell) < 0.0
+
+    blocks2 = [cells2]
+    if split:
+        blocks2 = [[c for c in cells2 if below_zero(c)], [c for c in cells2 if not below_zero(c)]]
+
     def sides(cells, first, on_face):
         return exodus_mesh.hex8_sides_where(cells, nodes, on_face, first)
 
-    first2 = len(cells1) + 1
+    def sides2(on_face):
+        """Body 2's faces on on_face, its blocks numbered on after body 1's cells."""
+        elems, faces, first = [], [], len(cells1) + 1
+        for cells in blocks2:
+            e, f = sides(cells, first, on_face)
+            elems, faces, first = elems + e, faces + f, first + len(cells)
+        return elems, faces
+
     side_sets = [(1,) + sides(cells1, 1, lambda p: abs(p[0] + 0.04) < tol),
                  (10,) + sides(cells1, 1, lambda p: abs(p[0]) < tol),
-                 (2,) + sides(cells2, first2, lambda p: abs(p[0] - 0.04) < tol),
-                 (20,) + sides(cells2, first2, lambda p: abs(p[0]) < tol)]
+                 (2,) + sides2(lambda p: abs(p[0] - 0.04) < tol),
+                 (20,) + sides2(lambda p: abs(p[0]) < tol)]
     if gap_y is not None:
         elems, faces = sides(cells1, 1, lambda p: abs(p[1] - gap_y) < tol)
         below = [(e, f) for e, f in zip(elems, faces)
                  if sum(nodes[n - 1][1] for n in cells1[e - 1]) / 8 < gap_y]
         side_sets.append((30, [e for e, _ in below], [f for _, f in below]))
-    exodus_mesh.write(str(path), nodes, [(1, "HEX8", cells1), (2, "HEX8", cells2)], side_sets,
-                      title="sliding patch")
+    exodus_mesh.write(str(path), nodes,
+                      [(1, "HEX8", cells1)] + [(2 + b, "HEX8", cells)
+                                               for b, cells in enumerate(blocks2)],
+                      side_sets, title="sliding patch")
 
 
 def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=0,
@@ -122,7 +149,8 @@ def deck(base, times, pair=None, checkpoint=None, mesh="sliding-patch.exo", gap=
     if HEAT:
         entry["Heat Transfer"] = {"Conductance": H}
     d = {"Physics": "Elasticity",
-         "Mesh": kd.exodus_mesh(mesh, gap),
+         "Mesh": {**kd.exodus_mesh(mesh, gap),
+                  **({"Partition": "By Block"} if split_secondary else {})},
          "Material": kd.lame(0.0, G),
          "Mechanics": {
              "Boundary Conditions": {
@@ -159,7 +187,7 @@ def history(path):
     return [[v for i, v in enumerate(r) if i != wall] for r in rows]
 
 
-write_mesh(work / "sliding-patch.exo")
+write_mesh(work / "sliding-patch.exo", split=split_secondary)
 
 # The run: uniform state at every output time, the searches logged.
 base = "slide"
@@ -176,7 +204,7 @@ for k in range(len(steps)):
     step = kd.read_step(str(run.results), k)
     pressure = step["contact_pressure"]
     rows = np.isfinite(pressure)
-    body2 = step["block"] == 2
+    body2 = step["block"] >= 2
     sigma = step["stress"]
     exact = np.zeros_like(sigma)
     exact[:, 0] = np.where(body2, -P, SIGMA_1)
@@ -214,6 +242,20 @@ last = kd.read_step(str(run.results))
 end_face = np.abs(last["x"][:, 0] - 0.04) < 1e-12
 check(abs(last["displacement"][end_face, 1] - 1.5e-2).max() < 1e-12, "slid to u_y = 15 mm")
 
+if split_secondary and int(n_ranks) > 1:
+    # The secondary surface split across the ranks: body 2's cells on the contact face (x = 0)
+    # on both.
+    with h5py.File(run.results, "r") as h5:
+        cell_rank = h5["mesh/cell_rank"][...]
+    step = kd.read_step(str(run.results), 0)
+    on_face = np.array([step["block"][c] >= 2 and np.abs(step["x"][cells, 0]).min() < 1e-12
+                        for c, cells in enumerate(step["cells"])])
+    ranks = sorted(set(int(r) for r in cell_rank[on_face]))
+    print(f"body 2's {on_face.sum()} cells on the contact face: on ranks {ranks} "
+          f"({[int((cell_rank[on_face] == r).sum()) for r in ranks]} cells)")
+    check(ranks == list(range(int(n_ranks))),
+          f"the secondary surface split across the {n_ranks} ranks ({ranks})")
+
 # np 2 against np 1: the same state to the solver's tolerance.
 if int(n_ranks) > 1:
     one = kd.run_kiln(kiln, kd.write_deck(str(work / "one"), deck("one", range(11))), 1,
@@ -234,6 +276,9 @@ if int(n_ranks) > 1:
     print(f"np {n_ranks} against np 1: max |u| apart {apart:.3g} m, |T| {apart_T:.3g} K")
     check(apart < 1e-12, f"np {n_ranks} = np 1 to 1e-12 m ({apart:.3g})")
     check(apart_T < 1e-9, f"np {n_ranks} = np 1 to 1e-9 K ({apart_T:.3g})")
+
+if split_secondary:
+    sys.exit(1 if check.failed else 0)
 
 # A restart after two searches: the same results and history as the run without it.
 base = "restarted"

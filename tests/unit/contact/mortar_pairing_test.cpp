@@ -10,6 +10,7 @@
 #include "base/errors.hpp"
 #include "contact/mortar_pairing.hpp"
 #include "contact/pair_research.hpp"
+#include "contact/pair_search_again.hpp"
 #include "contact/small_sliding.hpp"
 
 #include "mesh/box_mesh_generator.hpp"
@@ -18,6 +19,7 @@
 #include "support/two_body_mesh.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_Tuple.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -369,8 +371,19 @@ TEST(MortarPairing, InTheCurrentConfiguration)
   // Both bodies moved alike: the same rows as in the reference configuration.
   const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
   const MortarPairing reference(mesh, 1, 2, {}, pair);
-  std::vector<Point> u(static_cast<std::size_t>(mesh.n_nodes()), Point{0.03, -0.02, 0.05});
-  const MortarPairing moved(mesh, 1, 2, {}, pair, u);
+  // u is asked for at the surfaces' nodes only (the search holds no per-mesh-node vector).
+  const kiln::PairResearch research(mesh, 1, 2, {}, pair, "pair \"test\"", reference.margins());
+  const std::vector<int> &surfaces = research.surface_nodes();
+  ASSERT_LT(surfaces.size(), static_cast<std::size_t>(mesh.n_nodes()));
+  int off_surfaces = 0;
+  const MortarPairing moved(mesh, 1, 2, {}, pair,
+                            [&](const int node)
+                            {
+                              if (!std::binary_search(surfaces.begin(), surfaces.end(), node))
+                                ++off_surfaces;
+                              return Point{0.03, -0.02, 0.05};
+                            });
+  EXPECT_EQ(off_surfaces, 0);
   EXPECT_TRUE(moved.margins().empty());
   ASSERT_EQ(moved.rows().size(), reference.rows().size());
   for (std::size_t r = 0; r < moved.rows().size(); ++r)
@@ -383,6 +396,15 @@ TEST(MortarPairing, InTheCurrentConfiguration)
     for (std::size_t k = 0; k < a.weights.size(); ++k)
       EXPECT_NEAR(a.weights[k], b.weights[k], 1e-12);
   }
+}
+
+/// `u` (per mesh node) at the nodes of `research`'s surfaces, in their order (rows_at's u).
+std::vector<Point> on_surfaces(const kiln::PairResearch &research, const std::vector<Point> &u)
+{
+  std::vector<Point> values;
+  for (const int n : research.surface_nodes())
+    values.push_back(u[n]);
+  return values;
 }
 
 /// The search of the flat bodies' pair (side sets 1 and 2) redone within `pairing`'s margins.
@@ -404,7 +426,8 @@ TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
   const kiln::PairResearch research = research_of(mesh, pairing, options);
   const std::vector<Point> u = moved_block(mesh, 2, {0.1, 0.0, -0.004});
   const auto u_of = [&u](const int node) { return u[node]; };
-  const std::vector<ContactRow> rows = research.rows_at(pairing.rows(), u, 3.0);
+  const std::vector<ContactRow> rows =
+      research.rows_at(pairing.rows(), on_surfaces(research, u), 3.0);
   ASSERT_EQ(rows.size(), pairing.rows().size());
   int moved_partners = 0;
   for (std::size_t r = 0; r < rows.size(); ++r)
@@ -430,11 +453,44 @@ TEST(PairResearch, RowsRebuiltAfterASlideKeepTheGapContinuous)
   }
   EXPECT_GT(moved_partners, 0);
   // The same from the rows of that search, for a state that has not moved since: unchanged.
-  const std::vector<ContactRow> again = research.rows_at(rows, u, 4.0);
+  const std::vector<ContactRow> again = research.rows_at(rows, on_surfaces(research, u), 4.0);
   for (std::size_t r = 0; r < rows.size(); ++r)
   {
     EXPECT_EQ(again[r].partners, rows[r].partners);
     EXPECT_NEAR(again[r].gap0, rows[r].gap0, 1e-15);
+  }
+}
+
+TEST(PairResearch, SurfaceDisplacementGatheredFromTheOwners)
+{
+  // The surfaces' nodes owned in turn by the ranks (a surface split across all of them): every
+  // rank gets each node's u from its owner, aligned with surface_nodes(), and u is asked for
+  // at the nodes this rank owns only.
+  const Mesh mesh = kiln_test::two_flat_bodies({4, 4}, {5, 3}, 0.01);
+  const MortarPairing pairing(mesh, 1, 2, {}, pair);
+  const kiln::PairResearch research = research_of(mesh, pairing, {});
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int rank = comm->getRank(), n_ranks = comm->getSize();
+  std::vector<int> owner(static_cast<std::size_t>(mesh.n_nodes()));
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    owner[n] = (n / 3) % n_ranks;
+  const auto exact = [](const int n) { return Point{1e-3 * n, -2e-3 * n, 0.5 + n}; };
+  int not_owned = 0;
+  const std::vector<Point> u = kiln::gather_surface_displacement(
+      research.surface_nodes(),
+      [&](const int n)
+      {
+        not_owned += owner[n] != rank ? 1 : 0;
+        return exact(n);
+      },
+      owner, *comm);
+  EXPECT_EQ(not_owned, 0);
+  ASSERT_EQ(u.size(), research.surface_nodes().size());
+  for (std::size_t i = 0; i < u.size(); ++i)
+  {
+    const int n = research.surface_nodes()[i];
+    EXPECT_EQ(u[i], exact(n)) << "node " << n;
+    EXPECT_EQ(research.surface_index(n), i);
   }
 }
 
@@ -450,7 +506,8 @@ TEST(PairResearch, PartnersBeyondTheMarginEndTheRun)
   const kiln::PairResearch research = research_of(mesh, pairing, options);
   try
   {
-    (void)research.rows_at(pairing.rows(), moved_block(mesh, 2, {0.45, 0.0, 0.0}), 7.5);
+    (void)research.rows_at(pairing.rows(),
+                           on_surfaces(research, moved_block(mesh, 2, {0.45, 0.0, 0.0})), 7.5);
     ADD_FAILURE() << "no error";
   }
   catch (const kiln::RunError &e)
@@ -465,5 +522,6 @@ TEST(PairResearch, PartnersBeyondTheMarginEndTheRun)
   options.sliding_distance = 0.5;
   const MortarPairing wide(mesh, 1, 2, options, pair);
   const kiln::PairResearch within = research_of(mesh, wide, options);
-  EXPECT_NO_THROW((void)within.rows_at(wide.rows(), moved_block(mesh, 2, {0.05, 0.0, 0.0}), 1.0));
+  EXPECT_NO_THROW((void)within.rows_at(
+      wide.rows(), on_surfaces(within, moved_block(mesh, 2, {0.05, 0.0, 0.0})), 1.0));
 }
