@@ -38,7 +38,7 @@ public:
 
   /// The rows of the pair searched again at the state `u` (the displacement of the two
   /// surfaces [m], one per node of surface_nodes() in its order, the same on every rank:
-  /// gather_surface_displacement) reached at `time` [s], replacing `current`
+  /// gather_displacement) reached at `time` [s], replacing `current`
   /// (the rows in force, of the same nodes as at set-up). Each new row keeps its node, its
   /// normal n_j (the axis its node's frame was closed with at set-up) and its slip limit; takes
   /// the new partners, weights and area D_jj; and has g0 redefined so that the gap is

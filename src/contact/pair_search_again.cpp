@@ -1,6 +1,7 @@
 #include "contact/pair_search_again.hpp"
 
 #include "base/errors.hpp"
+#include "contact/surface_displacement.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -10,29 +11,6 @@
 
 namespace kiln
 {
-std::vector<Point> gather_surface_displacement(const std::vector<int> &nodes,
-                                               const std::function<Point(int node)> &u,
-                                               const std::vector<int> &node_owner,
-                                               const Teuchos::Comm<int> &comm)
-{
-  // Each node's u from its owner, zero from the other ranks: the sum is the owner's, exactly.
-  const int rank = comm.getRank();
-  std::vector<double> mine(3 * nodes.size(), 0.0), all(mine.size(), 0.0);
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (node_owner[nodes[i]] == rank)
-    {
-      const Point value = u(nodes[i]);
-      for (int c = 0; c < 3; ++c)
-        mine[3 * i + c] = value[c];
-    }
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(),
-                     all.data());
-  std::vector<Point> gathered(nodes.size());
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    gathered[i] = {all[3 * i], all[3 * i + 1], all[3 * i + 2]};
-  return gathered;
-}
-
 std::vector<ContactRow>
 search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings,
                   const std::size_t p, const PairResearch &research, const Mesh &mesh,
@@ -41,9 +19,9 @@ search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings
 {
   const ContactInterface &pairing = *pairings[p];
   // The displacement of the two surfaces on every rank (O(surface), not per mesh node).
-  std::vector<ContactRow> rows = research.rows_at(
-      std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()),
-      gather_surface_displacement(research.surface_nodes(), u, node_owner, comm), time);
+  std::vector<ContactRow> rows =
+      research.rows_at(std::vector<ContactRow>(pairing.rows().begin(), pairing.rows().end()),
+                       gather_displacement(research.surface_nodes(), u, node_owner, comm), time);
   // A new partner may not be a node of another pair or gap (the rows of one would overwrite
   // the other's), as at set-up.
   std::unordered_map<int, std::size_t> other; // node -> its other pair or gap

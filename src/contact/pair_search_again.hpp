@@ -15,22 +15,13 @@
 
 namespace kiln
 {
-/// The displacement [m] of the mesh nodes `nodes` (a pair's PairResearch::surface_nodes())
-/// on every rank, one per node in the order of `nodes`: `u` gives it at the nodes this rank
-/// owns (`node_owner`, per mesh node), and every rank receives each node's value from its owner
-/// (a sum over `comm` of 3 doubles per node: O(nodes) memory and traffic on every rank, never
-/// per mesh node). Collective.
-std::vector<Point> gather_surface_displacement(const std::vector<int> &nodes,
-                                               const std::function<Point(int node)> &u,
-                                               const std::vector<int> &node_owner,
-                                               const Teuchos::Comm<int> &comm);
-
 /// The rows of `pairings[p]` searched again by `research` at the accepted state of `time` [s]:
 /// `u` gives the displacement of the nodes this rank owns (`node_owner`, per mesh node), of
-/// which the surfaces' are gathered on every rank (gather_surface_displacement) so that every
-/// rank searches the same surfaces (PairResearch::rows_at). Throws RunError (the same on every
-/// rank) as rows_at does, and naming both if a new partner is a node of another pair or gap of
-/// `pairings` (the rows of one would overwrite the other's), as the set-up refuses it. Collective.
+/// which the surfaces' are gathered on every rank (gather_displacement,
+/// contact/surface_displacement.hpp) so that every rank searches the same surfaces
+/// (PairResearch::rows_at). Throws RunError (the same on every rank) as rows_at does, and naming
+/// both if a new partner is a node of another pair or gap of `pairings` (the rows of one would
+/// overwrite the other's), as the set-up refuses it. Collective.
 std::vector<ContactRow>
 search_pair_again(const std::vector<std::unique_ptr<ContactInterface>> &pairings, std::size_t p,
                   const PairResearch &research, const Mesh &mesh,

@@ -10,9 +10,11 @@
 
 namespace kiln
 {
-/// u of each of `nodes` (mesh nodes), in their order [m]: `u` gives the displacement of the
-/// nodes this rank owns (`node_owner`, per mesh node), summed over `comm` (each node from its
-/// owner alone, so exactly its value on every rank). Collective.
+/// u of each of `nodes` (mesh nodes, e.g. a pair's PairResearch::surface_nodes()), in their
+/// order [m]: `u` gives the displacement of the nodes this rank owns (`node_owner`, per mesh
+/// node) and is asked at those alone; summed over `comm` (each node from its owner alone, so
+/// exactly its value on every rank: 3 doubles per node of memory and traffic on every rank,
+/// never per mesh node). Collective.
 std::vector<Point> gather_displacement(const std::vector<int> &nodes,
                                        const std::function<Point(int node)> &u,
                                        const std::vector<int> &node_owner,

@@ -12,6 +12,7 @@
 #include "contact/pair_research.hpp"
 #include "contact/pair_search_again.hpp"
 #include "contact/small_sliding.hpp"
+#include "contact/surface_displacement.hpp"
 
 #include "mesh/box_mesh_generator.hpp"
 #include "mesh/contact_surface.hpp"
@@ -476,7 +477,7 @@ TEST(PairResearch, SurfaceDisplacementGatheredFromTheOwners)
     owner[n] = (n / 3) % n_ranks;
   const auto exact = [](const int n) { return Point{1e-3 * n, -2e-3 * n, 0.5 + n}; };
   int not_owned = 0;
-  const std::vector<Point> u = kiln::gather_surface_displacement(
+  const std::vector<Point> u = kiln::gather_displacement(
       research.surface_nodes(),
       [&](const int n)
       {
