@@ -58,6 +58,8 @@ public:
   bool split() const { return gap_ >= 0; }
   /// The pairing's name in messages (the split gap's: "gap side set <id>").
   const std::string &name() const { return name_; }
+  /// lambda + 2G [Pa] (the problem's scale of the pressures).
+  double modulus() const { return modulus_; }
   /// The rows with `node` among their partners (several where gaps cross), as [begin, end).
   std::pair<const int *, const int *> rows_of_partner(const int node) const
   {
@@ -79,6 +81,7 @@ private:
   std::vector<int> rows_of_partner_; ///< the rows of each partner node, increasing
   std::vector<int> row_of_node_;     ///< per mesh node, its row as node j, or -1
   int searches_ = 1;
+  double modulus_ = 0.0; ///< lambda + 2G [Pa]
   double c_scale_ = 0.0; ///< a pairing's s (lambda + 2G) [Pa]: c = this / sqrt(D_jj)
 };
 
