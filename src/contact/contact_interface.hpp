@@ -85,6 +85,18 @@ private:
   double c_scale_ = 0.0; ///< a pairing's s (lambda + 2G) [Pa]: c = this / sqrt(D_jj)
 };
 
+/// A pressure P [Pa] of a pair in contact is above round-off if P > round_off_strain times the
+/// interface's lambda + 2G (the pressures of round-off at which the bodies touch before they
+/// close with "Free Motions" = "Minimum Norm" are at most 1.1e-6 Pa on the split-and-pair
+/// contact box, the smallest real ones there kPa; 1e-12 of lambda + 2G is 0.27 Pa for steel).
+constexpr double round_off_strain = 1e-12;
+/// Whether a pair in contact with pressure `P` [Pa] carries a load above round-off at an
+/// interface of lambda + 2G = `modulus` [Pa].
+inline bool carries_load(const double P, const double modulus)
+{
+  return P > round_off_strain * modulus;
+}
+
 /// The links (j, k) of rows to their partners, for DofManager (which makes both ways).
 std::vector<std::pair<int, int>> partner_links(const std::vector<ContactRow> &rows);
 } // namespace kiln

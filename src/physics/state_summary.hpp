@@ -66,17 +66,6 @@ struct StateSummary
   std::vector<PairFigures> pairs;
 };
 
-/// A pressure P [Pa] of a pair in contact is above round-off if P > round_off_strain times the
-/// interface's lambda + 2G (the converged pressures of round-off are 1e-18 of it, 3e-7 Pa, on
-/// the split-and-pair contact box; 1e-12 of it is 0.2 Pa for steel).
-constexpr double round_off_strain = 1e-12;
-/// Whether a pair in contact with pressure `P` [Pa] carries a load above round-off at an
-/// interface of lambda + 2G = `modulus` [Pa].
-inline bool carries_load(const double P, const double modulus)
-{
-  return P > round_off_strain * modulus;
-}
-
 /// The temperature figures at `fields` (`conduction`: each cell's enthalpy H(T); nothing
 /// without a temperature, which leaves them 0). Collective.
 void summarize_temperature(const Mesh &mesh, const DofManager &dofs, const NodalFields &fields,

@@ -229,6 +229,8 @@ TEST(ContactBoxSplitAndPair, ClosedStateWithSplitGapsAndAPairRestarted)
       // count it, the summary's events do not (ContactEvents): it never carried a load.
       EXPECT_TRUE(has(log, "\npair \"cut\" closed at: 53 s\npair \"cut\" opened at: never\n"))
           << log;
+      // Nor do the log's lines call them openings (the split gaps touch in the same way).
+      EXPECT_FALSE(has(log, "has opened")) << log;
       EXPECT_TRUE(has(log, "gap tables: " + part + ".gap-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "gap tables (2): " + part + ".gap_21-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "pair tables (cut): " + part + ".pair_cut-000000.csv to ")) << log;
