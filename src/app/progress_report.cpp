@@ -72,10 +72,15 @@ double ProgressReport::wall_time() const
 
 void ProgressReport::start(const StateSummary &summary)
 {
-  last_active_ = summary.n_pairs > 0 ? summary.n_active : -1;
+  gaps_ = ContactEvents();
+  if (summary.n_pairs > 0)
+    gaps_.start(summary.n_active, summary.n_loaded);
   pairs_.clear();
   for (const PairFigures &pair : summary.pairs)
-    pairs_.push_back({pair.name, pair.n_active, {}, {}});
+  {
+    pairs_.push_back({pair.name, ContactEvents()});
+    pairs_.back().events.start(pair.n_active, pair.n_loaded);
+  }
 }
 
 std::vector<StatusField> ProgressReport::figures(const double time,
@@ -145,22 +150,11 @@ void ProgressReport::step(const TimeStepper::State &state, const NewtonSolver::R
                           const double error, const StateSummary &summary)
 {
   if (summary.n_pairs > 0)
-  {
-    if (last_active_ >= 0 && summary.n_active == summary.n_pairs && last_active_ < summary.n_pairs)
-      closed_.push_back(state.time);
-    if (last_active_ > 0 && summary.n_active == 0)
-      opened_.push_back(state.time);
-    last_active_ = summary.n_active;
-  }
+    gaps_.step(state.time, summary.n_pairs, summary.n_active, summary.n_loaded);
   for (std::size_t p = 0; p < pairs_.size() && p < summary.pairs.size(); ++p)
   {
-    PairEvents &events = pairs_[p];
     const PairFigures &pair = summary.pairs[p];
-    if (pair.n_active == pair.n_rows && events.last_active < pair.n_rows)
-      events.closed.push_back(state.time);
-    if (events.last_active > 0 && pair.n_active == 0)
-      events.opened.push_back(state.time);
-    events.last_active = pair.n_active;
+    pairs_[p].events.step(state.time, pair.n_rows, pair.n_active, pair.n_loaded);
   }
   time_left_.step(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(),
@@ -220,15 +214,15 @@ void ProgressReport::summary(const std::string &status, const TimeStepper::State
   out << "Jacobians kept in this run: " << stats.jacobians_kept << "\n";
   out << "preconditioners built in this run: " << stats.preconditioners_built << "\n";
   out << "preconditioners kept in this run: " << stats.preconditioners_kept << "\n";
-  if (last_active_ >= 0)
+  if (gaps_.started())
   {
-    out << "gap closed at: " << internal::times_list(closed_) << "\n";
-    out << "gap opened at: " << internal::times_list(opened_) << "\n";
+    out << "gap closed at: " << internal::times_list(gaps_.closed()) << "\n";
+    out << "gap opened at: " << internal::times_list(gaps_.opened()) << "\n";
   }
   for (const PairEvents &pair : pairs_)
   {
-    out << pair.name << " closed at: " << internal::times_list(pair.closed) << "\n";
-    out << pair.name << " opened at: " << internal::times_list(pair.opened) << "\n";
+    out << pair.name << " closed at: " << internal::times_list(pair.events.closed()) << "\n";
+    out << pair.name << " opened at: " << internal::times_list(pair.events.opened()) << "\n";
   }
   std::string per_rank;
   for (const double p : peaks)

@@ -1,5 +1,6 @@
 #pragma once
 /// What a run tells its user as it goes, and at its end.
+#include "app/contact_events.hpp"
 #include "app/time_left_estimate.hpp"
 #include "base/log.hpp"
 #include "physics/state_summary.hpp"
@@ -38,7 +39,8 @@ double peak_rss_bytes();
 /// - The time left (TimeLeftEstimate) is printed once the steps after the first two give a
 ///   pace.
 /// - At the end: "key: value" lines (status, times, steps, iterations, the times the split gaps
-///   closed and opened ("gap closed at"), those of each contact pair ("pair "NAME" closed at"),
+///   closed and opened ("gap closed at"), those of each contact pair ("pair "NAME" closed at";
+///   ContactEvents: a pair that touches with a pressure of round-off only does not open),
 ///   the peak memory per rank and summed, the files written).
 class ProgressReport
 {
@@ -85,15 +87,12 @@ private:
   Run run_;
   std::chrono::steady_clock::time_point started_; ///< the first step's start (construction)
   TimeLeftEstimate time_left_;
-  int last_active_ = -1; ///< pairs in contact at the last state (-1: none yet)
-  std::vector<double> closed_, opened_;
-  /// Per contact pair (StateSummary::pairs): its name, its rows in contact at the last state,
-  /// the times it closed (all rows in contact) and opened (none).
+  ContactEvents gaps_; ///< of the split gaps' node pairs (started only if there are some)
+  /// Per contact pair (StateSummary::pairs): its name and events.
   struct PairEvents
   {
     std::string name;
-    int last_active = 0;
-    std::vector<double> closed, opened;
+    ContactEvents events;
   };
   std::vector<PairEvents> pairs_;
 };

@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
+#include <string>
 
 namespace kiln
 {
@@ -66,28 +67,35 @@ void ActiveSetMonitor::jacobian_evaluated(const std::vector<char> &active)
   last_ = active;
 }
 
-void ActiveSetMonitor::resume(const std::vector<char> &active)
+void ActiveSetMonitor::resume(const std::vector<char> &active, const std::vector<char> &loaded)
 {
   last_ = active;
   accepted_active_ = count(active);
+  accepted_loaded_ = count(loaded);
 }
 
-void ActiveSetMonitor::step_accepted(const double time, const std::vector<char> &active)
+void ActiveSetMonitor::step_accepted(const double time, const std::vector<char> &active,
+                                     const std::vector<char> &loaded)
 {
   last_ = active;
   const int n_active = count(active);
+  const int n_loaded = count(loaded);
   if (n_active != accepted_active_ && !out_.is_null())
   {
+    const char *what = pair_ ? "the pair" : "the gap";
+    std::string event;
+    if (n_active == n_pairs_ && accepted_active_ < n_pairs_)
+      event = std::string(": ") + what + " has closed";
+    else if (n_active == 0 && accepted_active_ > 0)
+      event = accepted_loaded_ > 0
+                  ? std::string(": ") + what + " has opened"
+                  : std::string(": ") + what + " carried a pressure of round-off only (not an " +
+                        "opening)";
     *out_ << "contact" << gap_name_ << " at t = " << time << " s: " << n_active << " of "
           << n_pairs_ << (pair_ ? " secondary nodes" : " gap pairs") << " in contact (was "
-          << accepted_active_ << ")"
-          << (n_active == n_pairs_ && accepted_active_ < n_pairs_
-                  ? (pair_ ? ": the pair has closed" : ": the gap has closed")
-              : n_active == 0 && accepted_active_ > 0
-                  ? (pair_ ? ": the pair has opened" : ": the gap has opened")
-                  : "")
-          << "\n";
+          << accepted_active_ << ")" << event << "\n";
   }
   accepted_active_ = n_active;
+  accepted_loaded_ = n_loaded;
 }
 } // namespace kiln

@@ -39,12 +39,14 @@ public:
   void jacobian_evaluated(const std::vector<char> &active);
   /// Whether this step has fallen back to Fischer-Burmeister after a cycle.
   bool fallback() const { return fallback_; }
-  /// A step ending at `time` is accepted with this active set: logs the gap closing or
-  /// opening.
-  void step_accepted(double time, const std::vector<char> &active);
-  /// A run continued from a saved state with this active set: no log line, and the next
-  /// changes are counted from it.
-  void resume(const std::vector<char> &active);
+  /// A step ending at `time` is accepted with this active set, `loaded` the pairs in contact
+  /// whose pressure is above round-off (carries_load): logs the gap closing or opening (none
+  /// in contact after some; if none of those carried a load, the line says so instead of
+  /// "has opened": they touched at a pressure of round-off, as with "Minimum Norm").
+  void step_accepted(double time, const std::vector<char> &active, const std::vector<char> &loaded);
+  /// A run continued from a saved state with this active set (and loaded pairs): no log line,
+  /// and the next changes are counted from it.
+  void resume(const std::vector<char> &active, const std::vector<char> &loaded);
   /// Pairs in contact, over all ranks.
   int count(const std::vector<char> &active) const;
 
@@ -58,6 +60,7 @@ private:
   std::vector<char> last_;   ///< the set at the last Jacobian (or accepted step)
   int jacobians_ = 0;        ///< Jacobian evaluations in this step
   int accepted_active_ = 0;  ///< pairs in contact after the last accepted step
+  int accepted_loaded_ = 0;  ///< of which loaded
   bool fallback_ = false;
 };
 } // namespace kiln

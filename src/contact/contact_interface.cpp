@@ -10,7 +10,8 @@ namespace kiln
 {
 ContactInterface::ContactInterface(const Mesh &mesh, const DofManager &dofs, const int gap,
                                    const double modulus, const double scale)
-    : mesh_(mesh), gap_(gap), name_("gap side set " + std::to_string(mesh.gap_side_sets[gap]))
+    : mesh_(mesh), gap_(gap), name_("gap side set " + std::to_string(mesh.gap_side_sets[gap])),
+      modulus_(modulus)
 {
   for (const GapPair &gap_pair : mesh.gap_pairs)
   {
@@ -31,7 +32,7 @@ ContactInterface::ContactInterface(const Mesh &mesh, const DofManager &dofs, con
 ContactInterface::ContactInterface(const Mesh &mesh, const DofManager &dofs,
                                    std::vector<ContactRow> rows, const double modulus,
                                    const double scale, std::string name)
-    : mesh_(mesh), name_(std::move(name)), c_scale_(scale * modulus)
+    : mesh_(mesh), name_(std::move(name)), modulus_(modulus), c_scale_(scale * modulus)
 {
   for (ContactRow &given : rows)
   {

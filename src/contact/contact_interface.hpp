@@ -58,6 +58,8 @@ public:
   bool split() const { return gap_ >= 0; }
   /// The pairing's name in messages (the split gap's: "gap side set <id>").
   const std::string &name() const { return name_; }
+  /// lambda + 2G [Pa] (the problem's scale of the pressures).
+  double modulus() const { return modulus_; }
   /// The rows with `node` among their partners (several where gaps cross), as [begin, end).
   std::pair<const int *, const int *> rows_of_partner(const int node) const
   {
@@ -79,8 +81,21 @@ private:
   std::vector<int> rows_of_partner_; ///< the rows of each partner node, increasing
   std::vector<int> row_of_node_;     ///< per mesh node, its row as node j, or -1
   int searches_ = 1;
+  double modulus_ = 0.0; ///< lambda + 2G [Pa]
   double c_scale_ = 0.0; ///< a pairing's s (lambda + 2G) [Pa]: c = this / sqrt(D_jj)
 };
+
+/// A pressure P [Pa] of a pair in contact is above round-off if P > round_off_strain times the
+/// interface's lambda + 2G (the pressures of round-off at which the bodies touch before they
+/// close with "Free Motions" = "Minimum Norm" are at most 1.1e-6 Pa on the split-and-pair
+/// contact box, the smallest real ones there kPa; 1e-12 of lambda + 2G is 0.27 Pa for steel).
+constexpr double round_off_strain = 1e-12;
+/// Whether a pair in contact with pressure `P` [Pa] carries a load above round-off at an
+/// interface of lambda + 2G = `modulus` [Pa].
+inline bool carries_load(const double P, const double modulus)
+{
+  return P > round_off_strain * modulus;
+}
 
 /// The links (j, k) of rows to their partners, for DofManager (which makes both ways).
 std::vector<std::pair<int, int>> partner_links(const std::vector<ContactRow> &rows);

@@ -70,11 +70,19 @@ void NormalContact::start_step()
 
 void NormalContact::step_accepted(const double time)
 {
-  monitor_.step_accepted(time, active());
+  monitor_.step_accepted(time, active(), loaded());
 }
 
 void NormalContact::resume()
 {
-  monitor_.resume(active());
+  monitor_.resume(active(), loaded());
+}
+
+std::vector<char> NormalContact::loaded() const
+{
+  std::vector<char> loaded(active().size(), 0);
+  for (std::size_t i = 0; i < loaded.size(); ++i)
+    loaded[i] = active()[i] && carries_load(pressure()[i], interface().modulus());
+  return loaded;
 }
 } // namespace kiln

@@ -37,6 +37,9 @@ public:
 private:
   ComplementarityFunction::Value law(bool normal, double P, double cg) const override;
   bool holds(double P, double cg) const override;
+  /// Per owned pair at the last decision: in contact with a pressure above round-off
+  /// (carries_load).
+  std::vector<char> loaded() const;
 
   std::unique_ptr<ComplementarityFunction> function_; ///< the input's
   std::unique_ptr<ComplementarityFunction> fallback_; ///< after a cycle

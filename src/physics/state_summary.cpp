@@ -80,11 +80,11 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
   if (interfaces.empty())
     return;
   const std::size_t n_gaps = interfaces.front()->interface().mesh().gap_side_sets.size();
-  // Per gap: in contact, area, force (sums); g, -g (maxima).
-  std::vector<double> sums(3 * n_gaps, 0.0),
+  // Per gap: in contact, area, force, loaded (sums); g, -g (maxima).
+  std::vector<double> sums(4 * n_gaps, 0.0),
       extremes(2 * n_gaps, -std::numeric_limits<double>::infinity());
   std::vector<int> n_pairs(n_gaps, 0);
-  // Per pairing: rows in contact, area in contact, force (sums).
+  // Per pairing: rows in contact, area in contact, force, loaded (sums).
   std::vector<double> pair_sums;
   for (const InterfaceStrategy *contact : interfaces)
   {
@@ -95,7 +95,7 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
       pair.name = interface.name();
       pair.n_rows = interface.n_rows();
       summary.pairs.push_back(pair);
-      double sums_of_pair[3] = {0.0, 0.0, 0.0};
+      double sums_of_pair[4] = {0.0, 0.0, 0.0, 0.0};
       const auto &owned = interface.owned_rows();
       for (std::size_t i = 0; i < owned.size(); ++i)
         if (contact->active()[i])
@@ -104,8 +104,9 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
           sums_of_pair[0] += 1.0;
           sums_of_pair[1] += area;
           sums_of_pair[2] += area * contact->pressure()[i];
+          sums_of_pair[3] += carries_load(contact->pressure()[i], interface.modulus()) ? 1.0 : 0.0;
         }
-      pair_sums.insert(pair_sums.end(), sums_of_pair, sums_of_pair + 3);
+      pair_sums.insert(pair_sums.end(), sums_of_pair, sums_of_pair + 4);
       continue;
     }
     const std::size_t g = static_cast<std::size_t>(interface.gap());
@@ -119,9 +120,10 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
       extremes[2 * g + 1] = std::max(extremes[2 * g + 1], -opening);
       if (contact->active()[i])
       {
-        sums[3 * g] += 1.0;
-        sums[3 * g + 1] += pair.area;
-        sums[3 * g + 2] += pair.area * contact->pressure()[i];
+        sums[4 * g] += 1.0;
+        sums[4 * g + 1] += pair.area;
+        sums[4 * g + 2] += pair.area * contact->pressure()[i];
+        sums[4 * g + 3] += carries_load(contact->pressure()[i], interface.modulus()) ? 1.0 : 0.0;
       }
     }
   }
@@ -136,9 +138,10 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
                        pair_sums.data(), pair_totals.data());
   for (std::size_t p = 0; p < summary.pairs.size(); ++p)
   {
-    summary.pairs[p].n_active = static_cast<int>(pair_totals[3 * p]);
-    summary.pairs[p].contact_area = pair_totals[3 * p + 1];
-    summary.pairs[p].normal_force = pair_totals[3 * p + 2];
+    summary.pairs[p].n_active = static_cast<int>(pair_totals[4 * p]);
+    summary.pairs[p].contact_area = pair_totals[4 * p + 1];
+    summary.pairs[p].normal_force = pair_totals[4 * p + 2];
+    summary.pairs[p].n_loaded = static_cast<int>(pair_totals[4 * p + 3]);
   }
   summary.gaps.assign(n_gaps, GapFigures{});
   double all_max[2] = {-std::numeric_limits<double>::infinity(),
@@ -147,13 +150,15 @@ void summarize_contact(const std::vector<const InterfaceStrategy *> &interfaces,
   {
     GapFigures &gap = summary.gaps[g];
     gap.n_pairs = n_pairs[g];
-    gap.n_active = static_cast<int>(totals[3 * g]);
-    gap.contact_area = totals[3 * g + 1];
-    gap.normal_force = totals[3 * g + 2];
+    gap.n_active = static_cast<int>(totals[4 * g]);
+    gap.contact_area = totals[4 * g + 1];
+    gap.normal_force = totals[4 * g + 2];
+    gap.n_loaded = static_cast<int>(totals[4 * g + 3]);
     gap.max_opening = gap.n_pairs > 0 ? maxima[2 * g] : 0.0;
     gap.min_opening = gap.n_pairs > 0 ? -maxima[2 * g + 1] : 0.0;
     summary.n_pairs += gap.n_pairs;
     summary.n_active += gap.n_active;
+    summary.n_loaded += gap.n_loaded;
     summary.contact_area += gap.contact_area;
     summary.normal_force += gap.normal_force;
     all_max[0] = std::max(all_max[0], maxima[2 * g]);

@@ -15,10 +15,11 @@ namespace kiln
 /// The contact figures of one gap (every rank alike): as StateSummary's, over its pairs.
 struct GapFigures
 {
-  int n_pairs = 0;                                             ///< pairs with an interface
-  int n_active = 0;                                            ///< pairs in contact
-  double contact_area = 0.0;                                   ///< [m^2]
-  double normal_force = 0.0;                                   ///< compression > 0 [N]
+  int n_pairs = 0;           ///< pairs with an interface
+  int n_active = 0;          ///< pairs in contact
+  int n_loaded = 0;          ///< pairs in contact that carry a pressure (StateSummary::n_loaded)
+  double contact_area = 0.0; ///< [m^2]
+  double normal_force = 0.0; ///< compression > 0 [N]
   double max_opening = 0.0, min_opening = 0.0;                 ///< [m] (0 without pairs)
   double heat_flow = std::numeric_limits<double>::quiet_NaN(); ///< from side a to b [W]
 };
@@ -30,6 +31,7 @@ struct PairFigures
   std::string name;          ///< the interface's name in the log: pair "NAME"
   int n_rows = 0;            ///< rows of the pairing
   int n_active = 0;          ///< rows in contact
+  int n_loaded = 0;          ///< rows in contact that carry a pressure (StateSummary::n_loaded)
   double contact_area = 0.0; ///< sum over the rows in contact of D_jj [m^2]
   double normal_force = 0.0; ///< sum_j D_jj P_j, compression > 0 [N]
   /// The heat across the pair from the secondary to the primary side [W]
@@ -48,11 +50,15 @@ struct StateSummary
   double max_displacement = 0.0; ///< max over the nodes of |u| [m]
   int n_pairs = 0;               ///< gap pairs
   int n_active = 0;              ///< pairs in contact
-  double contact_area = 0.0;     ///< Σ A of the pairs in contact [m^2]
-  double normal_force = 0.0;     ///< Σ A p of the pairs in contact, compression > 0 [N]
-  double max_opening = 0.0;      ///< max over the pairs of g [m] (0 without pairs)
-  double min_opening = 0.0;      ///< min over the pairs of g, negative if penetrated [m]
-  double max_penetration = 0.0;  ///< max over the pairs of -g, at least 0 [m]
+  /// Pairs in contact whose pressure is above round-off: P > round_off_strain * (lambda + 2G)
+  /// (with "Free Motions" = "Minimum Norm" the bodies may touch at a pair that carries a
+  /// pressure of round-off, which may hold or not from one step to the next).
+  int n_loaded = 0;
+  double contact_area = 0.0;    ///< Σ A of the pairs in contact [m^2]
+  double normal_force = 0.0;    ///< Σ A p of the pairs in contact, compression > 0 [N]
+  double max_opening = 0.0;     ///< max over the pairs of g [m] (0 without pairs)
+  double min_opening = 0.0;     ///< min over the pairs of g, negative if penetrated [m]
+  double max_penetration = 0.0; ///< max over the pairs of -g, at least 0 [m]
   /// Per gap (Mesh::gap_side_sets order); the totals above are over all of them.
   std::vector<GapFigures> gaps;
   /// Per contact pair (the pairings' interfaces in Mechanics/Contact/Pairs order); not in the

@@ -38,7 +38,6 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -224,28 +223,14 @@ TEST(ContactBoxSplitAndPair, ClosedStateWithSplitGapsAndAPairRestarted)
       // The step lines and the summary: the split gaps' node pairs and the pair's nodes.
       EXPECT_TRUE(has(log, "53/53 pairs in contact, 28/28 contact-pair nodes in contact")) << log;
       EXPECT_TRUE(has(log, "\ngap closed at: 53 s\ngap opened at: never\n")) << log;
-      // The pair closes for good at 53 s. Before, Minimum Norm holds the bodies touching at a
-      // node with a pressure of round-off size, so the pair may "open" and "close" at that node
-      // at times that depend on round-off (Newton's start, the solver): none after 53 s.
-      EXPECT_TRUE(has(log, "\npair \"cut\" closed at: ")) << log;
-      const std::string opened = "\npair \"cut\" opened at: ";
-      const std::size_t at = log.find(opened);
-      ASSERT_NE(at, std::string::npos) << log;
-      std::istringstream opened_times(
-          log.substr(at + opened.size(), log.find('\n', at + 1) - at - opened.size()));
-      std::string word;
-      while (opened_times >> word)
-      {
-        if (word != "never" && word != "s," && word != "s")
-        {
-          EXPECT_LT(std::stod(word), 53.0) << "the pair opened after it closed at 53 s:\n" << log;
-        }
-      }
-      const std::string closed = "\npair \"cut\" closed at: ";
-      const std::size_t at_closed = log.find(closed);
-      const std::string closed_line =
-          log.substr(at_closed, log.find('\n', at_closed + 1) - at_closed);
-      EXPECT_EQ(closed_line.substr(closed_line.size() - 4), "53 s") << closed_line;
+      // The pair closes at 53 s. Before, Minimum Norm holds the bodies touching at a node
+      // with a pressure of round-off size (1e-6 Pa at most), so that node may leave and re-enter
+      // contact at times that depend on round-off (Newton's start, the solver): the step lines
+      // count it, the summary's events do not (ContactEvents): it never carried a load.
+      EXPECT_TRUE(has(log, "\npair \"cut\" closed at: 53 s\npair \"cut\" opened at: never\n"))
+          << log;
+      // Nor do the log's lines call them openings (the split gaps touch in the same way).
+      EXPECT_FALSE(has(log, "has opened")) << log;
       EXPECT_TRUE(has(log, "gap tables: " + part + ".gap-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "gap tables (2): " + part + ".gap_21-000000.csv to ")) << log;
       EXPECT_TRUE(has(log, "pair tables (cut): " + part + ".pair_cut-000000.csv to ")) << log;
