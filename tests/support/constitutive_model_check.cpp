@@ -18,10 +18,56 @@ kiln::PointInput point(const kiln::Voigt &strain, const double T, const double d
 Evaluation evaluate(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
                     const std::vector<double> &old_state)
 {
+  return evaluate(model, in, old_state, std::vector<double>(old_state.size(), 0.0));
+}
+
+Evaluation evaluate(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
+                    const std::vector<double> &old_state, const std::vector<double> &start)
+{
   Evaluation e;
-  e.state.assign(old_state.size(), 0.0);
+  e.state = start;
   model.evaluate(in, old_state.data(), e.state.data(), e.response);
   return e;
+}
+
+namespace
+{
+/// max |a − b| / max(max |b|, floor) over the entries.
+template <class Array>
+double relative_difference(const Array &a, const Array &b, const double floor = 1e-300)
+{
+  double difference = 0.0, scale = floor;
+  for (std::size_t i = 0; i < b.size(); ++i)
+  {
+    difference = std::max(difference, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(b[i]));
+  }
+  return difference / scale;
+}
+} // namespace
+
+double start_dependence(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
+                        const std::vector<double> &old_state,
+                        const std::vector<std::vector<double>> &starts)
+{
+  const Evaluation cold = evaluate(model, in, old_state);
+  double worst = 0.0;
+  for (const std::vector<double> &start : starts)
+  {
+    const Evaluation warm = evaluate(model, in, old_state, start);
+    worst = std::max(worst, relative_difference(warm.response.stress, cold.response.stress));
+    worst = std::max(worst, relative_difference(warm.state, cold.state));
+    if (!in.derivatives)
+      continue;
+    const kiln::IsotropicTangent &w = warm.response.isotropic, &c = cold.response.isotropic;
+    const std::array<double, 3> w_moduli{w.lambda, w.shear, w.rank_one};
+    const std::array<double, 3> c_moduli{c.lambda, c.shear, c.rank_one};
+    worst = std::max(worst, relative_difference(w_moduli, c_moduli));
+    worst = std::max(worst, relative_difference(w.n, c.n));
+    worst = std::max(worst, relative_difference(warm.response.stress_temperature_derivative,
+                                                cold.response.stress_temperature_derivative));
+  }
+  return worst;
 }
 
 DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
@@ -64,7 +110,7 @@ DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const k
                                                   : temperature_error};
   if (analytic.isotropic.valid)
   {
-    const kiln::VoigtMatrix form = tangent_of(analytic.isotropic);
+    const kiln::VoigtMatrix form = analytic.isotropic.matrix();
     double form_error = 0.0;
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)
@@ -72,16 +118,6 @@ DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const k
     errors.isotropic = form_error / tangent_scale;
   }
   return errors;
-}
-
-kiln::VoigtMatrix tangent_of(const kiln::IsotropicTangent &form)
-{
-  kiln::VoigtMatrix C{};
-  for (int I = 0; I < 6; ++I)
-    for (int J = 0; J < 6; ++J)
-      C[I][J] = (I < 3 && J < 3 ? form.lambda : 0.0) + (I == J ? 2.0 * form.shear : 0.0) +
-                form.rank_one * form.n[I] * form.n[J] * (J < 3 ? 1.0 : 2.0);
-  return C;
 }
 
 kiln::Voigt rotate(const std::array<std::array<double, 3>, 3> &R, const kiln::Voigt &a)

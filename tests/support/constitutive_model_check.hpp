@@ -19,10 +19,6 @@ struct DerivativeErrors
   double isotropic = -1.0;
 };
 
-/// The 6x6 tangent (Kiln's Voigt convention) of an isotropic form: λ_t [I, J < 3] + 2 μ_t δ_IJ +
-/// γ n_I n_J w_J.
-kiln::VoigtMatrix tangent_of(const kiln::IsotropicTangent &form);
-
 /// Central differences of evaluate() at `in` from `old_state` (n_state() entries), with
 /// steps `strain_step` on each strain component and `temperature_step` on T.
 DerivativeErrors derivative_errors(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
@@ -40,6 +36,18 @@ struct Evaluation
 };
 Evaluation evaluate(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
                     const std::vector<double> &old_state);
+/// The same with `new_state` holding `start` on entry (a last evaluation's state, which a model
+/// may start its local iteration from).
+Evaluation evaluate(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
+                    const std::vector<double> &old_state, const std::vector<double> &start);
+
+/// How much the response at `in` depends on what `new_state` holds on entry: the largest
+/// relative difference, over the stress, the new state and (with derivatives) the isotropic
+/// form and ∂σ/∂T, between an evaluation from zeros and evaluations from `starts` (each
+/// n_state() entries: the state of a last evaluation, exact, perturbed or nonsense).
+double start_dependence(const kiln::ConstitutiveModel &model, const kiln::PointInput &in,
+                        const std::vector<double> &old_state,
+                        const std::vector<std::vector<double>> &starts);
 
 /// R a R^T for the symmetric tensor a in Voigt form (tensor shears), R a rotation.
 kiln::Voigt rotate(const std::array<std::array<double, 3>, 3> &R, const kiln::Voigt &a);

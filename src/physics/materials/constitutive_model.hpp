@@ -27,6 +27,10 @@ struct PointInput
   /// evaluation, which only reads the stress and the new state; a model may then leave them
   /// unset).
   bool derivatives = true;
+  /// Whether the caller reads the 6x6 `tangent` where the model also gives the isotropic form
+  /// (false: the elasticity kernel, which contracts the form and reads `tangent` only at points
+  /// without it; a model that sets `isotropic.valid` may then leave `tangent` unset).
+  bool full_tangent = true;
 };
 
 /// The isotropic form of a tangent, which a model may give besides the 6x6 matrix:
@@ -43,6 +47,9 @@ struct IsotropicTangent
   double shear = 0.0;    ///< μ_t [Pa]
   double rank_one = 0.0; ///< γ [Pa]
   Voigt n{};             ///< n [-] (not read when γ = 0)
+
+  /// The 6x6 tangent of the form (Voigt, tensor shears: tangent[I][J] as PointResponse's).
+  VoigtMatrix matrix() const;
 };
 
 /// What a model returns at one quadrature point.
@@ -61,9 +68,13 @@ struct PointResponse
 
 /// A constitutive model with state. State is n_state() doubles per quadrature point, owned by
 /// the caller (a QuadratureState): evaluate() reads the state at t_n (`old_state`, as last
-/// committed) and writes the state at t_{n+1} (`new_state`); it must not keep pointers. The
-/// same (input, old_state) always gives the same response (Newton re-evaluates a point many
-/// times in a step; a rejected step restores `old_state`). Thread-safe: const and no caches.
+/// committed) and writes the state at t_{n+1} (`new_state`); it must not keep pointers. On
+/// entry `new_state` holds what the point's last evaluation wrote (the committed state after
+/// a commit or a restore, zeros or the initial state outside a run): a model may read it as the
+/// start of a local iteration, never as data: the same (input, old_state) gives the same
+/// response to the model's local tolerance whatever `new_state` holds (Newton re-evaluates a
+/// point many times in a step; a rejected step restores `old_state`). Thread-safe: const and
+/// no caches.
 class ConstitutiveModel
 {
 public:

@@ -51,7 +51,10 @@ void LinearElasticModel::evaluate(const PointInput &in, const double * /*old_sta
                                   double * /*new_state*/, PointResponse &out) const
 {
   out.stress = elastic_stress(mechanical_strain(in.strain, in.temperature));
-  out.tangent = elastic_tangent();
+  if (!in.derivatives)
+    return;
+  if (in.full_tangent)
+    out.tangent = elastic_tangent();
   out.stress_temperature_derivative = thermal_stress_derivative();
   out.isotropic = isotropic_tangent();
 }

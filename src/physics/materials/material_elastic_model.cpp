@@ -20,8 +20,9 @@ void MaterialElasticModel::evaluate(const PointInput &in, const double * /*old_s
     out.stress[I] = (normal ? lambda * trace : 0.0) + 2.0 * G * e[I];
     out.stress_temperature_derivative[I] =
         (normal ? dlambda * trace - (3.0 * lambda + 2.0 * G) * dthermal : 0.0) + 2.0 * dG * e[I];
-    for (int J = 0; J < 6; ++J)
-      out.tangent[I][J] = (normal && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0);
+    if (in.derivatives && in.full_tangent)
+      for (int J = 0; J < 6; ++J)
+        out.tangent[I][J] = (normal && J < 3 ? lambda : 0.0) + (I == J ? 2.0 * G : 0.0);
   }
   out.isotropic.valid = true;
   out.isotropic.lambda = lambda;

@@ -39,7 +39,8 @@ PowerLawViscoplasticModel::PowerLawViscoplasticModel(const Teuchos::ParameterLis
                                                      const std::string &where)
     : VonMisesViscoplasticModel(params, where, "Power Law"), A_(params.get<double>("Power Law A")),
       n_(params.get<double>("Power Law n")), Q_(params.get<double>("Power Law Q")),
-      R_(params.get<double>("Power Law R")), T_ref_(params.get<double>("Power Law Tref"))
+      R_(params.get<double>("Power Law R")), T_ref_(params.get<double>("Power Law Tref")),
+      log_A_(A_ > 0.0 ? std::log(A_) : 0.0)
 {
   for (const char *name : {"Power Law A", "Power Law n"})
     KILN_CHECK_INPUT(given_in_input(params, name), where + "/\"" + name + "\"",
@@ -55,10 +56,12 @@ PowerLawViscoplasticModel::PowerLawViscoplasticModel(const Teuchos::ParameterLis
 VonMisesViscoplasticModel::TemperatureFactors
 PowerLawViscoplasticModel::temperature_factors(const double T) const
 {
+  // ln A' without a log per point (ln A once); -inf for A = 0 (no flow).
+  const double log_A = A_ > 0.0 ? log_A_ : -INFINITY;
   if (Q_ == 0.0)
-    return {A_, 0.0};
+    return {A_, 0.0, log_A};
   const double dT = T - T_ref_;
-  return {A_ * std::exp(-Q_ / (R_ * dT)), Q_ / (R_ * dT * dT)};
+  return {A_ * std::exp(-Q_ / (R_ * dT)), Q_ / (R_ * dT * dT), log_A - Q_ / (R_ * dT)};
 }
 
 VonMisesViscoplasticModel::FlowRate
@@ -75,6 +78,16 @@ PowerLawViscoplasticModel::flow_rate_at(const double q, const TemperatureFactors
     g.d_stress = n_ < 1.0 ? INFINITY : (n_ == 1.0 ? coefficient : 0.0);
   g.d_temperature = g.value * factors[1];
   return g;
+}
+
+VonMisesViscoplasticModel::FlowRate
+PowerLawViscoplasticModel::log_flow_rate_at(const double q, const TemperatureFactors &factors) const
+{
+  if (!(factors[0] > 0.0) || (n_ > 0.0 && !(q > 0.0))) // g = 0
+    return {-INFINITY, 0.0, 0.0};
+  if (n_ == 0.0)
+    return {factors[2], 0.0, factors[1]};
+  return {factors[2] + n_ * std::log(q), n_ / q, factors[1]};
 }
 
 std::string PowerLawViscoplasticModel::temperature_problem(const double T) const

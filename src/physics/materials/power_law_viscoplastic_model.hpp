@@ -19,9 +19,11 @@ public:
   /// From a validated list; `where` names it in messages.
   PowerLawViscoplasticModel(const Teuchos::ParameterList &params, const std::string &where);
 
-  /// [A exp(−Q/(R (T − Tref))), Q/(R (T − Tref)²)]
+  /// [A' = A exp(−Q/(R (T − Tref))), Q/(R (T − Tref)²), ln A' (−inf for A = 0)]
   TemperatureFactors temperature_factors(double T) const override;
   FlowRate flow_rate_at(double q, const TemperatureFactors &factors) const override;
+  /// ln A' + n ln q, n / q, Q/(R (T − Tref)²) (the factors above): one log, no power.
+  FlowRate log_flow_rate_at(double q, const TemperatureFactors &factors) const override;
   std::string temperature_problem(double T) const override;
 
 private:
@@ -30,5 +32,6 @@ private:
   double Q_;
   double R_;
   double T_ref_;
+  double log_A_; ///< ln A (0 for A = 0, not read then)
 };
 } // namespace kiln

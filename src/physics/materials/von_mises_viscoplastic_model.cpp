@@ -70,10 +70,14 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
   out.stress = trial;
   if (in.derivatives)
   {
-    out.tangent = elasticity_.elastic_tangent();
+    if (in.full_tangent)
+      out.tangent = elasticity_.elastic_tangent();
     out.stress_temperature_derivative = elasticity_.thermal_stress_derivative();
     out.isotropic = elasticity_.isotropic_tangent();
   }
+  // The rate this point's last evaluation in the step wrote (or the committed one): the local
+  // solve's start.
+  const double last_rate = new_state[7];
   for (int i = 0; i < 8; ++i)
     new_state[i] = old_state[i];
   new_state[7] = 0.0;
@@ -89,7 +93,7 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
     fail(in, q_trial, problem);
   const TemperatureFactors factors = temperature_factors(in.temperature);
   const double x_max = q_trial / (3.0 * G);
-  const double x = solve_increment(in, factors, q_trial, x_max);
+  const double x = solve_increment(in, factors, q_trial, x_max, last_rate * in.time_step);
   const bool relaxed = x >= x_max;
   const double beta = relaxed ? 1.0 : 3.0 * G * x / q_trial;
 
@@ -105,20 +109,23 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
 
   // The consistent tangent: dσ = K I tr(dε) + (1 − β) 2G dev(dε) − s_tr (3G dx − β dq_tr)/q_tr,
   // dq_tr = 2G N : dε with N = (3/2) s_tr/q_tr, and dx = c dq_tr + d dT from r(x) = 0.
+  // At the root dt g = x, so dt ∂g/∂q = x ∂ ln g/∂q (and alike in T).
   double c = 0.0, d = 0.0;
-  if (!relaxed)
+  if (!relaxed && x > 0.0)
   {
-    const FlowRate g = flow_rate_at(q_trial - 3.0 * G * x, factors);
-    if (std::isfinite(g.d_stress))
+    const FlowRate log_g = log_flow_rate_at(q_trial - 3.0 * G * x, factors);
+    if (std::isfinite(log_g.d_stress))
     {
-      const double denominator = 1.0 + 3.0 * G * in.time_step * g.d_stress;
-      c = in.time_step * g.d_stress / denominator;
-      d = in.time_step * g.d_temperature / denominator;
+      const double denominator = 1.0 + 3.0 * G * x * log_g.d_stress;
+      c = x * log_g.d_stress / denominator;
+      d = x * log_g.d_temperature / denominator;
     }
     else
       c = 1.0 / (3.0 * G);
   }
   for (int i = 0; i < 6; ++i)
+    out.stress_temperature_derivative[i] -= s_trial[i] / q_trial * 3.0 * G * d;
+  for (int i = 0; i < 6 && in.full_tangent; ++i)
   {
     const double s_i = s_trial[i] / q_trial;
     for (int j = 0; j < 6; ++j)
@@ -128,7 +135,6 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
       out.tangent[i][j] = (i < 3 && j < 3 ? K : 0.0) + (1.0 - beta) * 2.0 * G * deviatoric -
                           s_i * (relaxed ? 0.0 : 3.0 * G * c - beta) * dq_trial_j;
     }
-    out.stress_temperature_derivative[i] -= s_i * 3.0 * G * d;
   }
   // The same tangent in isotropic form: λ_t 1⊗1 + 2 μ_t 𝕀 + γ n⊗n with n = s_tr / q_tr.
   out.isotropic.lambda = K - 2.0 * G * (1.0 - beta) / 3.0;
@@ -138,39 +144,71 @@ void VonMisesViscoplasticModel::evaluate(const PointInput &in, const double *old
     out.isotropic.n[i] = s_trial[i] / q_trial;
 }
 
+VonMisesViscoplasticModel::FlowRate
+VonMisesViscoplasticModel::log_flow_rate_at(const double q, const TemperatureFactors &factors) const
+{
+  const FlowRate g = flow_rate_at(q, factors);
+  if (!(g.value > 0.0))
+    return {-INFINITY, 0.0, 0.0};
+  return {std::log(g.value), g.d_stress / g.value, g.d_temperature / g.value};
+}
+
 double VonMisesViscoplasticModel::solve_increment(const PointInput &in,
                                                   const TemperatureFactors &factors,
-                                                  const double q_trial, const double x_max) const
+                                                  const double q_trial, const double x_max,
+                                                  const double start) const
 {
   const double G = elasticity_.shear_modulus();
   const double dt = in.time_step;
   // r(x) = x - dt g(q_tr - 3G x): r(x_max) <= 0 means that the deviator relaxes to zero.
   if (dt * flow_rate_at(0.0, factors).value >= x_max)
     return x_max;
-  // Newton on the equivalent phi(x) = ln x - ln(dt g(q_tr - 3G x)), increasing in x: the log
-  // tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
+  // Newton on the equivalent phi(x) = ln x - ln dt - ln g(q_tr - 3G x), increasing in x: the
+  // log tames exponential laws (MTS). phi = +inf where g = 0 (x past the root).
+  const double log_dt = std::log(dt);
   const auto phi = [&](const double x, double &slope) -> double
   {
-    const FlowRate g = flow_rate_at(std::max(q_trial - 3.0 * G * x, 0.0), factors);
-    if (!(g.value > 0.0))
+    const FlowRate log_g = log_flow_rate_at(std::max(q_trial - 3.0 * G * x, 0.0), factors);
+    if (!(log_g.value > -INFINITY))
       return INFINITY;
-    slope = 1.0 / x + 3.0 * G * g.d_stress / g.value;
-    return std::log(x / (dt * g.value));
+    slope = 1.0 / x + 3.0 * G * log_g.d_stress;
+    return std::log(x) - log_dt - log_g.value;
   };
-  // The explicit estimate bounds the root from above when g grows with the stress; else the
-  // bracket is [estimate, x_max].
-  double lo = 0.0;
-  double hi = std::min(dt * flow_rate_at(q_trial, factors).value, x_max);
-  if (!(hi > 0.0))
-    return 0.0;
-  double slope = 0.0;
-  if (hi < x_max && phi(hi, slope) < 0.0)
+  // phi is increasing: the root lies in [lo, hi], and a point where phi > 0 (< 0) is an upper
+  // (lower) bound.
+  double lo = 0.0, hi = x_max, x = -1.0, slope = 0.0;
+  if (start > 0.0 && start < x_max) // (not a NaN)
   {
-    lo = hi;
-    hi = x_max;
+    // The point's last evaluation (the same strain in a Jacobian pass after a residual pass,
+    // Newton's previous iterate, or the last step's rate): within a factor of about e of the
+    // root (|phi| <= 1) the Newton iteration goes on from there, else it only narrows the
+    // bracket (Newton on phi in x is slow from far below the root).
+    const double f = phi(start, slope);
+    if (f == 0.0)
+      return start;
+    (f > 0.0 ? hi : lo) = start;
+    if (std::abs(f) <= 1.0 && std::isfinite(slope) && slope > 0.0)
+    {
+      const double step = f / slope;
+      if (std::abs(step) <= tolerance_ * start && std::abs(f) <= 1e-3)
+        return start - step;
+      x = start - step;
+      if (!(x > lo && x < hi))
+        x = 0.5 * (lo + hi);
+    }
   }
-  // At x_max the stress is round-off and phi's slope singular: start inside instead.
-  double x = hi < x_max ? hi : 0.5 * (lo + hi);
+  if (x < 0.0)
+  {
+    // The explicit estimate bounds the root from above when g grows with the stress; else it
+    // is a lower bound.
+    const double estimate = std::min(dt * flow_rate_at(q_trial, factors).value, x_max);
+    if (!(estimate > 0.0))
+      return 0.0;
+    if (estimate > lo && estimate < hi)
+      (phi(estimate, slope) < 0.0 ? lo : hi) = estimate;
+    // At x_max the stress is round-off and phi's slope singular: start inside instead.
+    x = hi < x_max ? hi : 0.5 * (lo + hi);
+  }
   for (int iteration = 0; iteration < max_iterations_; ++iteration)
   {
     const double f = phi(x, slope);

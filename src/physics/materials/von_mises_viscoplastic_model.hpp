@@ -61,6 +61,10 @@ public:
   virtual TemperatureFactors temperature_factors(double T) const = 0;
   /// The law at q >= 0 with the factors of T; d_temperature is ∂g/∂T.
   virtual FlowRate flow_rate_at(double q, const TemperatureFactors &factors) const = 0;
+  /// ln g and its partial derivatives ∂ ln g/∂σ_vM = g'/g, ∂ ln g/∂T, what the local solve and
+  /// the tangent read: value −inf where g = 0 (then the derivatives are 0). Default: from
+  /// flow_rate_at(); a law whose logarithm is cheaper than itself (a power of q) overrides it.
+  virtual FlowRate log_flow_rate_at(double q, const TemperatureFactors &factors) const;
   /// Why the flow law cannot be evaluated at T ("" when it can), e.g. T <= 0 K.
   virtual std::string temperature_problem(double T) const = 0;
 
@@ -73,9 +77,11 @@ protected:
                             const std::string &name);
 
 private:
-  /// Δε_eq = x by the safeguarded Newton iteration; throws StepFailure when it does not converge.
+  /// Δε_eq = x by the safeguarded Newton iteration, from `start` if it lies in (0, x_max) (the
+  /// point's last evaluation), else from the explicit estimate; throws StepFailure when it does
+  /// not converge.
   double solve_increment(const PointInput &in, const TemperatureFactors &factors, double q_trial,
-                         double x_max) const;
+                         double x_max, double start) const;
   [[noreturn]] void fail(const PointInput &in, double q_trial, const std::string &why) const;
 
   LinearElasticModel elasticity_;

@@ -151,12 +151,20 @@ void ElasticityKernel::evaluate_points(const ElementValues &fe, const NodalDispl
     }
     in.time_step = history.time_step;
     in.derivatives = derivatives;
+    in.full_tangent = false; // assemble_general contracts the isotropic form where it is given
     responses[q] = PointResponse{};
     model_->evaluate(in, n_state > 0 ? old_state + q * n_state : nullptr,
                      n_state > 0 ? new_state + q * n_state : nullptr, responses[q]);
     if (strains != nullptr)
       (*strains)[q] = in.strain;
   }
+  // A cell where some point has no isotropic form is contracted with the 6x6 tangents: those
+  // of the points that gave only the form are built from it.
+  if (derivatives && std::any_of(responses.begin(), responses.end(),
+                                 [](const PointResponse &r) { return !r.isotropic.valid; }))
+    for (PointResponse &r : responses)
+      if (r.isotropic.valid)
+        r.tangent = r.isotropic.matrix();
 }
 
 void ElasticityKernel::assemble_general(const ElementValues &fe, const NodalDisplacements &u,

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -110,6 +111,32 @@ TEST(MtsViscoplasticModel, TangentsMatchFiniteDifferences)
     EXPECT_GT(e.state[7], 1e-5);
     EXPECT_LT(kiln_test::von_mises_of(e.response.stress), 0.9 * 2.0 * 2.6e10 * 2.3e-3);
   }
+}
+
+// The local solve's start (what new_state holds on entry) does not change the response beyond
+// the local tolerance, for the exponential law too (PowerLawViscoplasticModel's test).
+TEST(MtsViscoplasticModel, ResponseDoesNotDependOnTheStart)
+{
+  const auto model = make(mts());
+  const std::vector<double> old_state{2e-4, -1e-4, -1e-4, 5e-5, 0, -3e-5, 2.5e-4, 0};
+  for (const kiln::Voigt &strain :
+       {kiln::Voigt{2.3e-3, 0, 0, 0, 0, 0}, kiln::Voigt{1.2e-3, -4e-4, 3e-4, 6e-4, -2e-4, 4e-4}})
+    for (const double T : {500.0, 600.0, 700.0})
+    {
+      const kiln::PointInput in = point(strain, T, 1.0);
+      const kiln_test::Evaluation cold = kiln_test::evaluate(*model, in, old_state);
+      const double rate = cold.state[7];
+      EXPECT_GT(rate, 0.0) << T;
+      std::vector<std::vector<double>> starts;
+      for (const double r : {rate, rate * 1.05, rate * 0.5, rate * 1e-12, rate * 1e3, -rate,
+                             std::numeric_limits<double>::quiet_NaN()})
+      {
+        std::vector<double> start = cold.state;
+        start[7] = r;
+        starts.push_back(start);
+      }
+      EXPECT_LT(kiln_test::start_dependence(*model, in, old_state, starts), 1e-11) << T;
+    }
 }
 
 TEST(MtsViscoplasticModel, InvariantUnderRotation)

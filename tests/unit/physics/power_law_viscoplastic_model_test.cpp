@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 using testing::HasSubstr;
 
@@ -189,6 +190,75 @@ TEST(PowerLawViscoplasticModel, EvaluationWithoutDerivativesGivesTheSameStressAn
         EXPECT_GT(full.state[7], 0.0);
       }
     }
+}
+
+// The local solve may start from what new_state holds on entry (the point's last evaluation):
+// the response is the same to the local tolerance from an exact, a near, a far or a nonsense
+// start, at flowing and relaxing points, with and without derivatives.
+TEST(PowerLawViscoplasticModel, ResponseDoesNotDependOnTheStart)
+{
+  const std::vector<double> old_state{1e-4, -5e-5, -5e-5, 2e-5, 0, -1e-5, 1.3e-4, 0};
+  for (const double n : {0.5, 3.0, 0.0})
+  {
+    const auto model = make(power_law(n == 3.0 ? 1e-20 : 1e-8, n));
+    for (const kiln::Voigt &strain : {uniaxial, shear, general})
+      for (const bool derivatives : {true, false})
+      {
+        kiln::PointInput in = point(strain, 300.0, 2.0);
+        in.derivatives = derivatives;
+        const kiln_test::Evaluation cold = kiln_test::evaluate(*model, in, old_state);
+        const double rate = cold.state[7];
+        std::vector<std::vector<double>> starts;
+        for (const double r :
+             {rate, rate * (1.0 + 1e-9), rate * 1.1, rate * 0.9, rate * 1e-8, rate * 1e8, -rate,
+              std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+        {
+          std::vector<double> start = cold.state;
+          start[7] = r;
+          starts.push_back(start);
+        }
+        starts.push_back(std::vector<double>(8, 1e30));
+        EXPECT_LT(kiln_test::start_dependence(*model, in, old_state, starts), 1e-11)
+            << "n " << n << " derivatives " << derivatives;
+        if (n > 0.0)
+        {
+          EXPECT_GT(rate, 0.0);
+        }
+      }
+  }
+}
+
+// The local solve reads the law's logarithm (log_flow_rate_at, one log instead of a power): it is
+// ln g, g'/g and (dg/dT)/g of flow_rate_at, and -inf where g = 0 (A = 0, or q = 0 with n > 0).
+TEST(PowerLawViscoplasticModel, LogFormIsTheLogarithmOfTheRate)
+{
+  for (const double A : {0.0, 1e-8})
+    for (const double n : {0.0, 0.5, 3.0})
+      for (const double Q : {0.0, 1e5})
+      {
+        const auto model = make(power_law(A * (n == 3.0 ? 1e-12 : 1.0), n, Q));
+        const auto &law = dynamic_cast<const kiln::VonMisesViscoplasticModel &>(*model);
+        const auto factors = law.temperature_factors(600.0);
+        for (const double q : {0.0, 1e5, 2e6})
+        {
+          const auto g = law.flow_rate(q, 600.0);
+          const auto log_g = law.log_flow_rate_at(q, factors);
+          std::ostringstream where;
+          where << "A " << A << " n " << n << " Q " << Q << " q " << q;
+          if (g.value == 0.0)
+          {
+            EXPECT_EQ(log_g.value, -std::numeric_limits<double>::infinity()) << where.str();
+            continue;
+          }
+          EXPECT_NEAR(log_g.value, std::log(g.value), 1e-14 * std::abs(std::log(g.value)))
+              << where.str();
+          EXPECT_NEAR(log_g.d_stress, g.d_stress / g.value, 1e-14 * std::abs(g.d_stress / g.value))
+              << where.str();
+          EXPECT_NEAR(log_g.d_temperature, g.d_temperature / g.value,
+                      1e-14 * std::abs(g.d_temperature / g.value))
+              << where.str();
+        }
+      }
 }
 
 TEST(PowerLawViscoplasticModel, InvariantUnderRotation)
