@@ -139,7 +139,7 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "then about as accurate as that test: 1e-9 instead of 1e-12 on a uniform state; 0: "
         "every solve to the Belos tolerance) [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
-  p.set("Adaptive Linear Tolerance Rate", 0.01,
+  p.set("Adaptive Linear Tolerance Rate", 0.1,
         "with Adaptive Linear Tolerance, for a Jacobian that varies with the state "
         "(viscoplastic flow, a modulus or conductivity that depends on T): from the second "
         "Newton iteration of a solve on, the Krylov solve may also stop at this times "
@@ -150,15 +150,17 @@ Teuchos::ParameterList NewtonSolver::valid_parameters()
         "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
         "contact set is not affected. 0: not used [-], from 0 to 1",
         double_range_validator(0.0, 1.0));
-  p.set("Adaptive Linear Tolerance First", 0.0,
+  p.set("Adaptive Linear Tolerance First", 1e-3,
         "with Adaptive Linear Tolerance, for a Jacobian that varies with the state: the first "
-        "Newton iteration of a solve may stop its Krylov solve at this relative to ||F_0|| "
-        "(Eisenstat and Walker's fixed first forcing term): with flow that iteration's Newton "
-        "step leaves a part of ||F_0|| far above it, which the next iterations remove with "
-        "the Rate above (doc/solvers.md). A problem whose Jacobian is constant between "
-        "changes of the contact set is not affected. It costs an iteration where Newton from "
-        "the Extrapolated Newton Start would converge in one (doc/materials.md). 0: not used "
-        "[-], from 0 to 0.1",
+        "Newton iteration of a solve that starts from the last state (not from the "
+        "Extrapolated Newton Start's predictor: the first step of a run, a step after a cut or "
+        "without the predictor) may stop its Krylov solve at this relative to ||F_0|| "
+        "(Eisenstat and Walker's fixed first forcing term): from the last state the tangent "
+        "does not know the step's flow, so that iteration's Newton step leaves a part of "
+        "||F_0|| far above it, which the next iterations remove with the Rate above "
+        "(doc/solvers.md). A problem whose Jacobian is constant between changes of the "
+        "contact set is not affected. A solve that would converge in one iteration from the "
+        "last state takes two. 0: not used [-], from 0 to 0.1",
         double_range_validator(0.0, 0.1));
   p.set("Maximum Iterations", 20,
         "Newton iterations before giving up [count]; a solve that reaches it is not converged",
@@ -552,8 +554,10 @@ NewtonSolver::Result NewtonSolver::solve(NonlinearProblem::Vector &x,
     adaptive = std::make_unique<internal::AdaptiveLinearTolerance>(
         s.adaptive, nox->sublist("Direction").sublist("Newton").sublist("Linear Solver"));
     // A Jacobian that varies with the state (no dependencies to keep it by), as the solve's
-    // first Jacobian found it.
-    const bool first_varying = s.adaptive.first > 0.0 && jacobian_varies();
+    // first Jacobian found it, and a start that is the last state: from a predictor (Extrapolated
+    // Newton Start) the first iteration may be the last, so it is solved as any last one.
+    const bool predicted = first_step != nullptr && start_at_first_step;
+    const bool first_varying = s.adaptive.first > 0.0 && !predicted && jacobian_varies();
     if (s.adaptive.rate > 0.0)
       adaptive->set_target(
           result.tolerance, [reuse = s.reuse] { return reuse->varying(); }, first_varying);

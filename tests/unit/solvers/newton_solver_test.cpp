@@ -468,6 +468,55 @@ TEST_F(NewtonSolverTest, AdaptiveLinearToleranceRateSavesKrylovIterationsOfANonl
   EXPECT_LT(error_off.normInf(), 1e-7);
 }
 
+// Adaptive Linear Tolerance First (default 1e-3) loosens the first Krylov solve of a varying
+// Jacobian's solve from the last state (fewer Krylov iterations, the same answer to the Newton
+// tolerance), but not of a solve that starts at a predictor (Extrapolated Newton Start), whose
+// first iteration may be its last: that one is the same with and without it.
+TEST_F(NewtonSolverTest, FirstForcingTermOnlyWhereNewtonStartsFromTheLastState)
+{
+  const auto run = [&](const double first, const bool predictor, NonlinearProblem::Vector &x)
+  {
+    auto problem = Teuchos::rcp(new NonlinearDiffusion(comm, 12, 3));
+    Teuchos::ParameterList p = solver_parameters();
+    p.set("Absolute Tolerance", 1e-8);
+    p.set("Relative Tolerance", 1e-8);
+    p.set("Adaptive Linear Tolerance First", first);
+    p.sublist("Linear Solver").set("Preconditioner Type", "MueLu");
+    EXPECT_EQ(Teuchos::ParameterList(NewtonSolver::valid_parameters())
+                  .get<double>("Adaptive Linear Tolerance First"),
+              1e-3); // the default
+    NewtonSolver solver(p, problem, quiet());
+    x = NonlinearProblem::Vector(problem->solution_map());
+    // The predictor: half the way to the solution.
+    NonlinearProblem::Vector half = problem->exact_solution();
+    half.scale(0.5);
+    const NewtonSolver::Result r = solver.solve(x, predictor ? &half : nullptr, predictor);
+    x.update(-1.0, problem->exact_solution(), 1.0);
+    return r;
+  };
+  for (const bool predictor : {false, true})
+  {
+    NonlinearProblem::Vector error_off, error_on;
+    const NewtonSolver::Result off = run(0.0, predictor, error_off);
+    const NewtonSolver::Result on = run(1e-3, predictor, error_on);
+    ASSERT_TRUE(off.converged) << predictor;
+    ASSERT_TRUE(on.converged) << predictor;
+    ASSERT_GE(off.newton_iterations, 3) << predictor;
+    EXPECT_LT(error_on.normInf(), 1e-7) << predictor;
+    EXPECT_LT(error_off.normInf(), 1e-7) << predictor;
+    if (predictor)
+    {
+      EXPECT_EQ(on.linear_iterations, off.linear_iterations);
+      EXPECT_EQ(on.final_residual_norm, off.final_residual_norm);
+    }
+    else
+    {
+      EXPECT_LT(on.linear_iterations, off.linear_iterations);
+      EXPECT_LE(on.newton_iterations, off.newton_iterations + 1);
+    }
+  }
+}
+
 TEST_F(NewtonSolverTest, Ifpack2PreconditionerCanBeChosen)
 {
   Teuchos::ParameterList p = solver_parameters();
