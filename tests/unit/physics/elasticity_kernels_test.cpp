@@ -626,13 +626,16 @@ private:
   bool isotropic_form_;
 };
 
-/// `model` with the isotropic form of its tangent withheld: the kernel then contracts the 6x6
-/// tangent (the general contraction).
-class WithoutIsotropicForm final : public kiln::ConstitutiveModel
+/// `model` with the isotropic form of its tangent withheld at one evaluation in `period` (1: at
+/// every point, so the kernel contracts the 6x6 tangent, the general contraction; 2: at every
+/// other point, so at some points of a cell). Where it withholds the form it gives the 6x6
+/// tangent; where it gives the form to a caller that asks for no full tangent, it leaves the
+/// 6x6 tangent unset (zeros), which the kernel must then build from the form.
+class IsotropicFormWithheld final : public kiln::ConstitutiveModel
 {
 public:
-  explicit WithoutIsotropicForm(std::shared_ptr<const kiln::ConstitutiveModel> model)
-      : model_(std::move(model))
+  IsotropicFormWithheld(std::shared_ptr<const kiln::ConstitutiveModel> model, const int period)
+      : model_(std::move(model)), period_(period)
   {
   }
   int n_state() const override { return model_->n_state(); }
@@ -644,36 +647,7 @@ public:
   void evaluate(const kiln::PointInput &in, const double *old_state, double *new_state,
                 kiln::PointResponse &out) const override
   {
-    kiln::PointInput full = in; // the 6x6 tangent is what this model gives
-    full.full_tangent = true;
-    model_->evaluate(full, old_state, new_state, out);
-    out.isotropic.valid = false;
-  }
-
-private:
-  std::shared_ptr<const kiln::ConstitutiveModel> model_;
-};
-
-/// `model` with the isotropic form withheld at every other evaluation (so at some points of a
-/// cell), its 6x6 tangent left unset where it gives the form and the caller asks for no
-/// full tangent: the kernel builds those points' 6x6 tangents from the form.
-class IsotropicFormAtSomePoints final : public kiln::ConstitutiveModel
-{
-public:
-  explicit IsotropicFormAtSomePoints(std::shared_ptr<const kiln::ConstitutiveModel> model)
-      : model_(std::move(model))
-  {
-  }
-  int n_state() const override { return model_->n_state(); }
-  void initial_state(double *state) const override { model_->initial_state(state); }
-  double thermal_strain(const double temperature) const override
-  {
-    return model_->thermal_strain(temperature);
-  }
-  void evaluate(const kiln::PointInput &in, const double *old_state, double *new_state,
-                kiln::PointResponse &out) const override
-  {
-    const bool withheld = (calls_++ % 2) == 1;
+    const bool withheld = (calls_++ % period_) == period_ - 1;
     kiln::PointInput asked = in;
     asked.full_tangent = in.full_tangent || withheld;
     model_->evaluate(asked, old_state, new_state, out);
@@ -685,6 +659,7 @@ public:
 
 private:
   std::shared_ptr<const kiln::ConstitutiveModel> model_;
+  int period_;
   mutable int calls_ = 0; // a serial test
 };
 
@@ -876,9 +851,9 @@ TEST(ElasticityKernel, IsotropicTangentContractionEqualsTheGeneralContraction)
   const AffineCell cell;
   const auto model = power_law_model(4e-28, 3.0, 1.0e4);
   const kiln::ElasticityKernel isotropic(model, Point{1, 2, 3});
-  const kiln::ElasticityKernel general(std::make_shared<WithoutIsotropicForm>(model),
+  const kiln::ElasticityKernel general(std::make_shared<IsotropicFormWithheld>(model, 1),
                                        Point{1, 2, 3});
-  const kiln::ElasticityKernel mixed(std::make_shared<IsotropicFormAtSomePoints>(model),
+  const kiln::ElasticityKernel mixed(std::make_shared<IsotropicFormWithheld>(model, 2),
                                      Point{1, 2, 3});
   const int size = model->n_state() * cell.fe.n_qpoints();
   std::vector<double> old_state(size), new_state(size);
