@@ -263,14 +263,14 @@ Simulation::Ending Simulation::run()
           : std::make_unique<const ResultsLock>(checkpoints.base() + ".lock", *comm_,
                                                 "checkpoints with this Checkpoint/File Base",
                                                 "Kiln/Checkpoint/\"File Base\"");
-  restart_plan_ = std::make_unique<RestartPlan>(
-      restart_, outputs_->file_base(), outputs_->writes_hdf5() ? ".h5" : ".exo",
-      RunFingerprint::of(mesh_, layout_, params_).digest(), comm_, out_);
+  // What identifies this run's problem (the mesh, its fields and the physics' input), once.
+  const RunFingerprint fingerprint = RunFingerprint::of(mesh_, layout_, params_);
+  restart_plan_ = std::make_unique<RestartPlan>(restart_, outputs_->file_base(),
+                                                outputs_->writes_hdf5() ? ".h5" : ".exo",
+                                                fingerprint.digest(), comm_, out_);
   const bool fresh = restart_plan_->fresh();
   TimeStepper::State state =
-      fresh
-          ? start()
-          : restart_plan_->resume(RunFingerprint::of(mesh_, layout_, params_), *problem_, *newton_);
+      fresh ? start() : restart_plan_->resume(fingerprint, *problem_, *newton_);
   if (!fresh)
     solution_ = state.x;
   restart_plan_->check_time_left(state.time, outputs_->end_time(), input_path_);
@@ -278,8 +278,7 @@ Simulation::Ending Simulation::run()
   const std::string earlier_results = restart_plan_->earlier_results();
   results_ = std::make_unique<RunResults>(
       RunResults::Context{mesh_, *dofs_, cell_rank_, *problem_, *outputs_, *restart_plan_,
-                          input_path_, input_xml_,
-                          RunFingerprint::of(mesh_, layout_, params_).digest(), comm_, out_},
+                          input_path_, input_xml_, fingerprint.digest(), comm_, out_},
       restart_plan_->first_gap_step(earlier_results));
   const int output_steps =
       earlier_results.empty() ? 0 : results_->continue_results(earlier_results, state.time);
@@ -289,7 +288,7 @@ Simulation::Ending Simulation::run()
                                  log_is_terminal(), started_});
   RunObserver observer(
       {*problem_, mesh_, layout_, results_->field_output(), results_->writers(), *outputs_,
-       checkpoints, history, progress, *newton_, RunFingerprint::of(mesh_, layout_, params_),
+       checkpoints, history, progress, *newton_, fingerprint,
        CheckpointInfo{version_string, "", input_path_, input_xml_, 0, {}, {}, {}, {}, {}}, comm_,
        out_},
       output_steps);
