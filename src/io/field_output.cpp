@@ -64,7 +64,7 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
     const auto append = [](std::vector<double> &out, const Voigt &v) {
       out.insert(out.end(), {v[0], v[1], v[2], v[3], v[5], v[4]});
     };
-    for (const auto &c : problem_.cell_averages(x))
+    const auto add_cell = [&](const auto &c)
     {
       append(stress, c.stress);
       append(strain, c.strain);
@@ -73,18 +73,31 @@ void FieldOutput::write(ResultsWriter &writer, const double time, const int cycl
       mean_pressure.push_back(pressure(c.stress));
       const auto p = principal_values(c.stress);
       principal_stress.insert(principal_stress.end(), p.begin(), p.end());
+    };
+    // A model with state: its points are evaluated once, for the stress and the plastic fields
+    // (the cells' averages would evaluate them again).
+    const bool with_state = problem_.quadrature_state() != nullptr;
+    std::vector<ElasticityKernel::PointAverages> points;
+    if (with_state)
+    {
+      points = problem_.point_averages(x);
+      for (const auto &c : points)
+        add_cell(c);
     }
+    else
+      for (const auto &c : problem_.cell_averages(x))
+        add_cell(c);
     writer.write_cell_field("stress", 6, stress);
     writer.write_cell_field("strain", 6, strain);
     writer.write_cell_field("thermal_strain", 6, thermal_strain);
     writer.write_cell_field("von_mises_stress", 1, von_mises_stress);
     writer.write_cell_field("pressure", 1, mean_pressure);
     writer.write_cell_field("principal_stress", 3, principal_stress);
-    if (problem_.quadrature_state() != nullptr)
+    if (with_state)
     {
-      // A model with state: its plastic strain and rate, averaged over each cell's points.
+      // Its plastic strain and rate, averaged over each cell's points.
       std::vector<double> plastic_strain, plastic_strain_rate;
-      for (const auto &c : problem_.point_averages(x))
+      for (const auto &c : points)
       {
         plastic_strain.push_back(c.plastic_strain);
         plastic_strain_rate.push_back(c.plastic_strain_rate);
